@@ -1,0 +1,19 @@
+#pragma once
+// Small fixed-size types shared by every part of rkpm. Coordinates are (x, y) in plane
+// strain and (r, z) in axisymmetric geometry; all quantities are SI inside the library.
+
+#include <Eigen/Core>
+#include <cstddef>
+
+namespace rkpm {
+
+using index_t = std::ptrdiff_t;
+
+template <int Dim>
+using vec = Eigen::Matrix<double, Dim, 1>;
+
+using vec2 = Eigen::Vector2d;
+using mat2 = Eigen::Matrix2d;
+using mat3 = Eigen::Matrix3d;
+
+}  // namespace rkpm
