@@ -1,0 +1,52 @@
+#pragma once
+// File helpers shared by the output writers (design.md section 6, "Output a user expects"):
+// create the parent directories of an output path, and replace a whole file atomically so
+// that a run killed while writing leaves either the previous or the new file, never half of it.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+#include <rkpm/core/error.hpp>
+
+namespace rkpm::io {
+
+// Creates every missing directory above `path`; throws rkpm::error naming the directory.
+inline void ensure_parent_directory(const std::filesystem::path& path) {
+  const auto parent = path.parent_path();
+  if (parent.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(parent, ec);
+  if (ec || !std::filesystem::is_directory(parent))
+    fail("cannot create directory '{}' for output file '{}' ({}): check the path and its permissions",
+         parent.string(), path.string(), ec ? ec.message() : "not a directory");
+}
+
+// Writes `content` to `path` through a temporary file in the same directory and a rename,
+// which POSIX makes atomic: readers (ParaView polling a .pvd, a crashed run) never see a
+// truncated file.
+inline void replace_file(const std::filesystem::path& path, std::string_view content) {
+  ensure_parent_directory(path);
+  auto tmp = path;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out)
+      fail("cannot open '{}' for writing: check that the directory is writable", tmp.string());
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) fail("error while writing '{}': check free disk space", tmp.string());
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    fail("cannot rename '{}' to '{}': check that the target is not a directory and is writable",
+         tmp.string(), path.string());
+  }
+}
+
+}  // namespace rkpm::io
