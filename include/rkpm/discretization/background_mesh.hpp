@@ -1,0 +1,88 @@
+#pragma once
+// background_mesh: the quadrilateral integration cells that cover the body
+// (spec/paper.md section 2). Cells hold four node indices counter-clockwise.
+//   node   #nodes list of corner positions (reference configuration)
+//   cell   #cells list of 4 node indices, counter-clockwise
+// make_grid_mesh builds the cells of a regular particle grid with the same node numbering as
+// make_grid_particles (first direction fastest), so node i is particle i.
+
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/core/types.hpp>
+
+namespace rkpm {
+
+struct background_mesh {
+  std::vector<vec2> node;
+  std::vector<std::array<index_t, 4>> cell;
+
+  index_t cells() const { return static_cast<index_t>(cell.size()); }
+
+  // Signed area of a cell (positive when counter-clockwise).
+  double cell_area(index_t c) const {
+    double a = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const vec2& p = node[cell[c][k]];
+      const vec2& q = node[cell[c][(k + 1) % 4]];
+      a += p[0] * q[1] - q[0] * p[1];
+    }
+    return 0.5 * a;
+  }
+
+  double area() const {
+    double a = 0.0;
+    for (index_t c = 0; c < cells(); ++c) a += cell_area(c);
+    return a;
+  }
+
+  void validate() const {
+    if (cell.empty()) fail("background mesh has no cells: give the cells that cover the body");
+    for (index_t c = 0; c < cells(); ++c) {
+      for (index_t n : cell[c])
+        if (n < 0 || n >= static_cast<index_t>(node.size()))
+          fail("background cell {} refers to node {} of {}", c, n, node.size());
+      if (!(cell_area(c) > 0.0))
+        fail("background cell {} has area {:.3g}: its nodes must be counter-clockwise and distinct",
+             c, cell_area(c));
+    }
+  }
+
+  // Nodes on the boundary of the meshed region: nodes of edges that belong to one cell only.
+  std::vector<index_t> boundary_nodes() const {
+    std::map<std::pair<index_t, index_t>, int> edge_count;
+    for (const auto& c : cell)
+      for (int k = 0; k < 4; ++k) {
+        index_t a = c[k], b = c[(k + 1) % 4];
+        if (a > b) std::swap(a, b);
+        ++edge_count[{a, b}];
+      }
+    std::vector<char> on(node.size(), 0);
+    for (const auto& [e, n] : edge_count)
+      if (n == 1) on[e.first] = on[e.second] = 1;
+    std::vector<index_t> out;
+    for (index_t i = 0; i < static_cast<index_t>(node.size()); ++i)
+      if (on[i]) out.push_back(i);
+    return out;
+  }
+};
+
+// Cells of the regular grid of counts[0] x counts[1] nodes on [lo, hi].
+inline background_mesh make_grid_mesh(const vec2& lo, const vec2& hi, const Eigen::Vector2i& counts) {
+  if (counts[0] < 2 || counts[1] < 2) fail("grid mesh: need at least 2 nodes per direction");
+  background_mesh m;
+  const vec2 h((hi[0] - lo[0]) / (counts[0] - 1), (hi[1] - lo[1]) / (counts[1] - 1));
+  for (int j = 0; j < counts[1]; ++j)
+    for (int i = 0; i < counts[0]; ++i) m.node.emplace_back(lo[0] + i * h[0], lo[1] + j * h[1]);
+  for (int j = 0; j + 1 < counts[1]; ++j)
+    for (int i = 0; i + 1 < counts[0]; ++i) {
+      const index_t n0 = j * counts[0] + i;
+      m.cell.push_back({n0, n0 + 1, n0 + 1 + counts[0], n0 + counts[0]});
+    }
+  return m;
+}
+
+}  // namespace rkpm

@@ -1,0 +1,52 @@
+#pragma once
+// Quadrature points of a background mesh for a rule Q (spec/paper.md section 2):
+//   position  #points X_q = sum_a N_a(xi_q) X_a  (bilinear map of the cell)
+//   weight    #points w_q = W_q * det J(xi_q) * G::weight_factor(X_q)  (2 pi R in axisymmetric)
+//   cell      #points the cell each point belongs to
+
+#include <vector>
+
+#include <rkpm/concepts/geometry.hpp>
+#include <rkpm/concepts/quadrature.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+
+namespace rkpm {
+
+struct quadrature_points {
+  std::vector<vec2> position;
+  std::vector<double> weight;
+  std::vector<index_t> cell;
+  index_t size() const { return static_cast<index_t>(position.size()); }
+};
+
+template <Quadrature Q, Geometry G>
+quadrature_points make_quadrature_points(const background_mesh& mesh) {
+  mesh.validate();
+  quadrature_points qp;
+  const auto n = static_cast<std::size_t>(mesh.cells() * Q::points_per_cell);
+  qp.position.reserve(n);
+  qp.weight.reserve(n);
+  qp.cell.reserve(n);
+  for (index_t c = 0; c < mesh.cells(); ++c) {
+    const vec2& x0 = mesh.node[mesh.cell[c][0]];
+    const vec2& x1 = mesh.node[mesh.cell[c][1]];
+    const vec2& x2 = mesh.node[mesh.cell[c][2]];
+    const vec2& x3 = mesh.node[mesh.cell[c][3]];
+    for (const auto& [xi, eta, w] : Q::rule) {
+      const double n0 = 0.25 * (1 - xi) * (1 - eta), n1 = 0.25 * (1 + xi) * (1 - eta);
+      const double n2 = 0.25 * (1 + xi) * (1 + eta), n3 = 0.25 * (1 - xi) * (1 + eta);
+      const vec2 X = n0 * x0 + n1 * x1 + n2 * x2 + n3 * x3;
+      const vec2 dxi = 0.25 * (-(1 - eta) * x0 + (1 - eta) * x1 + (1 + eta) * x2 - (1 + eta) * x3);
+      const vec2 deta = 0.25 * (-(1 - xi) * x0 - (1 + xi) * x1 + (1 + xi) * x2 + (1 - xi) * x3);
+      const double detJ = dxi[0] * deta[1] - dxi[1] * deta[0];
+      if (!(detJ > 0.0))
+        fail("background cell {} is inverted or degenerate at ({}, {}): det J = {:.3g}", c, xi, eta, detJ);
+      qp.position.push_back(X);
+      qp.weight.push_back(w * detJ * G::weight_factor(X));
+      qp.cell.push_back(c);
+    }
+  }
+  return qp;
+}
+
+}  // namespace rkpm

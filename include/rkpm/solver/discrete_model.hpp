@@ -1,0 +1,78 @@
+#pragma once
+// discrete_model: everything the time-stepping loop reads, computed once in the reference
+// configuration (design.md sections 4 and 5). Only this builder depends on the kernel, the
+// correction and the quadrature rule; the loop (solver/dynamics.hpp) does not, so those
+// policies cost a small instantiation each instead of a copy of the whole solver.
+//   points               quadrature points X_q and weights w_q (2 pi R included)
+//   at_points            N_I(X_q), grad N_I(X_q)
+//   particles_of_points  transpose of at_points (scatter without atomics)
+//   at_particles         N_J(X_I): physical values at the particles
+//   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, design.md section 4)
+
+#include <cmath>
+#include <string_view>
+
+#include <rkpm/concepts/geometry.hpp>
+#include <rkpm/concepts/quadrature.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/quadrature_points.hpp>
+#include <rkpm/discretization/shape_table.hpp>
+
+namespace rkpm {
+
+struct policy_names {
+  std::string_view kernel, correction, quadrature, geometry;
+};
+
+struct discrete_model {
+  particle_set<2> particles;
+  background_mesh mesh;
+  quadrature_points points;
+  shape_table<2> at_points;
+  shape_table_transpose particles_of_points;
+  shape_table<2> at_particles;
+  std::vector<double> lumped_volume;
+  policy_names names;
+
+  index_t particle_count() const { return particles.size(); }
+  index_t point_count() const { return points.size(); }
+};
+
+template <Kernel K, Correction C, Quadrature Q, Geometry G>
+discrete_model build_discrete_model(particle_set<2> particles, background_mesh mesh,
+                                    double max_condition = default_max_moment_condition) {
+  particles.validate();
+  mesh.validate();
+  double particle_volume = 0.0;
+  for (double v : particles.volume) particle_volume += v;
+  const double cell_area = mesh.area();
+  if (std::abs(particle_volume - cell_area) > 1e-2 * cell_area)
+    fail("particle volumes add up to {:.6g} but the background cells cover {:.6g}: the particle "
+         "set and the cells must describe the same body (check units and extents)",
+         particle_volume, cell_area);
+
+  discrete_model m;
+  m.names = {K::name, C::name, Q::name, G::name};
+  m.points = make_quadrature_points<Q, G>(mesh);
+  const neighbor_search<2> search(particles);
+  const rk_shape_functions<K, C, 2> rk(max_condition);
+  m.at_points = build_shape_table<K, C, 2>(search, m.points.position, rk);
+  m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk);
+  m.particles_of_points = transpose(m.at_points, particles.size());
+
+  m.lumped_volume.assign(particles.size(), 0.0);
+  for (index_t q = 0; q < m.points.size(); ++q)
+    for (index_t e = m.at_points.offset[q]; e < m.at_points.offset[q + 1]; ++e)
+      m.lumped_volume[m.at_points.neighbor[e]] += m.at_points.N[e] * m.points.weight[q];
+  for (index_t I = 0; I < particles.size(); ++I)
+    if (!(m.lumped_volume[I] > 0.0))
+      fail("particle {} at ({:.6g}, {:.6g}) gets a lumped mass of {:.3g} x density: it is covered by "
+           "no quadrature point or by negative shape-function lobes; refine the background cells, "
+           "enlarge the support or use the linear correction",
+           I, particles.position[I][0], particles.position[I][1], m.lumped_volume[I]);
+  m.particles = std::move(particles);
+  m.mesh = std::move(mesh);
+  return m;
+}
+
+}  // namespace rkpm
