@@ -1,0 +1,121 @@
+#pragma once
+// Finite-strain J2 plasticity with logarithmic elastic strains (design.md section 4; the
+// multiplicative model of Simo, CMAME 99 (1992), in its principal-stretch form):
+//   F = F_e F_p,  b_e = F_e F_e^T,  tau = Hencky(b_e),  -1/2 L_v(b_e) b_e^-1 = dgamma n,
+//   n = sqrt(3/2) dev(tau) / |dev(tau)|,  f = q - sigma_y(eps_p) <= 0,  q = sqrt(3/2) |dev(tau)|.
+// One step from the last accepted F_n to F:
+//   1. f = F F_n^-1,  b_e_trial = f b_e_n f^T (elastic predictor, exact for rigid rotations);
+//   2. principal decomposition of b_e_trial (in-plane 2x2 + the principal 33 direction);
+//   3. Hencky trial stress in principal log strains;
+//   4. radial return in principal log strains (exponential map: plastically incompressible,
+//      det b_e unchanged by the return): dev(eps_e) = (1 - 3 mu dgamma / q_trial) dev(eps_trial);
+//   5. b_e = sum exp(2 eps_e_i) n_i n_i^T, tau = sum tau_i n_i n_i^T.
+// Objective by construction: superposed rotations only rotate b_e and tau.
+// Plastic work per unit REFERENCE volume (tau is the Kirchhoff stress, so tau : d_p = q dgamma
+// is per unit reference volume): the exact integral of sigma_y over [eps_p_n, eps_p_n + dgamma]
+// when the hardening law provides `integral(a, b)` (both built-in laws do), otherwise the
+// trapezoidal rule, which is exact for linear hardening.
+
+#include <Eigen/Core>
+#include <cmath>
+#include <string_view>
+
+#include <rkpm/concepts/material.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/core/types.hpp>
+#include <rkpm/material/elastic_constants.hpp>
+#include <rkpm/material/hardening.hpp>
+#include <rkpm/material/hencky.hpp>
+#include <rkpm/material/radial_return.hpp>
+
+namespace rkpm::material {
+
+struct j2_state {
+  mat3 elastic_left_cauchy_green = mat3::Identity();  // b_e, block-structured
+  mat3 previous_deformation = mat3::Identity();       // F of the last accepted step
+  double equivalent_plastic_strain = 0.0;
+  double plastic_work = 0.0;  // J/m^3 of reference volume
+};
+
+template <Hardening H>
+class j2_plasticity {
+ public:
+  static constexpr std::string_view name = "j2";
+  using hardening_type = H;
+  using state_type = j2_state;
+
+  // newton_tolerance is relative to the trial von Mises stress (see radial_return.hpp).
+  j2_plasticity(elastic_constants constants, H hardening, double newton_tolerance = 1e-12,
+                int max_newton_iterations = 50)
+      : constants_(constants),
+        hardening_(hardening),
+        tolerance_(newton_tolerance),
+        max_iterations_(max_newton_iterations) {
+    constants_.validate();
+    if constexpr (requires { hardening_.validate(); }) hardening_.validate();
+    if (!(std::isfinite(tolerance_) && tolerance_ > 0.0 && tolerance_ < 1.0))
+      fail("j2_plasticity: newton_tolerance = {} is invalid: give a relative tolerance in (0, 1), "
+           "e.g. 1e-12",
+           tolerance_);
+    if (max_iterations_ < 1)
+      fail("j2_plasticity: max_newton_iterations = {} is invalid: give at least 1 (e.g. 50)",
+           max_iterations_);
+    mu_ = constants_.shear_modulus();
+    bulk_ = constants_.bulk_modulus();
+  }
+
+  state_type initial_state() const { return {}; }
+
+  // F: block-structured total deformation gradient (see concepts/material.hpp). Advances s from
+  // s.previous_deformation to F and returns the Kirchhoff stress.
+  mat3 kirchhoff_stress(const mat3& F, state_type& s) const {
+    check_deformation_gradient(F, "material::j2_plasticity");
+    const mat3 f = F * block_inverse(s.previous_deformation);
+    const mat3 b_trial = f * s.elastic_left_cauchy_green * f.transpose();
+    const principal_frame frame = principal_frame::of(b_trial);
+    const vec3 eps = principal_log_strains(frame.values);
+    const double volumetric = eps.sum();
+    vec3 dev = eps - vec3::Constant(volumetric / 3.0);
+    const double q_trial = std::sqrt(1.5) * 2.0 * mu_ * dev.norm();
+
+    const double eps_p = s.equivalent_plastic_strain;
+    if (q_trial > hardening_.flow_stress(eps_p)) {
+      const double dgamma =
+          radial_return(hardening_, q_trial, 3.0 * mu_, eps_p, tolerance_, max_iterations_)
+              .increment;
+      dev *= 1.0 - 3.0 * mu_ * dgamma / q_trial;
+      s.plastic_work += plastic_work_increment(eps_p, dgamma);
+      s.equivalent_plastic_strain = eps_p + dgamma;
+      const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
+      s.elastic_left_cauchy_green = frame.assemble((2.0 * eps_e).array().exp().matrix());
+    } else {
+      s.elastic_left_cauchy_green = b_trial;
+    }
+    s.previous_deformation = F;
+    const vec3 tau = vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev;
+    return frame.assemble(tau);
+  }
+
+  double density() const { return constants_.density; }
+  double dilatational_wave_speed() const { return constants_.dilatational_wave_speed(); }
+  const elastic_constants& constants() const { return constants_; }
+  const H& hardening() const { return hardening_; }
+
+ private:
+  double plastic_work_increment(double eps_p, double dgamma) const {
+    if constexpr (requires { { hardening_.integral(eps_p, eps_p) } -> std::convertible_to<double>; })
+      return hardening_.integral(eps_p, eps_p + dgamma);
+    else
+      return 0.5 * (hardening_.flow_stress(eps_p) + hardening_.flow_stress(eps_p + dgamma)) *
+             dgamma;
+  }
+
+  elastic_constants constants_;
+  H hardening_;
+  double tolerance_;
+  int max_iterations_;
+  double mu_ = 0.0;
+  double bulk_ = 0.0;
+};
+
+}  // namespace rkpm::material

@@ -1,0 +1,58 @@
+#pragma once
+// The scalar equation of the J2 radial return (design.md section 4, "Stress update"): given the
+// trial von Mises stress q_trial > sigma_y(eps_p_n), find the plastic increment dgamma >= 0 with
+//   r(dgamma) = q_trial - 3 mu dgamma - sigma_y(eps_p_n + dgamma) = 0.
+// Linear hardening has the closed form dgamma = (q_trial - sigma_y(eps_p_n)) / (3 mu + H); any
+// other law gets a Newton iteration safeguarded by bisection on [0, q_trial / (3 mu)], where
+// r(0) > 0 and r(q_trial / (3 mu)) = -sigma_y <= 0, so the root stays bracketed and
+// eps0 + eps_p never drops below its value at the start of the step.
+
+#include <cmath>
+#include <concepts>
+#include <string_view>
+
+#include <rkpm/concepts/material.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/material/hardening.hpp>
+
+namespace rkpm::material {
+
+struct radial_return_result {
+  double increment;  // dgamma, the increment of the equivalent plastic strain
+  int iterations;    // Newton updates taken (0 for the closed form)
+  double residual;   // r(dgamma) in Pa
+};
+
+// tolerance is relative: converged when |r| <= tolerance * q_trial.
+template <Hardening H>
+radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
+                                   double eps_p_n, double tolerance, int max_iterations) {
+  const auto residual = [&](double dg) {
+    return q_trial - three_mu * dg - hardening.flow_stress(eps_p_n + dg);
+  };
+  if constexpr (std::same_as<H, hardening::linear>) {
+    const double dg = (q_trial - hardening.flow_stress(eps_p_n)) / (three_mu + hardening.modulus);
+    return {dg, 0, residual(dg)};
+  } else {
+    const double limit = tolerance * q_trial;
+    double lo = 0.0;
+    double hi = q_trial / three_mu;
+    double dg = 0.0;
+    double r = residual(dg);
+    for (int it = 0;; ++it) {
+      if (std::abs(r) <= limit) return {dg, it, r};
+      if (it == max_iterations || !std::isfinite(r))
+        fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
+             "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
+             "{}); raise max_newton_iterations or loosen newton_tolerance",
+             H::name, r, it, limit, q_trial, eps_p_n, dg);
+      (r > 0.0 ? lo : hi) = dg;
+      const double next = dg + r / (three_mu + hardening.slope(eps_p_n + dg));
+      // Newton left the bracket (or made no progress while unconverged): bisect instead.
+      dg = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+      r = residual(dg);
+    }
+  }
+}
+
+}  // namespace rkpm::material
