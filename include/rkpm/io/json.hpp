@@ -126,9 +126,11 @@ class json {
     return out;
   }
 
-  // Shortest round-trip text of x, or "null" when x is not finite.
+  // Shortest round-trip text of x ("-0.0" for negative zero), or "null" when x is not finite.
   static std::string number_text(double x) {
     if (!std::isfinite(x)) return "null";
+    // "-0" is valid JSON but common readers (Python) take it as the integer 0 and lose the sign.
+    if (x == 0 && std::signbit(x)) return "-0.0";
     return fmt::format("{}", x);
   }
 
