@@ -1,0 +1,305 @@
+#pragma once
+// particle_to_segment<Enforcement, Friction>: the paper's contact subroutine against moving
+// rigid tools (spec/paper.md section 3, (P4)-(P7); design.md section 4 "Contact").
+// enforce(t_next, dt, d, v), with d = d_{n+1} predicted and v = v_{n+1/2}, tools at t_next:
+//   (i)   slave positions x_J = X_J + sum_I N_I(X_J) d_I and velocities v_J = sum_I N_I(X_J) v_I;
+//         per tool, the master segment each penetrating slave crossed (segment_search.hpp),
+//         found through a grid in the tool frame (segment_grid.hpp);
+//   (ii)  normal force (P4) along the segment normal n (out of the tool, toward the body), and the
+//         tangential force from the sticking force (P6) limited by the friction law (P5), with
+//         v_T the tangential velocity of J relative to the tool; redistribution (P7)
+//         f_I = sum_J N_I(X_J) f_J;
+//   (iii) da_I = f_I / m_I;   (iv) v_I += dt da_I, d_I += dt^2 da_I.
+// The tool velocity used for v_T is its mean over the step, (u(t) - u(t - dt)) / dt, the one
+// consistent with d_{n+1} = d_n + dt v_{n+1/2}; it equals the tool velocity for fixed and
+// constant-velocity tools.
+// Reported per step: the reaction on each tool (minus the sum of the contact forces its segments
+// applied), the contact work sum_I f_I . v_I dt with the corrected v_I (the work of f_I over the
+// step's corrected displacement increment dt v_{n+1/2}, the same pairing the central-difference
+// energy balance uses), the largest penetration before correction and the number of slave
+// particles in contact. enforce() does not allocate: setup() sizes every buffer.
+
+#include <algorithm>
+#include <span>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <rkpm/concepts/contact.hpp>
+#include <rkpm/contact/body_view.hpp>
+#include <rkpm/contact/enforcement.hpp>
+#include <rkpm/contact/friction.hpp>
+#include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/contact/segment_grid.hpp>
+#include <rkpm/contact/segment_search.hpp>
+#include <rkpm/core/error.hpp>
+
+namespace rkpm::contact {
+
+// One slave particle in contact with one tool during the last step.
+struct contact_pair {
+  index_t slave = 0;      // row j of the body's slave list (particle body.slave[j])
+  index_t tool = 0;       // index into tools()
+  index_t segment = 0;    // master segment of that tool
+  double gap = 0.0;       // penetration before correction
+  vec2 normal = vec2::Zero();
+  double normal_force = 0.0;        // f_n >= 0 along normal
+  vec2 tangential_force = vec2::Zero();
+  vec2 force() const { return normal_force * normal + tangential_force; }  // f_J on the particle
+};
+
+template <ContactEnforcement Enforcement = enforcement::paper, FrictionLaw Friction = friction::frictionless>
+class particle_to_segment {
+ public:
+  using enforcement_type = Enforcement;
+  using friction_type = Friction;
+  static constexpr std::string_view name = Enforcement::name;
+  static constexpr std::string_view friction_name = Friction::name;
+
+  explicit particle_to_segment(std::vector<rigid_tool> tools, Friction friction = {}, Enforcement enforcement = {})
+      : tools_(std::move(tools)), friction_(friction), enforcement_(enforcement) {
+    friction_.validate();
+    enforcement_.validate();
+    for (const rigid_tool& tool : tools_) grid_.emplace_back(tool);
+    reaction_.assign(tools_.size(), vec2::Zero());
+  }
+
+  const std::vector<rigid_tool>& tools() const { return tools_; }
+  const std::vector<segment_grid>& grids() const { return grid_; }
+  // Reaction on each tool in the last step (minus the contact forces it applied).
+  const std::vector<vec2>& reactions() const { return reaction_; }
+  // The contacts of the last step.
+  std::span<const contact_pair> active_pairs() const { return {pair_.data(), static_cast<std::size_t>(pairs_)}; }
+  // m_eff of each slave, 1 / sum_I N_I(X_J)^2 / m_I.
+  const std::vector<double>& effective_masses() const { return m_eff_; }
+  const Friction& friction() const { return friction_; }
+  const Enforcement& enforcement() const { return enforcement_; }
+
+  // Keeps pointers to the body's positions and masses (they must outlive this object) and copies
+  // the slave list and table.
+  void setup(const body_view& body) {
+    if (!body.reference_position || !body.mass)
+      fail("contact setup: body_view needs reference_position and mass; point them at the solver's vectors");
+    X_ = body.reference_position;
+    m_ = body.mass;
+    const index_t np = static_cast<index_t>(X_->size());
+    if (static_cast<index_t>(m_->size()) != np)
+      fail("contact setup: {} reference positions but {} masses; give one mass per particle", np, m_->size());
+    for (index_t I = 0; I < np; ++I)
+      if (!((*m_)[I] > 0.0) || !std::isfinite((*m_)[I]))
+        fail("contact setup: particle {} has mass {}; lumped masses must be positive and finite", I, (*m_)[I]);
+    slave_ = body.slave;
+    table_ = body.slave_table;
+    const index_t ns = static_cast<index_t>(slave_.size());
+    if (table_.points() != ns)
+      fail("contact setup: the slave table has {} rows but there are {} slave particles; build it at the "
+           "slaves' reference positions",
+           table_.points(), ns);
+    if (static_cast<index_t>(table_.N.size()) != table_.entries())
+      fail("contact setup: the slave table has {} neighbors but {} values", table_.entries(), table_.N.size());
+    for (index_t j = 0; j < ns; ++j)
+      if (slave_[j] < 0 || slave_[j] >= np)
+        fail("contact setup: slave {} is particle {}, outside 0..{}", j, slave_[j], np - 1);
+    for (index_t I : table_.neighbor)
+      if (I < 0 || I >= np) fail("contact setup: the slave table names particle {}, outside 0..{}", I, np - 1);
+
+    m_eff_.assign(ns, 0.0);
+    for (index_t j = 0; j < ns; ++j) {
+      double s = 0.0;
+      for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e)
+        s += table_.N[e] * table_.N[e] / (*m_)[table_.neighbor[e]];
+      if (!(s > 0.0))
+        fail("contact setup: slave {} (particle {}) has no shape function support; check the slave table", j,
+             slave_[j]);
+      m_eff_[j] = 1.0 / s;
+    }
+
+    check_initial_penetration();
+
+    const index_t nt = static_cast<index_t>(tools_.size());
+    x_.assign(ns, vec2::Zero());
+    v_.assign(ns, vec2::Zero());
+    x_prev_.resize(ns);
+    for (index_t j = 0; j < ns; ++j) x_prev_[j] = (*X_)[slave_[j]];
+    u_prev_.resize(nt);
+    u_now_.resize(nt);
+    v_tool_.resize(nt);
+    for (index_t k = 0; k < nt; ++k) u_prev_[k] = tools_[k].displacement(0.0);
+    held_.assign(ns * nt, -1);
+    pair_.assign(ns * nt, contact_pair{});
+    pairs_ = 0;
+    in_contact_.assign(ns, 0);
+    force_.assign(np, vec2::Zero());
+    dforce_.assign(np, vec2::Zero());
+    touched_flag_.assign(np, 0);
+    touched_.assign(np, 0);
+    touched_count_ = 0;
+    reaction_.assign(nt, vec2::Zero());
+    ready_ = true;
+  }
+
+  step_result enforce(double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
+    if (!ready_) fail("contact: enforce() called before setup(); the solver must call setup(body) once");
+    const std::size_t np = X_->size();
+    if (d.size() != np || v.size() != np)
+      fail("contact: {} displacements and {} velocities for {} particles", d.size(), v.size(), np);
+    if (!(dt > 0.0)) fail("contact: time step {} must be positive", dt);
+    step_result result;
+    const index_t ns = static_cast<index_t>(slave_.size());
+    const index_t nt = static_cast<index_t>(tools_.size());
+    const std::vector<double>& m = *m_;
+
+    // (i) physical slave positions and velocities on the predicted configuration.
+    for (index_t j = 0; j < ns; ++j) slave_state(j, d, v);
+    for (index_t k = 0; k < nt; ++k) {
+      u_now_[k] = tools_[k].displacement(t);
+      v_tool_[k] = (u_now_[k] - tools_[k].displacement(t - dt)) / dt;
+      reaction_[k].setZero();
+    }
+    pairs_ = 0;
+    for (index_t k = 0; k < nt; ++k) {
+      const rigid_tool& tool = tools_[k];
+      for (index_t j = 0; j < ns; ++j) {
+        index_t& held = held_[k * ns + j];
+        const vec2 y = x_[j] - u_now_[k];
+        const auto candidates = grid_[k].candidates(y);
+        if (candidates.empty()) {
+          held = -1;
+          continue;
+        }
+        const segment_hit hit = choose_segment(tool, candidates, y, vec2(x_prev_[j] - u_prev_[k]), held);
+        held = hit.segment;
+        if (hit.segment < 0) continue;
+        contact_pair& p = pair_[pairs_++];
+        p = contact_pair{j, k, hit.segment, hit.gap, tool.normal(hit.segment), 0.0, vec2::Zero()};
+        result.max_penetration = std::max(result.max_penetration, hit.gap);
+        if (!in_contact_[j]) {
+          in_contact_[j] = 1;
+          ++result.active;
+        }
+      }
+    }
+
+    // (ii)-(iv), repeated for effective-mass sweeps: each sweep computes every pair's force
+    // increment on the same configuration (Jacobi), then applies them together.
+    for (int sweep = 0; sweep < enforcement_.sweeps && pairs_ > 0; ++sweep) {
+      const double omega = sweep == 0 ? 1.0 : enforcement_.relaxation;
+      if (sweep > 0)
+        for (index_t q = 0; q < pairs_; ++q) slave_state(pair_[q].slave, d, v);
+      for (index_t q = 0; q < pairs_; ++q) {
+        contact_pair& p = pair_[q];
+        const index_t j = p.slave;
+        const rigid_tool& tool = tools_[p.tool];
+        const double g =
+            sweep == 0 ? p.gap : -tool.project(p.segment, vec2(x_[j] - u_now_[p.tool])).distance;
+        const double m_s = m[slave_[j]];
+        const vec2 rel = v_[j] - v_tool_[p.tool];
+        const vec2 v_t = rel - rel.dot(p.normal) * p.normal;
+        const double fn = std::max(0.0, p.normal_force + omega * enforcement_.normal_force(g, dt, m_s, m_eff_[j]));
+        const vec2 trial = p.tangential_force - omega * enforcement_.stick_mass(m_s, m_eff_[j]) * v_t / dt;
+        const vec2 ft = friction_.limit(trial, fn);
+        const vec2 df = (fn - p.normal_force) * p.normal + (ft - p.tangential_force);
+        p.normal_force = fn;
+        p.tangential_force = ft;
+        for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {  // (P7)
+          const index_t I = table_.neighbor[e];
+          dforce_[I] += table_.N[e] * df;
+          if (!touched_flag_[I]) {
+            touched_flag_[I] = 1;
+            touched_[touched_count_++] = I;
+          }
+        }
+      }
+      for (index_t s = 0; s < touched_count_; ++s) {
+        const index_t I = touched_[s];
+        const vec2 da = dforce_[I] / m[I];
+        v[I] += dt * da;
+        d[I] += dt * dt * da;
+        force_[I] += dforce_[I];
+        dforce_[I].setZero();
+      }
+    }
+
+    for (index_t q = 0; q < pairs_; ++q) {
+      reaction_[pair_[q].tool] -= pair_[q].force();
+      in_contact_[pair_[q].slave] = 0;
+    }
+    for (index_t s = 0; s < touched_count_; ++s) {
+      const index_t I = touched_[s];
+      result.work += force_[I].dot(v[I]) * dt;
+      force_[I].setZero();
+      touched_flag_[I] = 0;
+    }
+    // Remember where the slaves ended up, for the crossing test of the next call.
+    if (touched_count_ > 0)
+      for (index_t j = 0; j < ns; ++j) x_[j] = (*X_)[slave_[j]] + table_.interpolate(j, d);
+    touched_count_ = 0;
+    std::swap(x_prev_, x_);
+    for (index_t k = 0; k < nt; ++k) u_prev_[k] = u_now_[k];
+    return result;
+  }
+
+ private:
+  void slave_state(index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
+    vec2 u = vec2::Zero(), w = vec2::Zero();
+    for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {
+      const index_t I = table_.neighbor[e];
+      u += table_.N[e] * d[I];
+      w += table_.N[e] * v[I];
+    }
+    x_[j] = (*X_)[slave_[j]] + u;
+    v_[j] = w;
+  }
+
+  // A tool may touch the body at t = 0 but not start inside it.
+  void check_initial_penetration() const {
+    const std::vector<vec2>& X = *X_;
+    vec2 lo = X[0], hi = X[0];
+    for (const vec2& x : X) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    const double tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-300);
+    for (std::size_t k = 0; k < tools_.size(); ++k) {
+      const rigid_tool& tool = tools_[k];
+      const vec2 u0 = tool.displacement(0.0);
+      for (std::size_t I = 0; I < X.size(); ++I) {
+        const vec2 y = X[I] - u0;
+        for (const index_t s : grid_[k].candidates(y)) {
+          double g;
+          if (tool.catches(s, y, g) && g > tolerance)
+            fail("contact setup: tool '{}' starts inside the body: particle {} at ({}, {}) is {} behind its "
+                 "segment {}; move the tool (or its motion at t = 0) so that it at most touches the body",
+                 tool.name(), I, X[I].x(), X[I].y(), g, s);
+        }
+      }
+    }
+  }
+
+  std::vector<rigid_tool> tools_;
+  std::vector<segment_grid> grid_;
+  Friction friction_;
+  Enforcement enforcement_;
+
+  const std::vector<vec2>* X_ = nullptr;
+  const std::vector<double>* m_ = nullptr;
+  std::vector<index_t> slave_;
+  shape_table<2> table_;
+  std::vector<double> m_eff_;
+  bool ready_ = false;
+
+  // Scratch, sized in setup().
+  std::vector<vec2> x_, v_, x_prev_;          // #slaves
+  std::vector<vec2> u_prev_, u_now_, v_tool_;  // #tools
+  std::vector<index_t> held_;                  // #tools x #slaves: segment of the previous call
+  std::vector<contact_pair> pair_;             // capacity #tools x #slaves
+  index_t pairs_ = 0;
+  std::vector<char> in_contact_;               // #slaves
+  std::vector<vec2> force_, dforce_;           // #particles
+  std::vector<char> touched_flag_;             // #particles
+  std::vector<index_t> touched_;               // #particles
+  index_t touched_count_ = 0;
+  std::vector<vec2> reaction_;                 // #tools
+};
+
+}  // namespace rkpm::contact
