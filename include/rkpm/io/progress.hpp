@@ -81,7 +81,7 @@ class progress_line {
   static std::string format_line(double t, double t_end, long step, double steps_per_s, double eta_s) {
     const double fraction = t_end > 0 ? std::clamp(t / t_end, 0.0, 1.0) : 0.0;
     return fmt::format("[{:3d}%] t = {}  step {}  {:.0f} steps/s  eta {}",
-                       static_cast<int>(std::floor(100.0 * fraction)), format_time(t, t_end), step,
+                       static_cast<int>(std::floor(100.0 * fraction + 1e-9)), format_time(t, t_end), step,
                        std::isfinite(steps_per_s) ? steps_per_s : 0.0, format_duration(eta_s));
   }
 
