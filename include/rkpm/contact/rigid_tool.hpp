@@ -10,8 +10,8 @@
 //   (for example beneath the other side of a thin tool) is not pulled through it;
 //   the projection lambda = (y - P_k) . t_k / L_k must lie in [0, 1], except inside the wedge
 //   behind a concave vertex of the tool (tool-side angle above 180 degrees) where neither face's
-//   band reaches: there a point behind both adjacent faces is caught by both, and the caller
-//   chooses (see segment_search.hpp).
+//   band reaches: there a point behind both adjacent faces (within the depth of each) and past
+//   the shared vertex of both is caught by both, and the caller chooses (segment_search.hpp).
 
 #include <algorithm>
 #include <cmath>
@@ -113,13 +113,20 @@ class rigid_tool {
     const projection p = project(k, y);
     const double g = -p.distance;
     if (!(g > 0.0 && g <= depth_)) return false;
-    if (p.lambda < 0.0 && !(concave_[k] && project(k - 1, y).distance < 0.0)) return false;
-    if (p.lambda > 1.0 && !(concave_[k + 1] && project(k + 1, y).distance < 0.0)) return false;
+    if (p.lambda < 0.0 && !(concave_[k] && in_wedge(project(k - 1, y), false))) return false;
+    if (p.lambda > 1.0 && !(concave_[k + 1] && in_wedge(project(k + 1, y), true))) return false;
     gap = g;
     return true;
   }
 
  private:
+  // Is a point, seen from the neighbouring segment (projection q), in the wedge behind a concave
+  // vertex: behind that segment too, within the depth, and past its end at the shared vertex?
+  bool in_wedge(const projection& q, bool vertex_is_start) const {
+    const double g = -q.distance;
+    return g > 0.0 && g <= depth_ && (vertex_is_start ? q.lambda < 0.0 : q.lambda > 1.0);
+  }
+
   std::string name_;
   std::vector<vec2> vertex_;
   side side_;
