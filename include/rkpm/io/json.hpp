@@ -105,10 +105,20 @@ class json {
     a.push_back(std::move(item));
     return a.back();
   }
-  const json& operator[](std::size_t i) const {
+  // Array item access. A template on the integer type so that a[0] is an exact match and
+  // never taken for a null key pointer.
+  template <std::integral I>
+    requires(!std::same_as<I, bool>)
+  const json& operator[](I i) const {
     const auto& a = get<array_type>("an array");
-    if (i >= a.size()) fail("json: index {} out of range for an array of {} items", i, a.size());
-    return a[i];
+    if (i < 0 || static_cast<std::size_t>(i) >= a.size())
+      fail("json: index {} out of range for an array of {} items", i, a.size());
+    return a[static_cast<std::size_t>(i)];
+  }
+  template <std::integral I>
+    requires(!std::same_as<I, bool>)
+  json& operator[](I i) {
+    return const_cast<json&>(std::as_const(*this)[i]);
   }
 
   // indent < 0: one line; indent >= 0: pretty-printed with that many spaces per level.

@@ -97,6 +97,9 @@ TEST_CASE("json structure: ordered keys, dump layouts, errors") {
         "{\n  \"z\": 3,\n  \"a\": \"two\",\n  \"m\": {\n    \"inner\": true\n  },\n  \"list\": [\n    1.5,\n    -2\n  ]\n}");
   CHECK(j.at("m").at("inner").as_bool());
   CHECK(j.at("list")[1].as_number() == -2);
+  j["list"][0] = "first";  // literal 0 is an index, not a null key
+  CHECK(j.at("list")[0].as_string() == "first");
+  CHECK_THROWS_AS(j.at("list")[2], rkpm::error);
   CHECK(j.size() == 4);
   CHECK(json::array().dump() == "[]");
   CHECK(json::object().dump() == "{}");
