@@ -22,7 +22,7 @@ struct body_view {
 };
 
 struct step_result {
-  double work = 0;             // contact work of the step, sum_I f_I . v_I(corrected) dt
+  double work = 0;             // contact work of the step, sum_I f_I . (v_I before + after) / 2 dt
   double max_penetration = 0;  // largest gap found on the predicted configuration
   index_t active = 0;          // slave particles in contact with at least one tool
 };
