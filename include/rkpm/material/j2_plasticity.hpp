@@ -103,7 +103,9 @@ class j2_plasticity {
 
  private:
   double plastic_work_increment(double eps_p, double dgamma) const {
-    if constexpr (requires { { hardening_.integral(eps_p, eps_p) } -> std::convertible_to<double>; })
+    if constexpr (requires {
+                    { hardening_.integral(eps_p, eps_p) } -> std::convertible_to<double>;
+                  })
       return hardening_.integral(eps_p, eps_p + dgamma);
     else
       return 0.5 * (hardening_.flow_stress(eps_p) + hardening_.flow_stress(eps_p + dgamma)) *

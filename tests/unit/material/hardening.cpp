@@ -49,7 +49,8 @@ TEST_CASE("power-law hardening: wheel aluminium, 576.79 MPa (0.01658 + eps_p)^0.
     CHECK(law.flow_stress(e) == doctest::Approx(576.79e6 * std::pow(base, 0.3593)).epsilon(1e-14));
     // Slope against a central difference of the closed form (step relative to the base).
     const double d = 1e-5 * base;
-    const double fd = 576.79e6 * (std::pow(base + d, 0.3593) - std::pow(base - d, 0.3593)) / (2 * d);
+    const double fd =
+        576.79e6 * (std::pow(base + d, 0.3593) - std::pow(base - d, 0.3593)) / (2 * d);
     CHECK(law.slope(e) == doctest::Approx(fd).epsilon(1e-8));
   }
   // Work integral against composite Simpson on [0.01, 0.4].
