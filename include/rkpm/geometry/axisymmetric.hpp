@@ -13,7 +13,7 @@ namespace rkpm::geometry {
 
 struct axisymmetric {
   static constexpr std::string_view name = "axisymmetric";
-  static constexpr bool axisymmetric = true;
+  static constexpr bool is_axisymmetric = true;
   static double weight_factor(const vec2& X) { return 2.0 * std::numbers::pi * X[0]; }
   static double out_of_plane_stretch(const vec2& u, const vec2& X) { return 1.0 + u[0] / X[0]; }
 };

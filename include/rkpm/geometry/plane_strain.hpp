@@ -10,7 +10,7 @@ namespace rkpm::geometry {
 
 struct plane_strain {
   static constexpr std::string_view name = "plane_strain";
-  static constexpr bool axisymmetric = false;
+  static constexpr bool is_axisymmetric = false;
   static double weight_factor(const vec2&) { return 1.0; }
   static double out_of_plane_stretch(const vec2&, const vec2&) { return 1.0; }
 };

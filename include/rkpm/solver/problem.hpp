@@ -1,0 +1,51 @@
+#pragma once
+// problem: the run-time description of one simulation that a case builds for any
+// configuration type (design.md section 1): particles, cells, material, contact (with its
+// tools), initial velocity, constraints and body force; and run_options for the stepping.
+
+#include <functional>
+#include <vector>
+
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/solver/constraints.hpp>
+
+namespace rkpm {
+
+template <class Material, class Contact>
+struct problem {
+  particle_set<2> particles;
+  background_mesh mesh;
+  Material material;
+  Contact contact;
+  // Physical initial velocity v0(X); the coefficients start at v0(X_I), exact for linear fields.
+  std::function<vec2(const vec2&)> initial_velocity;
+  // Prescribed physical velocities; in axisymmetric geometry u_r = 0 on the axis is added.
+  std::vector<velocity_constraint> constraints;
+  vec2 body_force = vec2::Zero();  // acceleration (m/s^2), e.g. gravity
+  // Contact slave particles; empty means the boundary nodes of the mesh when the mesh nodes are
+  // the particles (make_grid_mesh + make_grid_particles), else none.
+  std::vector<index_t> slave_particles;
+};
+
+struct run_options {
+  double end_time = 0.0;            // s
+  double time_step_fraction = 0.5;  // dt = fraction * stable step (estimated, re-estimated)
+  double fixed_time_step = 0.0;     // s; > 0 forces dt (checked against the stable limit)
+  int time_step_update_interval = 10;  // steps between re-estimates of the stable step
+  double max_moment_condition = 1e10;  // RK moment-matrix conditioning limit
+  double axis_tolerance = 1e-9;        // relative to the body size: particles with r below lie on the axis
+
+  void validate() const;
+};
+
+inline void run_options::validate() const {
+  if (!(end_time >= 0.0)) fail("end time {} must be non-negative", end_time);
+  if (!(time_step_fraction > 0.0 && time_step_fraction <= 1.0))
+    fail("time step fraction {} must lie in (0, 1]: the central-difference scheme is unstable beyond "
+         "the stable step", time_step_fraction);
+  if (!(fixed_time_step >= 0.0)) fail("fixed time step {} must be positive (or 0 for automatic)", fixed_time_step);
+  if (time_step_update_interval < 1) fail("time step update interval must be at least 1 step");
+}
+
+}  // namespace rkpm
