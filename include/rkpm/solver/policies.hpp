@@ -1,0 +1,93 @@
+#pragma once
+// The shipped policies of each family as Boost.Hana type lists, the cartesian product of
+// all combinations, and a pairwise covering set (design.md section 3).
+//
+// Every solver type costs compile time, and the full product is 2 x 2 x 3 x 2 x 3 x 4 = 288
+// configurations. The tests instantiate `covering_configs`: 12 configurations in which every
+// pair of policies from two different families appears at least once (checked below at
+// compile time). The runner instantiates only what its option strings can reach.
+
+#include <array>
+#include <boost/hana.hpp>
+#include <cstddef>
+
+#include <rkpm/contact/enforcement.hpp>
+#include <rkpm/contact/friction.hpp>
+#include <rkpm/contact/none.hpp>
+#include <rkpm/contact/particle_to_segment.hpp>
+#include <rkpm/material/elastic.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/config.hpp>
+
+namespace rkpm::policies {
+
+namespace hana = boost::hana;
+
+inline constexpr auto kernels = hana::tuple_t<kernel::cubic_spline, kernel::quartic_spline>;
+inline constexpr auto corrections = hana::tuple_t<correction::linear, correction::quadratic>;
+inline constexpr auto quadratures = hana::tuple_t<quadrature::q2, quadrature::q4, quadrature::q9>;
+inline constexpr auto geometries = hana::tuple_t<geometry::plane_strain, geometry::axisymmetric>;
+inline constexpr auto materials =
+    hana::tuple_t<material::elastic, material::j2_plasticity<material::hardening::linear>,
+                  material::j2_plasticity<material::hardening::power_law>>;
+inline constexpr auto contacts =
+    hana::tuple_t<contact::none,
+                  contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>,
+                  contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>,
+                  contact::particle_to_segment<contact::enforcement::penalty, contact::friction::frictionless>>;
+
+// In config's parameter order.
+inline constexpr auto families = hana::make_tuple(kernels, corrections, quadratures, geometries, materials, contacts);
+inline constexpr std::size_t family_count = 6;
+inline constexpr std::array<std::size_t, family_count> family_sizes = {
+    hana::length(kernels), hana::length(corrections), hana::length(quadratures),
+    hana::length(geometries), hana::length(materials), hana::length(contacts)};
+
+// config<...> from a hana tuple of hana::type_c<policy>.
+inline constexpr auto to_config = [](auto types) {
+  return hana::unpack(types, [](auto... t) { return hana::type_c<config<typename decltype(t)::type...>>; });
+};
+
+// Every combination (288 types; instantiating them all is what the covering set avoids).
+inline constexpr auto all_configs = [] { return hana::transform(hana::cartesian_product(families), to_config); };
+
+// Rows of policy indices (one per family, config order) covering every cross-family pair.
+inline constexpr std::array<std::array<std::size_t, family_count>, 12> covering_rows{{
+    {0, 0, 0, 1, 0, 0}, {0, 1, 1, 0, 1, 0}, {1, 1, 2, 0, 2, 0}, {0, 1, 0, 0, 1, 1},
+    {0, 0, 1, 0, 2, 1}, {1, 1, 2, 1, 0, 1}, {0, 1, 0, 1, 2, 2}, {0, 0, 1, 0, 0, 2},
+    {1, 0, 2, 1, 1, 2}, {1, 1, 0, 1, 0, 3}, {1, 0, 1, 1, 1, 3}, {0, 1, 2, 0, 2, 3}}};
+
+template <std::size_t Rows>
+constexpr bool covers_every_pair(const std::array<std::array<std::size_t, family_count>, Rows>& rows,
+                                 const std::array<std::size_t, family_count>& sizes) {
+  for (std::size_t a = 0; a < family_count; ++a)
+    for (std::size_t b = a + 1; b < family_count; ++b)
+      for (std::size_t x = 0; x < sizes[a]; ++x)
+        for (std::size_t y = 0; y < sizes[b]; ++y) {
+          bool found = false;
+          for (const auto& r : rows) found = found || (r[a] == x && r[b] == y);
+          if (!found) return false;
+        }
+  return true;
+}
+static_assert(covers_every_pair(covering_rows, family_sizes),
+              "covering_rows must contain every pair of policies from two different families");
+
+// The covering set as a hana tuple of config types.
+inline constexpr auto covering_configs = [] {
+  return hana::unpack(hana::make_range(hana::size_c<0>, hana::size_c<covering_rows.size()>), [](auto... r) {
+    auto row = [](auto i) {
+      constexpr std::size_t row_index = decltype(i)::value;
+      return to_config(hana::make_tuple(
+          families[hana::size_c<0>][hana::size_c<covering_rows[row_index][0]>],
+          families[hana::size_c<1>][hana::size_c<covering_rows[row_index][1]>],
+          families[hana::size_c<2>][hana::size_c<covering_rows[row_index][2]>],
+          families[hana::size_c<3>][hana::size_c<covering_rows[row_index][3]>],
+          families[hana::size_c<4>][hana::size_c<covering_rows[row_index][4]>],
+          families[hana::size_c<5>][hana::size_c<covering_rows[row_index][5]>]));
+    };
+    return hana::make_tuple(row(r)...);
+  });
+}();
+
+}  // namespace rkpm::policies
