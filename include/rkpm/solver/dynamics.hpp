@@ -48,6 +48,9 @@ class dynamics {
     options_.validate();
     material_.constants().validate();
     const index_t n = model_.particle_count(), nq = model_.point_count();
+    support_inverse_.setZero();
+    for (const vec2& a : model_.particles.support) support_inverse_ += a;
+    support_inverse_ = (support_inverse_ / static_cast<double>(n)).cwiseInverse();
     mass_.resize(n);
     for (index_t I = 0; I < n; ++I) mass_[I] = material_.density() * model_.lumped_volume[I];
     d_.assign(n, vec2::Zero());
@@ -157,7 +160,8 @@ class dynamics {
   double min_time_step() const { return steps_ ? dt_min_ : dt_; }
   double max_time_step() const { return steps_ ? dt_max_ : dt_; }
   double reference_stable_step() const { return reference_dt_; }
-  // Smallest principal stretch over the quadrature points at the last force evaluation.
+  // Smallest support stretch (see support_stretch) over the quadrature points at the last
+  // force evaluation; the stable step is reference_stable_step() times this.
   double min_stretch() const { return min_stretch_; }
   const energy_balance& energy() const { return energy_; }
   const run_options& options() const { return options_; }
@@ -329,8 +333,7 @@ class dynamics {
       // P = tau F^-T; the in-plane block and the out-of-plane (hoop) component.
       stress_w_[q] = tau_[q].topLeftCorner<2, 2>() * Fi.transpose() * model_.points.weight[q];
       hoop_w_[q] = G::is_axisymmetric ? tau_[q](2, 2) / F(2, 2) * model_.points.weight[q] / X[0] : 0.0;
-      // Smallest principal stretch: smallest singular value of the in-plane block, or F33.
-      min_stretch = std::min({min_stretch, smallest_singular_value(F.topLeftCorner<2, 2>()), F(2, 2)});
+      min_stretch = std::min({min_stretch, support_stretch(Fi), F(2, 2)});
     }
     if (bad_point >= 0) {
       const vec2& X = model_.points.position[bad_point];
@@ -358,10 +361,16 @@ class dynamics {
     }
   }
 
-  static double smallest_singular_value(const mat2& A) {
-    const double s = A.squaredNorm(), det = A.determinant();
-    const double disc = std::sqrt(std::max(0.0, s * s - 4.0 * det * det));
-    return std::sqrt(std::max(0.0, 0.5 * (s - disc)));
+  // How much the support has narrowed, as the highest frequency sees it: current gradients
+  // are grad_x N = F^-T grad_X N with |grad_X N| ~ 1/a_k per direction, so the largest
+  // current gradient scale is the largest singular value of F^-T diag(1/a). Relative to the
+  // reference (1/min a_k) this is 1 at F = I and follows the thinnest direction of the
+  // deformed support, not merely the smallest stretch (the Taylor bar's supports are 4:1).
+  double support_stretch(const mat2& F_inverse) const {
+    const mat2 B = F_inverse.transpose() * support_inverse_.asDiagonal();
+    const double s = B.squaredNorm(), det = B.determinant();
+    const double largest = std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
+    return support_inverse_.maxCoeff() / largest;
   }
 
   void update_time_step(double stretch) {
@@ -392,6 +401,7 @@ class dynamics {
   energy_balance energy_;
   contact::step_result last_contact_;
   double max_penetration_ = 0.0;
+  vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
   double time_ = 0.0, dt_ = 0.0, reference_dt_ = 0.0, min_stretch_ = 1.0;
   double dt_min_ = std::numeric_limits<double>::infinity(), dt_max_ = 0.0;
   index_t steps_ = 0;

@@ -3,8 +3,9 @@
 // omega_max^2 the largest eigenvalue of M^-1 K (design.md section 4 "Time integration").
 // K is the small-strain elastic stiffness of the discretization in its reference state,
 // applied matrix-free; power iteration finds omega_max. During the run the step follows the
-// current configuration: the highest frequency scales with the inverse of the smallest
-// principal stretch (grad_x N = grad_X N F^-1), so dt_crit(t) = dt_crit(0) * min stretch.
+// current configuration: the highest frequency scales with the largest current gradient of
+// the shape functions, grad_x N = F^-T grad_X N, so dt_crit(t) = dt_crit(0) * s(t) with s the
+// narrowing of the supports (dynamics::support_stretch).
 
 #include <cmath>
 #include <vector>
