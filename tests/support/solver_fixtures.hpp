@@ -53,10 +53,15 @@ inline contact::rigid_tool flat_tool_below(double x0, double x1, double y0) {
 }
 
 // ---- problems on a regular grid ----------------------------------------------------------
+// Support factor s (a = s h): a quadratic basis needs more than 2 neighbours per direction at a
+// corner, so more than 2 h.
+template <class C>
+inline constexpr double default_support = std::is_same_v<C, correction::quadratic> ? 2.5 : 2.0;
+
 template <class Cfg>
 problem_for<Cfg> grid_problem(const vec2& lo, const vec2& hi, const Eigen::Vector2i& n,
                               const material::elastic_constants& c = steel_like(),
-                              double support = 2.0) {
+                              double support = default_support<typename Cfg::correction_type>) {
   return problem_for<Cfg>{.particles = make_grid_particles<2>(lo, hi, n, support),
                           .mesh = make_grid_mesh(lo, hi, n),
                           .material = make_material<typename Cfg::material_type>(c),
