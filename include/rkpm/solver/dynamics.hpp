@@ -81,6 +81,10 @@ class dynamics {
     energy_.record();
   }
 
+  // The contact policy keeps pointers into this object's particle data: no copies or moves.
+  dynamics(const dynamics&) = delete;
+  dynamics& operator=(const dynamics&) = delete;
+
   // ---- stepping ----------------------------------------------------------------------
   void step() {
     const double dt = dt_;

@@ -1,0 +1,115 @@
+#pragma once
+// Case 1 of the paper (spec/paper.md section 5): Taylor bar impact, axisymmetric.
+// A copper cylinder (R0 = 3.2 mm, L0 = 32.4 mm) hits a rigid frictionless wall at 227 m/s;
+// half of the (r, z) section, 21 x 51 particles, 80 microseconds. The paper's Table 3 gives
+// the final radius of the impact face and the final height. Parameters are SI; results are
+// reported in millimetres, as the paper does.
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/geometry/axisymmetric.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/problem.hpp>
+
+#include "cases/contact_setup.hpp"
+#include "cases/parameters.hpp"
+
+namespace rkpm::cases {
+
+struct taylor_bar_parameters {
+  double velocity_m_s = 227.0;
+  double radius_m = 3.2e-3;
+  double height_m = 32.4e-3;
+  double youngs_modulus_Pa = 117e9;
+  double poisson_ratio = 0.35;
+  double density_kg_m3 = 8930.0;
+  double yield_stress_Pa = 400e6;
+  double hardening_modulus_Pa = 100e6;
+  double friction = 0.0;
+  double end_time_s = 80e-6;
+  double radial_particles = 21;
+  double axial_particles = 51;
+  double support_factor = 2.0;
+  double penalty_stiffness_N_m = 1e11;
+
+  using P = taylor_bar_parameters;
+  static constexpr std::array fields = {
+      parameter<P>{"velocity_m_s", "m/s", "impact velocity", &P::velocity_m_s},
+      parameter<P>{"radius_m", "m", "initial radius R0", &P::radius_m},
+      parameter<P>{"height_m", "m", "initial height L0", &P::height_m},
+      parameter<P>{"youngs_modulus_Pa", "Pa", "Young's modulus", &P::youngs_modulus_Pa},
+      parameter<P>{"poisson_ratio", "-", "Poisson's ratio", &P::poisson_ratio},
+      parameter<P>{"density_kg_m3", "kg/m^3", "density", &P::density_kg_m3},
+      parameter<P>{"yield_stress_Pa", "Pa", "initial yield stress", &P::yield_stress_Pa},
+      parameter<P>{"hardening_modulus_Pa", "Pa", "linear hardening modulus H", &P::hardening_modulus_Pa},
+      parameter<P>{"friction", "-", "Coulomb coefficient at the wall", &P::friction},
+      parameter<P>{"end_time_s", "s", "simulated time", &P::end_time_s},
+      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles},
+      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles},
+      parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
+      parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
+  };
+};
+
+struct taylor_bar {
+  static constexpr std::string_view name = "taylor_bar";
+  static constexpr std::string_view description = "Taylor bar impact on a rigid wall (axisymmetric, paper section 5)";
+  using parameters = taylor_bar_parameters;
+  using geometry_type = geometry::axisymmetric;
+  using material_type = material::j2_plasticity<material::hardening::linear>;
+
+  // The paper's Table 3 (RKPM rows), in mm.
+  static constexpr double paper_radius_q4_mm = 7.06, paper_height_q4_mm = 21.58;
+  static constexpr double paper_radius_q2_mm = 7.11, paper_height_q2_mm = 21.59;
+
+  static double end_time(const parameters& p) { return p.end_time_s; }
+
+  template <class Contact>
+  static problem<material_type, Contact> build(const parameters& p, int resolution) {
+    require_positive("velocity_m_s", p.velocity_m_s);
+    require_positive("radius_m", p.radius_m);
+    require_positive("height_m", p.height_m);
+    require_positive("end_time_s", p.end_time_s);
+    if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
+    const Eigen::Vector2i n(refined_count(p.radial_particles, resolution), refined_count(p.axial_particles, resolution));
+    const vec2 lo(0.0, 0.0), hi(p.radius_m, p.height_m);
+    problem<material_type, Contact> pr{
+        .particles = make_grid_particles<2>(lo, hi, n, p.support_factor),
+        .mesh = make_grid_mesh(lo, hi, n),
+        .material = material_type({p.youngs_modulus_Pa, p.poisson_ratio, p.density_kg_m3},
+                                  material::hardening::linear{p.yield_stress_Pa, p.hardening_modulus_Pa}),
+        .contact = make_contact<Contact>(
+            {contact::rigid_tool("wall", {vec2(-p.radius_m, 0.0), vec2(8.0 * p.radius_m, 0.0)},
+                                 contact::side::left, contact::tool_motion::fixed())},
+            p.friction, p.penalty_stiffness_N_m),
+        .initial_velocity = [v = p.velocity_m_s](const vec2&) { return vec2(0.0, -v); },
+    };
+    return pr;
+  }
+
+  // Key measures (mm): the largest radius of the impact face (particles that started on it),
+  // the height (largest z) and the largest equivalent plastic strain.
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
+                                                             const std::vector<vec2>& /*tool_force*/) {
+    const auto x = s.particle_positions();
+    const auto& X = s.model().particles.position;
+    double radius = 0.0, height = 0.0, eps_p = 0.0;
+    for (std::size_t I = 0; I < x.size(); ++I) {
+      if (X[I][1] <= 1e-12) radius = std::max(radius, x[I][0]);
+      height = std::max(height, x[I][1]);
+    }
+    for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
+    return {{"final_radius_mm", radius * 1e3},
+            {"final_height_mm", height * 1e3},
+            {"max_equivalent_plastic_strain", eps_p}};
+  }
+};
+
+}  // namespace rkpm::cases

@@ -1,0 +1,130 @@
+#pragma once
+// Case 3 of the paper (spec/paper.md section 7, with our reconstruction of its lost figure):
+// axisymmetric forging of an aluminium slug into a wheel. The slug (r 0..22 mm, z 0..28 mm,
+// 31 x 30 particles) sits on a fixed die (floor z = 0 to r = 35 mm, wall r = 35 mm); the punch
+// (0,38)-(10,38)-(12,28)-(24,28)-(26,38)-(34.5,38) mm moves down at 10 m/s for 20 mm, driving
+// material up into the hub recess (r < 12 mm) and out into the rim recess (r > 24 mm).
+// Frictionless; power-law flow stress 576.79 (0.01658 + eps_p)^0.3593 MPa.
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/geometry/axisymmetric.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/problem.hpp>
+
+#include "cases/contact_setup.hpp"
+#include "cases/parameters.hpp"
+
+namespace rkpm::cases {
+
+struct wheel_forging_parameters {
+  double tool_velocity_m_s = 10.0;
+  double stroke_m = 20e-3;
+  double friction = 0.0;
+  double slug_radius_m = 22e-3;
+  double slug_height_m = 28e-3;
+  double youngs_modulus_Pa = 71e9;
+  double poisson_ratio = 0.3;
+  double density_kg_m3 = 2700.0;
+  double flow_coefficient_Pa = 576.79e6;
+  double flow_offset = 0.01658;
+  double flow_exponent = 0.3593;
+  double radial_particles = 31;
+  double axial_particles = 30;
+  double support_factor = 2.0;
+  double penalty_stiffness_N_m = 1e11;
+
+  using P = wheel_forging_parameters;
+  static constexpr std::array fields = {
+      parameter<P>{"tool_velocity_m_s", "m/s", "punch speed (downward)", &P::tool_velocity_m_s},
+      parameter<P>{"stroke_m", "m", "punch stroke (end time = stroke / speed)", &P::stroke_m},
+      parameter<P>{"friction", "-", "Coulomb coefficient on punch and die", &P::friction},
+      parameter<P>{"slug_radius_m", "m", "slug radius", &P::slug_radius_m},
+      parameter<P>{"slug_height_m", "m", "slug height", &P::slug_height_m},
+      parameter<P>{"youngs_modulus_Pa", "Pa", "Young's modulus", &P::youngs_modulus_Pa},
+      parameter<P>{"poisson_ratio", "-", "Poisson's ratio", &P::poisson_ratio},
+      parameter<P>{"density_kg_m3", "kg/m^3", "density", &P::density_kg_m3},
+      parameter<P>{"flow_coefficient_Pa", "Pa", "K in sigma_y = K (eps0 + eps_p)^n", &P::flow_coefficient_Pa},
+      parameter<P>{"flow_offset", "-", "eps0 in the flow law", &P::flow_offset},
+      parameter<P>{"flow_exponent", "-", "n in the flow law", &P::flow_exponent},
+      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles},
+      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles},
+      parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
+      parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
+  };
+};
+
+struct wheel_forging {
+  static constexpr std::string_view name = "wheel_forging";
+  static constexpr std::string_view description = "axisymmetric wheel forging between a punch and a die (paper section 7)";
+  using parameters = wheel_forging_parameters;
+  using geometry_type = geometry::axisymmetric;
+  using material_type = material::j2_plasticity<material::hardening::power_law>;
+
+  static double end_time(const parameters& p) { return p.stroke_m / p.tool_velocity_m_s; }
+
+  // Punch and die at t = 0 (m): the reconstruction of spec/paper.md section 7.
+  static std::vector<vec2> punch_outline() {
+    return {vec2(-1e-3, 38e-3), vec2(10e-3, 38e-3), vec2(12e-3, 28e-3), vec2(24e-3, 28e-3),
+            vec2(26e-3, 38e-3), vec2(34.5e-3, 38e-3)};
+  }
+  static std::vector<vec2> die_outline() { return {vec2(-1e-3, 0.0), vec2(35e-3, 0.0), vec2(35e-3, 45e-3)}; }
+
+  template <class Contact>
+  static problem<material_type, Contact> build(const parameters& p, int resolution) {
+    require_positive("tool_velocity_m_s", p.tool_velocity_m_s);
+    require_positive("stroke_m", p.stroke_m);
+    require_positive("slug_radius_m", p.slug_radius_m);
+    require_positive("slug_height_m", p.slug_height_m);
+    if (!(p.stroke_m < p.slug_height_m)) fail("stroke_m = {} must be below the slug height {}", p.stroke_m, p.slug_height_m);
+    if (!(p.slug_radius_m < 35e-3)) fail("slug_radius_m = {} must fit inside the die (35 mm)", p.slug_radius_m);
+    if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
+    const Eigen::Vector2i n(refined_count(p.radial_particles, resolution), refined_count(p.axial_particles, resolution));
+    const vec2 lo(0.0, 0.0), hi(p.slug_radius_m, p.slug_height_m);
+    std::vector<contact::rigid_tool> tools{
+        contact::rigid_tool("punch", punch_outline(), contact::side::right,
+                            contact::tool_motion::constant_velocity(vec2(0.0, -p.tool_velocity_m_s))),
+        contact::rigid_tool("die", die_outline(), contact::side::left, contact::tool_motion::fixed())};
+    problem<material_type, Contact> pr{
+        .particles = make_grid_particles<2>(lo, hi, n, p.support_factor),
+        .mesh = make_grid_mesh(lo, hi, n),
+        .material = material_type({p.youngs_modulus_Pa, p.poisson_ratio, p.density_kg_m3},
+                                  material::hardening::power_law{p.flow_coefficient_Pa, p.flow_offset, p.flow_exponent}),
+        .contact = make_contact<Contact>(std::move(tools), p.friction, p.penalty_stiffness_N_m),
+        .initial_velocity = {},
+    };
+    return pr;
+  }
+
+  // Key measures: penetration (mm), relative change of the deformed volume sum_q J_q w_q,
+  // heights reached in the hub (r < 10 mm) and rim (r > 26 mm) recesses, punch force (N).
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
+                                                             const std::vector<vec2>& tool_force) {
+    const auto x = s.particle_positions();
+    double hub = 0.0, rim = 0.0;
+    for (const vec2& xi : x) {
+      if (xi[0] < 10e-3) hub = std::max(hub, xi[1]);
+      if (xi[0] > 26e-3) rim = std::max(rim, xi[1]);
+    }
+    double v0 = 0.0, v = 0.0;
+    const auto& w = s.model().points.weight;
+    for (std::size_t q = 0; q < w.size(); ++q) {
+      v0 += w[q];
+      v += w[q] * s.point_det_F()[q];
+    }
+    return {{"max_penetration_mm", s.max_penetration() * 1e3},
+            {"volume_change", v / v0 - 1.0},
+            {"hub_height_mm", hub * 1e3},
+            {"rim_height_mm", rim * 1e3},
+            {"final_punch_force_N", tool_force.empty() ? 0.0 : std::abs(tool_force[0][1])}};
+  }
+};
+
+}  // namespace rkpm::cases

@@ -1,0 +1,91 @@
+#pragma once
+// The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --contact E`:
+// a table, built with Boost.Hana from the policy lists, from the option strings to one
+// compiled configuration type per combination. The case fixes geometry and material; Coulomb
+// friction (coefficient 0 is frictionless) serves every case. Only the discrete-model builder
+// depends on kernel, correction and quadrature, so the table's 36 entries per case share
+// three instantiations of the time-stepping loop (one per enforcement).
+
+#include <boost/hana.hpp>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/dynamics.hpp>
+#include <rkpm/solver/policies.hpp>
+
+#include "cases/parameters.hpp"
+#include "outcome.hpp"
+#include "request.hpp"
+#include "simulate.hpp"
+
+namespace rkpm::runner {
+
+namespace hana = boost::hana;
+
+inline constexpr auto enforcements =
+    hana::tuple_t<contact::enforcement::paper, contact::enforcement::effective_mass, contact::enforcement::penalty>;
+
+template <class Case, class Config>
+run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
+  using G = typename Case::geometry_type;
+  using M = typename Case::material_type;
+  using Ct = typename Config::contact_type;
+  using solver_type = dynamics<G, M, Ct>;
+  run_options options;
+  options.end_time = r.end_time.value_or(Case::end_time(p));
+  const std::function<std::unique_ptr<solver_type>()> make = [&] {
+    auto prob = Case::template build<Ct>(p, r.resolution);
+    auto model = build_discrete_model<typename Config::kernel_type, typename Config::correction_type,
+                                      typename Config::quadrature_type, G>(prob.particles, prob.mesh,
+                                                                           options.max_moment_condition);
+    return std::make_unique<solver_type>(std::move(model), std::move(prob), options);
+  };
+  return simulate<Case, solver_type>(r, p, make);
+}
+
+template <class Case>
+using run_function = run_outcome (*)(const run_request&, const typename Case::parameters&);
+
+// "cubic-linear-q2-paper" -> the run function of that configuration.
+template <class Case>
+std::map<std::string, run_function<Case>> dispatch_table() {
+  std::map<std::string, run_function<Case>> table;
+  auto combos = hana::cartesian_product(
+      hana::make_tuple(policies::kernels, policies::corrections, policies::quadratures, enforcements));
+  hana::for_each(combos, [&](auto combo) {
+    using K = typename decltype(+combo[hana::size_c<0>])::type;
+    using C = typename decltype(+combo[hana::size_c<1>])::type;
+    using Q = typename decltype(+combo[hana::size_c<2>])::type;
+    using E = typename decltype(+combo[hana::size_c<3>])::type;
+    using Ct = contact::particle_to_segment<E, contact::friction::coulomb>;
+    using Config = config<K, C, Q, typename Case::geometry_type, typename Case::material_type, Ct>;
+    table[fmt::format("{}-{}-{}-{}", K::name, C::name, Q::name, E::name)] = &run_with<Case, Config>;
+  });
+  return table;
+}
+
+// Runs the case named by the request (parameters from --set), or prints its --help.
+template <class Case>
+run_outcome run_case(const run_request& r) {
+  typename Case::parameters p;
+  for (const auto& [name, value] : r.sets) cases::set_parameter(p, name, value);
+  if (r.help) {
+    fmt::print("{}: {}\nparameters (--set NAME=VALUE, SI units):\n{}", Case::name, Case::description,
+               cases::describe_parameters(p));
+    return {};
+  }
+  const auto table = dispatch_table<Case>();
+  const auto it = table.find(r.method_key());
+  if (it == table.end()) fail("no compiled configuration for '{}'", r.method_key());
+  return it->second(r, p);
+}
+
+run_outcome run_taylor_bar(const run_request& r);
+run_outcome run_block_forging(const run_request& r);
+run_outcome run_wheel_forging(const run_request& r);
+
+}  // namespace rkpm::runner

@@ -1,0 +1,7 @@
+// The dispatch table of the block_forging case, compiled on its own so the cases build in parallel.
+#include "cases/block_forging.hpp"
+#include "dispatch.hpp"
+
+namespace rkpm::runner {
+run_outcome run_block_forging(const run_request& r) { return run_case<cases::block_forging>(r); }
+}  // namespace rkpm::runner

@@ -1,0 +1,7 @@
+// The dispatch table of the taylor_bar case, compiled on its own so the cases build in parallel.
+#include "cases/taylor_bar.hpp"
+#include "dispatch.hpp"
+
+namespace rkpm::runner {
+run_outcome run_taylor_bar(const run_request& r) { return run_case<cases::taylor_bar>(r); }
+}  // namespace rkpm::runner
