@@ -7,7 +7,10 @@
 //                  particle lands on the segment in one step. `sweeps` > 1 repeats the
 //                  correction on the updated configuration (projected Jacobi, later sweeps scaled
 //                  by `relaxation`), so neighbouring slave particles that share coefficients
-//                  close their gaps too.
+//                  close their gaps too. The default is 3: with one sweep a flat row of slaves
+//                  is pushed out by about twice its gap (each slave's correction also moves its
+//                  neighbours), so a block resting on a wall chatters and creeps under a
+//                  tangential load below mu N (tests/numeric/contact_friction.cpp).
 //   penalty        f_n = k g with a stiffness k in N/m (per unit of whatever the masses carry:
 //                  in axisymmetric runs, per radian times 2 pi, like the masses).
 // The sticking force uses m_s for the paper's form and m_eff otherwise, so that a sticking
@@ -31,7 +34,7 @@ struct paper {
 
 struct effective_mass {
   static constexpr std::string_view name = "effective_mass";
-  int sweeps = 1;
+  int sweeps = 3;
   double relaxation = 0.5;  // applied to sweeps after the first
 
   void validate() const {
