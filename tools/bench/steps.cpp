@@ -1,0 +1,109 @@
+// Benchmarks of one explicit step on the Taylor bar (tools/bench/taylor_bar_solver.hpp):
+//   BM_step<Q>/threads            per quadrature rule, 1 and 2 OpenMP threads, resolution 1
+//   BM_step_resolution/r          q2, resolution 1, 2, 3 (21x51, 41x101, 61x151 particles)
+//   BM_step_rolling<Q>/threads    the contact-free twin at the same moment of the impact
+//   BM_contact_enforce<Q>/threads contact().enforce alone, on copies of the predicted state
+// Every benchmark builds a fresh solver and advances it by warm_up_steps() before timing, and
+// runs a fixed number of iterations, so each repetition times the same window of the impact.
+// Wall-clock time (the work is spread over OpenMP threads).
+
+#include <chrono>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include "taylor_bar_solver.hpp"
+
+namespace rkpm::bench {
+namespace {
+
+template <class Solver>
+void set_counters(benchmark::State& state, const Solver& s) {
+  const auto n = static_cast<double>(s.model().particle_count());
+  state.counters["particles"] = n;
+  state.counters["points"] = static_cast<double>(s.model().point_count());
+  // seconds per particle per step
+  state.counters["s_per_particle_step"] =
+      benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["active_contacts"] = static_cast<double>(s.last_contact().active);
+}
+
+template <class Solver>
+void warm_up(Solver& s, int resolution) {
+  for (int k = 0; k < warm_up_steps(resolution); ++k) s.step();
+}
+
+template <class Q>
+void BM_step(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  auto s = make_wall_solver<Q>(1);
+  warm_up(*s, 1);
+  for (auto _ : state) s->step();
+  set_counters(state, *s);
+  state.SetLabel(std::string(Q::name));
+}
+
+void BM_step_resolution(benchmark::State& state) {
+  omp_set_num_threads(1);
+  const int resolution = static_cast<int>(state.range(0));
+  auto s = make_wall_solver<quadrature::q2>(resolution);
+  warm_up(*s, resolution);
+  for (auto _ : state) s->step();
+  set_counters(state, *s);
+}
+
+template <class Q>
+void BM_step_rolling(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  auto s = make_rolling_solver<Q>(1);
+  warm_up(*s, 1);
+  for (auto _ : state) s->step();
+  set_counters(state, *s);
+  state.SetLabel(std::string(Q::name) + " no contact, u_z = 0 on the face");
+}
+
+// enforce() corrects d and v in place, so every call gets fresh copies of the state it would
+// see inside step(): v(n+1/2) = v(n) + dt/2 a(n), d(n+1) = d(n) + dt v(n+1/2), with
+// a(n) = -f_int(n) / m (no body force). Only the enforce call is timed (manual time).
+template <class Q>
+void BM_contact_enforce(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  auto s = make_wall_solver<Q>(1);
+  warm_up(*s, 1);
+  const index_t n = s->model().particle_count();
+  const double dt = s->time_step(), t_next = s->time() + dt;
+  std::vector<vec2> d0(n), v0(n);
+  for (index_t I = 0; I < n; ++I) {
+    v0[I] = s->coefficient_velocities()[I] - 0.5 * dt * s->internal_force()[I] / s->mass()[I];
+    d0[I] = s->coefficients()[I] + dt * v0[I];
+  }
+  std::vector<vec2> d = d0, v = v0;
+  contact::step_result r;
+  for (auto _ : state) {
+    std::copy(d0.begin(), d0.end(), d.begin());
+    std::copy(v0.begin(), v0.end(), v.begin());
+    const auto start = std::chrono::steady_clock::now();
+    r = s->contact().enforce(t_next, dt, d, v);
+    benchmark::DoNotOptimize(r);
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  set_counters(state, *s);
+  state.counters["active_contacts"] = static_cast<double>(r.active);
+  state.SetLabel(std::string(Q::name));
+}
+
+constexpr int step_iterations = 300;
+
+}  // namespace
+
+BENCHMARK(BM_step<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step<quadrature::q9>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step_resolution)->Arg(1)->Arg(2)->Arg(3)->Iterations(100)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step_rolling<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step_rolling<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_contact_enforce<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(2000)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_contact_enforce<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(2000)->UseManualTime()->Unit(benchmark::kMicrosecond);
+
+}  // namespace rkpm::bench
