@@ -128,7 +128,7 @@ class dynamics {
     if (constraints_.size() > 0) {
       std::copy(v_.begin(), v_.end(), v_before_.begin());
       constraints_.apply(time_ + dt, v_);
-      energy_.constraint += kinetic_change();
+      energy_.constraint += impulse_work();
     }
     time_ += dt;
     ++steps_;
