@@ -83,10 +83,22 @@ class figure_recorder {
   }
 
  private:
+  // The deformed background cells (their nodes are the particles in the paper's cases),
+  // one closed outline per cell separated by blank lines, which gnuplot draws as a mesh.
   template <class Solver>
   void write_shape(const Solver& s, const std::string& label) const {
-    io::csv_writer out(dir_ / ("shape_" + label + ".csv"), {"x_mm", "y_mm"});
-    for (const vec2& x : s.particle_positions()) out.row({x[0] * 1e3, x[1] * 1e3});
+    const auto x = s.particle_positions();
+    const auto& mesh = s.model().mesh;
+    std::ofstream out(dir_ / ("shape_" + label + ".csv"));
+    out << "x_mm,y_mm\n";
+    if (mesh.node.size() != x.size()) {
+      for (const vec2& p : x) out << fmt::format("{},{}\n", p[0] * 1e3, p[1] * 1e3);
+      return;
+    }
+    for (const auto& c : mesh.cell) {
+      for (int k = 0; k <= 4; ++k) out << fmt::format("{},{}\n", x[c[k % 4]][0] * 1e3, x[c[k % 4]][1] * 1e3);
+      out << "\n";
+    }
   }
 
   // Gnuplot commands that draw the punch and die of the wheel case at the end of the stroke.
@@ -109,19 +121,21 @@ class figure_recorder {
 
   void shapes_png(const std::string& png, const std::string& title, const std::vector<std::string>& labels,
                   const std::string& extra) const {
+    static constexpr const char* colors[] = {"gray60", "dark-violet", "web-blue", "dark-orange", "forest-green"};
     std::string plots;
+    int k = labels.size() > 1 ? 0 : 1;
     for (const auto& l : labels) {
       const auto file = dir_ / ("shape_" + l + ".csv");
       if (!std::filesystem::exists(file)) continue;
-      plots += fmt::format("{}{} skip 1 using 1:2 with points pt 7 ps 0.4 title {}", plots.empty() ? "" : ", ",
-                           io::detail::gnuplot_quote(file.string()), io::detail::gnuplot_quote(l));
+      plots += fmt::format("{}{} skip 1 using 1:2 with lines lw 0.8 lc rgb '{}' title {}", plots.empty() ? "" : ", ",
+                           io::detail::gnuplot_quote(file.string()), colors[k++ % 5], io::detail::gnuplot_quote(l));
     }
-    if (!extra.empty()) plots += ", $punch with lines lw 2 lc rgb 'black' title 'punch', $die with lines lw 2 lc rgb 'gray40' title 'die'";
+    if (!extra.empty()) plots += ", $punch with lines lw 3 lc rgb 'black' title 'punch', $die with lines lw 3 lc rgb 'gray30' title 'die'";
     if (plots.empty()) return;
     const std::string script = extra + fmt::format(
-        "set datafile separator ','\nset title {}\nset size ratio -1\nset xlabel 'x or r (mm)'\nset ylabel 'y or z (mm)'\n"
-        "set key outside right\nset grid\nplot {}\n", io::detail::gnuplot_quote(title), plots);
-    io::gnuplot_png(dir_ / png, script);
+        "set datafile separator ','\nset title {}\nset size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\n"
+        "set key top right box opaque\nset grid\nplot {}\n", io::detail::gnuplot_quote(title), plots);
+    io::gnuplot_png(dir_ / png, script, {.width = 900, .height = 900});
   }
 
   void history_png(const std::string& png, const std::string& title, const std::string& xlabel,

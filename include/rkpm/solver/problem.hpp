@@ -30,7 +30,7 @@ struct problem {
 
 struct run_options {
   double end_time = 0.0;            // s
-  double time_step_fraction = 0.5;  // dt = fraction * stable step (estimated, re-estimated)
+  double time_step_fraction = 0.7;  // dt = fraction * stable step (estimated, re-estimated)
   double fixed_time_step = 0.0;     // s; > 0 forces dt (checked against the stable limit)
   int time_step_update_interval = 10;  // steps between re-estimates of the stable step
   double max_moment_condition = 1e10;  // RK moment-matrix conditioning limit

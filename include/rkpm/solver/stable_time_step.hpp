@@ -1,11 +1,14 @@
 #pragma once
 // Stable time step of the central-difference scheme, dt_crit = 2 / omega_max, with
 // omega_max^2 the largest eigenvalue of M^-1 K (design.md section 4 "Time integration").
-// K is the small-strain elastic stiffness of the discretization in its reference state,
-// applied matrix-free; power iteration finds omega_max. During the run the step follows the
-// current configuration: the highest frequency scales with the largest current gradient of
-// the shape functions, grad_x N = F^-T grad_X N, so dt_crit(t) = dt_crit(0) * s(t) with s the
-// narrowing of the supports (dynamics::support_stretch).
+// K is the elastic tangent stiffness of the discretization about a configuration given by
+// the deformation gradient at each quadrature point (the reference configuration when none is
+// given), applied matrix-free:
+//   dH = sum_I x_I (x) grad_X N_I,  de = sym(dH F^-1),  de33 = (dx_r / R) / F33,
+//   ds = lambda tr(de) I + 2 mu de,  f_I = sum_q [J ds F^-T grad_X N_I + e_r J ds33 N_I /(R F33)] w_q
+// Power iteration finds omega_max; it approaches it from below, so callers keep a safety
+// fraction. Warm-started from the previous run's vector, a few iterations follow the spectrum
+// as the body deforms (the Taylor bar's impact face is crushed to a tenth of its spacing).
 
 #include <cmath>
 #include <vector>
@@ -16,28 +19,43 @@
 
 namespace rkpm {
 
-// out = K x: internal force of the linear elastic small-strain problem for coefficients x.
+// Scratch arrays of the matrix-free stiffness, sized once (no allocation per call).
+struct stiffness_workspace {
+  std::vector<vec2> kx;
+  std::vector<mat2> stress_w;
+  std::vector<double> hoop_w;
+  explicit stiffness_workspace(const discrete_model& m)
+      : kx(m.particle_count()), stress_w(m.point_count()), hoop_w(m.point_count()) {}
+};
+
+// out = K x about the configuration F (#points; empty: the reference configuration).
 template <Geometry G>
 void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<vec2>& x, std::vector<vec2>& out,
+                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out,
                              std::vector<mat2>& stress_w, std::vector<double>& hoop_w) {
   const double lambda = c.lame_lambda(), mu = c.shear_modulus();
   const auto& t = m.at_points;
   const index_t nq = m.point_count();
+  const bool reference = F.empty();
 #pragma omp parallel for schedule(static)
   for (index_t q = 0; q < nq; ++q) {
-    mat2 H = mat2::Zero();
-    vec2 u = vec2::Zero();
+    mat2 dH = mat2::Zero();
+    vec2 du = vec2::Zero();
     for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) {
-      H += x[t.neighbor[e]] * t.grad[e].transpose();
-      u += t.N[e] * x[t.neighbor[e]];
+      dH.noalias() += x[t.neighbor[e]] * t.grad[e].transpose();
+      du += t.N[e] * x[t.neighbor[e]];
     }
-    const mat2 eps = 0.5 * (H + H.transpose());
     const vec2& X = m.points.position[q];
-    const double eps33 = G::out_of_plane_stretch(u, X) - 1.0;
-    const double tr = eps.trace() + eps33;
-    stress_w[q] = (lambda * tr * mat2::Identity() + 2.0 * mu * eps) * m.points.weight[q];
-    hoop_w[q] = G::is_axisymmetric ? (lambda * tr + 2.0 * mu * eps33) * m.points.weight[q] / X[0] : 0.0;
+    const mat2 Fi = reference ? mat2::Identity() : mat2(F[q].topLeftCorner<2, 2>().inverse());
+    const double F33 = reference ? 1.0 : F[q](2, 2);
+    const double J = reference ? 1.0 : F[q].determinant();
+    const mat2 L = dH * Fi;
+    const mat2 de = 0.5 * (L + L.transpose());
+    const double de33 = (G::out_of_plane_stretch(du, X) - 1.0) / F33;
+    const double tr = de.trace() + de33;
+    const mat2 ds = lambda * tr * mat2::Identity() + 2.0 * mu * de;
+    stress_w[q] = J * ds * Fi.transpose() * m.points.weight[q];
+    hoop_w[q] = G::is_axisymmetric ? J * (lambda * tr + 2.0 * mu * de33) / F33 * m.points.weight[q] / X[0] : 0.0;
   }
   const auto& tt = m.particles_of_points;
 #pragma omp parallel for schedule(static)
@@ -45,37 +63,45 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
     vec2 f = vec2::Zero();
     for (index_t s = tt.offset[I]; s < tt.offset[I + 1]; ++s) {
       const index_t e = tt.entry[s], q = tt.point[s];
-      f += stress_w[q] * t.grad[e];
+      f.noalias() += stress_w[q] * t.grad[e];
       if constexpr (G::is_axisymmetric) f[0] += hoop_w[q] * t.N[e];
     }
     out[I] = f;
   }
 }
 
-// dt_crit = 2 / omega_max of the reference configuration, by power iteration on M^-1 K.
-// The iteration approaches omega_max from below, so callers keep a safety fraction (< 1).
+// Reference configuration: out = K0 x.
 template <Geometry G>
-double reference_stable_time_step(const discrete_model& m, const material::elastic_constants& c,
-                                  const std::vector<double>& mass, int iterations = 100) {
+void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
+                             const std::vector<vec2>& x, std::vector<vec2>& out,
+                             std::vector<mat2>& stress_w, std::vector<double>& hoop_w) {
+  static const std::vector<mat3> reference;
+  apply_elastic_stiffness<G>(m, c, reference, x, out, stress_w, hoop_w);
+}
+
+// A start vector with every frequency present (deterministic, so runs repeat exactly).
+inline void power_iteration_start(std::vector<vec2>& x) {
+  for (std::size_t I = 0; I < x.size(); ++I)
+    x[I] = vec2(std::sin(12.9898 * static_cast<double>(I) + 1.0), std::cos(78.233 * static_cast<double>(I) + 2.0));
+}
+
+// omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation.
+template <Geometry G>
+double largest_frequency_squared(const discrete_model& m, const material::elastic_constants& c,
+                                 const std::vector<mat3>& F, const std::vector<double>& mass,
+                                 std::vector<vec2>& x, stiffness_workspace& w, int iterations) {
   const index_t n = m.particle_count();
-  std::vector<vec2> x(n), kx(n);
-  std::vector<mat2> sw(m.point_count());
-  std::vector<double> hw(m.point_count());
-  // Deterministic start with every frequency present: a hash-like pattern per particle.
-  for (index_t I = 0; I < n; ++I)
-    x[I] = vec2(std::sin(12.9898 * I + 1.0), std::cos(78.233 * I + 2.0));
   double omega2 = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    apply_elastic_stiffness<G>(m, c, x, kx, sw, hw);
-    double xkx = 0.0, xmx = 0.0;
+    apply_elastic_stiffness<G>(m, c, F, x, w.kx, w.stress_w, w.hoop_w);
+    double xkx = 0.0, xmx = 0.0, norm = 0.0;
     for (index_t I = 0; I < n; ++I) {
-      xkx += x[I].dot(kx[I]);
+      xkx += x[I].dot(w.kx[I]);
       xmx += mass[I] * x[I].squaredNorm();
     }
     omega2 = xkx / xmx;
-    double norm = 0.0;
     for (index_t I = 0; I < n; ++I) {
-      x[I] = kx[I] / mass[I];
+      x[I] = w.kx[I] / mass[I];
       norm = std::max(norm, x[I].cwiseAbs().maxCoeff());
     }
     if (!(norm > 0.0)) break;
@@ -84,7 +110,18 @@ double reference_stable_time_step(const discrete_model& m, const material::elast
   if (!(omega2 > 0.0) || !std::isfinite(omega2))
     fail("could not estimate the stable time step (omega^2 = {}): check the material constants "
          "and the particle masses", omega2);
-  return 2.0 / std::sqrt(omega2);
+  return omega2;
+}
+
+// dt_crit = 2 / omega_max of the reference configuration.
+template <Geometry G>
+double reference_stable_time_step(const discrete_model& m, const material::elastic_constants& c,
+                                  const std::vector<double>& mass, int iterations = 100) {
+  std::vector<vec2> x(m.particle_count());
+  power_iteration_start(x);
+  stiffness_workspace w(m);
+  static const std::vector<mat3> reference;
+  return 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, reference, mass, x, w, iterations));
 }
 
 }  // namespace rkpm
