@@ -11,10 +11,26 @@
 #include <type_traits>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <rkpm/rkpm.hpp>
 #include <rkpm/solver/policies.hpp>
 
 namespace rkpm::test {
+
+// The physics tests run problems of ~100 particles for ~1000 steps. With two OpenMP threads
+// each step crosses several barriers that spin-wait; on a loaded 2-core machine a spinning
+// thread waits for its descheduled partner and a step costs ~10 ms instead of ~0.1 ms. These
+// tests therefore run serially; thread-count independence has its own test
+// (tests/unit/solver/speed_and_determinism.cpp).
+inline void run_serially() {
+#ifdef _OPENMP
+  omp_set_num_threads(1);
+#endif
+  Eigen::setNbThreads(1);
+}
 
 // Constants used unless a test says otherwise: copper-like, but round numbers.
 inline material::elastic_constants steel_like() { return {200e9, 0.3, 7800.0}; }
