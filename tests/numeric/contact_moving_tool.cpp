@@ -126,6 +126,9 @@ TEST_CASE_TEMPLATE("a V-shaped punch and a fixed die close on a block without a 
                      .contact = contact_t({punch, die}, contact::friction::coulomb{0.2})};
   run_options o;
   o.end_time = T;
+  // A fixed step, so the residual depths below do not follow changes of the time step rule: the
+  // punch advances V dt = 0.015 h per step.
+  o.fixed_time_step = 1.5e-4;
   explicit_solver<cfg> s(std::move(p), o);
   const vec2 n1 = s.contact().tools()[0].normal(0), n2 = s.contact().tools()[0].normal(1);
   CHECK(n1.y() < 0.0);  // the punch's normals point down, into the block
@@ -151,7 +154,7 @@ TEST_CASE_TEMPLATE("a V-shaped punch and a fixed die close on a block without a 
           punch_force.y(), ") die (", die_force.x(), ", ", die_force.y(), ") N/m");
   // The paper's form closes only part of a gap per step where a slave touches the tool alone
   // (the apex region): N_I(X_J) < 1 spreads its force over the neighbours, so a residual depth of
-  // a few percent of h remains (measured 4.5%). The effective mass closes it (measured 0.35%).
+  // a few percent of h remains (measured 5.5%). The effective mass closes it (measured 0.47%).
   const double tolerance = std::is_same_v<E_, contact::enforcement::paper> ? 0.1 * h : 0.01 * h;
   CHECK(worst_punch < tolerance);
   CHECK(worst_die < tolerance);
