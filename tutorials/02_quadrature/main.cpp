@@ -200,10 +200,11 @@ set title 'Relative stiffness error against a 6x6 Gauss rule (unit square, plane
 set xlabel 'particle spacing h'
 set ylabel '|K_Q - K_{{ref}}|_F / |K_{{ref}}|_F'
 set logscale xy
+set xrange [0.04:0.4]
 set format y '10^{{%L}}'
 set key outside right
 set grid
-plot for [c=3:6] '{}' skip 1 using 2:c with linespoints lw 2 pt 7 title columnheader(c)
+plot for [c=3:6] '{}' using 2:c with linespoints lw 2 pt 7 title columnheader(c)
 )", (out / "stiffness_error.csv").string()));
 }
 
@@ -297,14 +298,14 @@ set xlabel 'mode number'
 set ylabel '{{/Symbol w}}^2 / {{/Symbol w}}^2_{{max}}'
 set grid
 set key top left
-plot for [c=2:5] '{}' skip 1 using 1:c with lines lw 2 title columnheader(c)
+plot for [c=2:5] '{}' using 1:c with lines lw 2 title columnheader(c)
 set logscale y
 set format y '10^{{%L}}'
 set yrange [1e-18:1]
 set xrange [-0.5:24.5]
 set title 'lowest 25 modes ({} rigid)'
 set key bottom right
-plot for [c=2:5] '{}' skip 1 using 1:(abs(column(c))) with linespoints lw 2 pt 7 ps 0.8 title columnheader(c)
+plot for [c=2:5] '{}' using 1:(abs(column(c))) with linespoints lw 2 pt 7 ps 0.8 title columnheader(c)
 unset multiplot
 )",
                                             L.title, csv_path.string(), rigid_modes, csv_path.string());
@@ -431,9 +432,10 @@ set xlabel 'quadrature points'
 set ylabel 'ms per step'
 set grid
 set key top left
-set xrange [0:*]
+
 set yrange [0:*]
 set xtics 1000
+set xrange [0:9500]
 plot '{0}' skip 1 using 2:4 with linespoints lw 2 pt 7 ps 1.5 title 'CPU time', \
      '' skip 1 using 2:3 with linespoints lw 2 pt 6 ps 1.5 dt 2 title 'wall clock', \
      '' skip 1 using 2:4:(sprintf('q%d', int($1))) with labels offset 0,1.2 notitle
