@@ -1,0 +1,142 @@
+// The Taylor bar (cases/taylor_bar.hpp, spec/paper.md section 5), reduced: the paper's 21 x 51
+// particles but only the first microseconds of the impact. Physical invariants, checked after
+// every step through the observer (no stored numbers):
+//   - no slave particle's physical position lies below the wall by more than 2% of the axial
+//     spacing (the contact closes the gap on the predicted configuration);
+//   - energy balance kinetic + internal = initial kinetic + contact within 1%;
+//   - the impact face only spreads (its radius grows) and the bar only shortens;
+//   - u_r = 0 on the axis to round-off (the axisymmetric constraint acts on physical velocities);
+//   - plastic flow has started at the impact face, and it is largest there;
+//   - Newton's law along z: P_z(t) - P_z(0) = -sum_steps reaction_z dt (internal forces sum to
+//     zero by the partition of unity; the axis constraint acts on r only; no body force).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <rkpm/contact/particle_to_segment.hpp>
+#include <rkpm/solver/explicit_solver.hpp>
+
+#include "cases/taylor_bar.hpp"
+
+using namespace rkpm;
+
+namespace {
+
+using tb = cases::taylor_bar;
+using contact_t = contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>;
+
+struct impact_record {
+  double end_time = 0.0;
+  double h_r = 0.0, h_z = 0.0;        // particle spacings
+  double worst_depth = 0.0;           // deepest slave below z = 0 after any step (m)
+  double radius_decrease = 0.0;       // largest step-to-step shrink of the impact-face radius (m)
+  double height_increase = 0.0;       // largest step-to-step growth of the height (m)
+  double radius0 = 0.0, radius = 0.0; // impact-face radius at t = 0 and at the end
+  double height0 = 0.0, height = 0.0;
+  double axis_ur = 0.0;               // largest |u_r| of an axis particle over the run
+  double momentum_error = 0.0;        // |dP_z - impulse_z| / (M V)
+  double impulse_z = 0.0, mass = 0.0; // wall impulse received by the bar; mass (per radian)
+  double balance_error = 0.0;
+  double min_eps_p_face = 1e30;       // smallest eps_p of the quadrature points in the lowest cell row
+  double max_eps_p_face = 0.0;        // largest eps_p in the lowest tenth of the bar
+  double max_eps_p_top = 0.0;         // largest eps_p in the highest tenth
+  long steps = 0;
+};
+
+template <class Quadrature>
+impact_record impact(double end_time) {
+  using cfg = config<kernel::cubic_spline, correction::linear, Quadrature, tb::geometry_type, tb::material_type,
+                     contact_t>;
+  tb::parameters p;
+  p.end_time_s = end_time;
+  run_options o;
+  o.end_time = tb::end_time(p);
+  explicit_solver<cfg> s(tb::build<contact_t>(p, 1), o);
+
+  impact_record r;
+  r.end_time = end_time;
+  r.h_r = p.radius_m / (p.radial_particles - 1.0);
+  r.h_z = p.height_m / (p.axial_particles - 1.0);
+  const auto& X = s.model().particles.position;
+  const index_t n = s.model().particle_count();
+  auto momentum_z = [&] {
+    double P = 0.0;
+    for (index_t I = 0; I < n; ++I) P += s.mass()[I] * s.coefficient_velocities()[I].y();
+    return P;
+  };
+  for (double m : s.mass()) r.mass += m;
+  const double P0 = momentum_z();
+  double t_prev = 0.0, radius_prev = -1.0, height_prev = -1.0;
+  s.run(
+      [&](const auto& s) {
+        const double dt = s.time() - t_prev;
+        t_prev = s.time();
+        if (dt > 0.0) r.impulse_z -= s.contact().reactions()[0].y() * dt;
+        const auto x = s.particle_positions();
+        for (index_t J : s.slave_particles()) r.worst_depth = std::max(r.worst_depth, -x[J].y());
+        double radius = 0.0, height = 0.0;
+        for (index_t I = 0; I < n; ++I) {
+          if (X[I].y() <= 1e-12) radius = std::max(radius, x[I].x());
+          height = std::max(height, x[I].y());
+          if (X[I].x() <= 1e-12) r.axis_ur = std::max(r.axis_ur, std::abs(x[I].x()));
+        }
+        if (radius_prev >= 0.0) {
+          r.radius_decrease = std::max(r.radius_decrease, radius_prev - radius);
+          r.height_increase = std::max(r.height_increase, height - height_prev);
+        } else {
+          r.radius0 = radius;
+          r.height0 = height;
+        }
+        radius_prev = r.radius = radius;
+        height_prev = r.height = height;
+      },
+      1);
+  r.momentum_error = std::abs(momentum_z() - P0 - r.impulse_z) / (r.mass * p.velocity_m_s);
+  r.balance_error = s.energy().balance_error();
+  r.steps = static_cast<long>(s.steps());
+  const auto& points = s.model().points;
+  for (index_t q = 0; q < s.model().point_count(); ++q) {
+    const double z = points.position[q].y(), eps = s.point_states()[q].equivalent_plastic_strain;
+    if (z < r.h_z) r.min_eps_p_face = std::min(r.min_eps_p_face, eps);
+    if (z < 0.1 * p.height_m) r.max_eps_p_face = std::max(r.max_eps_p_face, eps);
+    if (z > 0.9 * p.height_m) r.max_eps_p_top = std::max(r.max_eps_p_top, eps);
+  }
+  MESSAGE(Quadrature::name, ", ", end_time * 1e6, " us, ", r.steps, " steps: worst depth ", r.worst_depth / r.h_z,
+          " h_z; radius ", r.radius0 * 1e3, " -> ", r.radius * 1e3, " mm (largest shrink ", r.radius_decrease,
+          " m); height ", r.height0 * 1e3, " -> ", r.height * 1e3, " mm (largest growth ", r.height_increase,
+          " m); axis |u_r| ", r.axis_ur, " m; momentum error ", r.momentum_error, " (impulse ", r.impulse_z,
+          ", M V ", r.mass * p.velocity_m_s, "); balance error ", r.balance_error, "; eps_p face min ",
+          r.min_eps_p_face, " max ", r.max_eps_p_face, ", top max ", r.max_eps_p_top);
+  return r;
+}
+
+void check(const impact_record& r, const tb::parameters& p) {
+  CHECK(r.worst_depth < 0.02 * r.h_z);
+  CHECK(r.balance_error < 0.01);
+  // Monotone to round-off of the positions (1e-12 of the bar size).
+  CHECK(r.radius_decrease <= 1e-12 * p.height_m);
+  CHECK(r.height_increase <= 1e-12 * p.height_m);
+  // Noticeable spreading: the mushroom starts at once (the face is plastic from the first steps).
+  CHECK(r.radius > r.radius0 + 0.5 * r.h_r);
+  // The top still moves at about V (the unloading wave has not slowed it much yet).
+  CHECK(r.height < r.height0 - 0.5 * p.velocity_m_s * r.end_time);
+  CHECK(r.height > r.height0 - 1.01 * p.velocity_m_s * r.end_time);
+  CHECK(r.axis_ur < 1e-12 * p.radius_m);
+  CHECK(r.min_eps_p_face > 0.0);
+  CHECK(r.max_eps_p_face > 10.0 * r.max_eps_p_top);
+  // The wall pushed up on the bar: a positive impulse, a fair part of M V in a few microseconds.
+  CHECK(r.impulse_z > 0.05 * r.mass * p.velocity_m_s);
+  CHECK(r.momentum_error < 1e-10);
+}
+
+}  // namespace
+
+TEST_CASE("Taylor bar, first 10 us with Q2: contact, energy, monotone shape, axis, plasticity, momentum") {
+  check(impact<quadrature::q2>(10e-6), tb::parameters{});
+}
+
+TEST_CASE("Taylor bar, first 4 us with Q4: the same invariants") {
+  check(impact<quadrature::q4>(4e-6), tb::parameters{});
+}
