@@ -1,0 +1,24 @@
+# tools.runner.*: the command-line runner rkpm_run (tools/runner), driven as a user would and
+# checked with /usr/bin/python3 (json, csv, and meshio as an independent VTK reader); the
+# checks are in runner/check_runner.py. Included by tests/CMakeLists.txt; ctest does not build
+# rkpm_run, build it first (cmake --build BUILD --target rkpm_run).
+set(rkpm_runner_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_runner.py)
+set(rkpm_runner_work ${CMAKE_CURRENT_BINARY_DIR}/tools/runner)
+find_program(RKPM_SYSTEM_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT RKPM_SYSTEM_PYTHON)
+  find_program(RKPM_SYSTEM_PYTHON NAMES python3)
+endif()
+
+add_test(NAME tools.runner.bad_options
+         COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} bad-options $<TARGET_FILE:rkpm_run> ${rkpm_runner_work})
+add_test(NAME tools.runner.help COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} help $<TARGET_FILE:rkpm_run>)
+# A 2 us Taylor bar on 21 x 21 particles writes the files the next two tests read.
+add_test(NAME tools.runner.run
+         COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} run $<TARGET_FILE:rkpm_run> ${rkpm_runner_work}/taylor_bar)
+add_test(NAME tools.runner.outputs COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} outputs ${rkpm_runner_work}/taylor_bar)
+add_test(NAME tools.runner.vtk COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} vtk ${rkpm_runner_work}/taylor_bar)
+set_tests_properties(tools.runner.run PROPERTIES FIXTURES_SETUP rkpm_runner_output)
+set_tests_properties(tools.runner.outputs tools.runner.vtk PROPERTIES FIXTURES_REQUIRED rkpm_runner_output)
+set_tests_properties(tools.runner.bad_options tools.runner.help tools.runner.run tools.runner.outputs tools.runner.vtk
+                     PROPERTIES TIMEOUT 120 LABELS "tools/runner"
+                                ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")

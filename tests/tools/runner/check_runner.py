@@ -1,0 +1,268 @@
+#!/usr/bin/python3
+"""Checks of the command-line runner rkpm_run (tools/runner), run by ctest (tests/tools/runner.cmake).
+
+    check_runner.py bad-options RKPM_RUN WORK_DIR  bad options: non-zero exit, one-line error, no output
+    check_runner.py help RKPM_RUN                  `CASE --help` lists every case's parameters
+    check_runner.py run RKPM_RUN OUT_DIR           a short Taylor bar run (the fixture of the next two)
+    check_runner.py outputs OUT_DIR                summary.json keys and values, history.csv, .pvd, PNGs
+    check_runner.py vtk OUT_DIR                    the VTK series read back with meshio (independent reader)
+
+The numbers are checked against physics and the run's own request (particle count 21 x 21, end time,
+initial velocity 227 m/s, reference + displacement = current points), never against stored output.
+"""
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ElementTree
+
+RADIAL, AXIAL = 21, 21  # the run below: --set axial_particles=21, radial_particles default 21
+END_TIME = 2e-6
+VELOCITY = 227.0
+RADIUS_MM, HEIGHT_MM = 3.2, 32.4
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message)
+
+
+def run(cmd, **kw):
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=120, **kw)
+
+
+def bad_options(rkpm_run, work):
+    out = os.path.join(work, "bad")
+    shutil.rmtree(out, ignore_errors=True)
+    cases = [
+        ["nosuch_case"],
+        ["taylor_bar", "--frobnicate"],
+        ["taylor_bar", "--quadrature", "q7"],
+        ["taylor_bar", "--kernel", "gaussian"],
+        ["taylor_bar", "--set", "bogus=1"],
+        ["taylor_bar", "--set", "velocity_m_s=abc"],
+        ["taylor_bar", "--set", "velocity_m_s=1e400"],
+        ["taylor_bar", "--set", "velocity_m_s"],
+        ["taylor_bar", "--resolution", "0"],
+        ["taylor_bar", "--resolution", "two"],
+        ["taylor_bar", "--end-time", "-1"],
+        ["taylor_bar", "--end-time"],
+        ["block_forging", "--set", "end_time_s=1"],  # the tools would meet: the case rejects it
+    ]
+    for args in cases:
+        r = run([rkpm_run] + args + ["--out", out, "--no-plots", "--quiet"])
+        err = r.stderr.rstrip("\n")
+        label = " ".join(args)
+        check(r.returncode != 0, f"'{label}': exit status {r.returncode}, expected non-zero")
+        check(err != "" and "\n" not in err, f"'{label}': expected a one-line error, got {r.stderr!r}")
+        check(err.startswith("rkpm_run: "), f"'{label}': error does not start with 'rkpm_run: ': {err!r}")
+        check(r.stdout == "", f"'{label}': unexpected output {r.stdout!r}")
+        print(f"ok  {label!r:50} -> {err}")
+    # Option errors are found before any simulation starts: nothing but the failed case's
+    # summary (block_forging, whose set-up failed) may be written.
+    summary = os.path.join(out, "summary.json")
+    if os.path.exists(summary):
+        with open(summary) as f:
+            s = json.load(f)
+        check(s.get("status") == "failed" and "error" in s, f"summary of a failed set-up: {s}")
+        check(s.get("case") == "block_forging", f"only the set-up failure may write a summary, got {s.get('case')}")
+
+
+def help_text(rkpm_run):
+    r = run([rkpm_run, "--help"])
+    check(r.returncode == 0 and "--quadrature" in r.stdout and "--set" in r.stdout, "rkpm_run --help: usage text")
+    expected = {
+        "taylor_bar": ["velocity_m_s", "radius_m", "height_m", "yield_stress_Pa", "end_time_s", "radial_particles",
+                       "axial_particles", "friction"],
+        "block_forging": ["tool_velocity_m_s", "width_m", "friction", "particles_per_side", "end_time_s"],
+        "wheel_forging": ["tool_velocity_m_s", "stroke_m", "flow_coefficient_Pa", "flow_exponent",
+                          "radial_particles"],
+    }
+    for case, names in expected.items():
+        r = run([rkpm_run, case, "--help"])
+        check(r.returncode == 0, f"{case} --help: exit status {r.returncode}")
+        for name in names:
+            check(any(line.split()[:1] == [name] for line in r.stdout.splitlines()),
+                  f"{case} --help does not list {name}:\n{r.stdout}")
+        # Each parameter line shows a numeric default.
+        for line in r.stdout.splitlines():
+            parts = line.split()
+            if parts and parts[0] in names:
+                try:
+                    float(parts[1])
+                except ValueError:
+                    check(False, f"{case} --help: no default value on {line!r}")
+    print("ok  help")
+
+
+def real_run(rkpm_run, out):
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, "taylor_bar", "--end-time", repr(END_TIME), "--set", f"axial_particles={AXIAL}",
+             "--out", out, "--quiet"])
+    print(r.stdout, r.stderr)
+    check(r.returncode == 0, f"the short Taylor bar run failed with status {r.returncode}")
+
+
+def finite(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+
+
+def outputs(out):
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    for key in ["case", "kernel", "correction", "quadrature", "geometry", "contact"]:
+        check(isinstance(s.get(key), str), f"summary.json: '{key}' missing or not a string")
+    for key in ["particles", "quadrature_points", "steps", "dt_min_s", "dt_max_s", "end_time_s", "threads", "wall_s",
+                "setup_s"]:
+        check(finite(s.get(key)), f"summary.json: '{key}' missing or not a finite number")
+    for key in ["kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"]:
+        check(finite(s.get("energy", {}).get(key)), f"summary.json: 'energy.{key}' missing or not finite")
+    for key in ["final_radius_mm", "final_height_mm", "max_equivalent_plastic_strain"]:
+        check(finite(s.get("results", {}).get(key)), f"summary.json: 'results.{key}' missing or not finite")
+    if failures:
+        return
+    check((s["case"], s["kernel"], s["correction"], s["quadrature"], s["geometry"], s["contact"]) ==
+          ("taylor_bar", "cubic", "linear", "q2", "axisymmetric", "paper"), f"summary.json: policies {s}")
+    check(s["particles"] == RADIAL * AXIAL, f"particles {s['particles']}, expected {RADIAL} x {AXIAL}")
+    # Q2: two points per background cell, (21 - 1) x (21 - 1) cells.
+    check(s["quadrature_points"] == 2 * (RADIAL - 1) * (AXIAL - 1), f"quadrature_points {s['quadrature_points']}")
+    check(abs(s["end_time_s"] - END_TIME) <= 1e-12 * END_TIME, f"end_time_s {s['end_time_s']}, asked {END_TIME}")
+    check(s["steps"] >= 1 and 0 < s["dt_min_s"] <= s["dt_max_s"], f"steps / dt range {s['steps']}, "
+          f"{s['dt_min_s']}..{s['dt_max_s']}")
+    check(s["steps"] * s["dt_max_s"] >= END_TIME * (1 - 1e-9) and s["steps"] * s["dt_min_s"] <= END_TIME * (1 + 1e-9),
+          "steps x dt range does not bracket the end time")
+    check(s["threads"] >= 1 and s["wall_s"] >= 0 and s["setup_s"] >= 0, "threads / timings")
+    e = s["energy"]
+    check(e["balance_error"] < 0.01, f"energy balance error {e['balance_error']}")
+    check(e["external_J"] == 0.0, "no body force: external work must be 0")
+    check(0 <= e["plastic_J"] <= e["internal_J"], "plastic dissipation must lie in [0, internal work]")
+    check(e["contact_J"] <= 0.0, "a fixed frictionless wall only takes energy out")
+    # Initial kinetic energy: the bar's mass pi R^2 L rho at 227 m/s.
+    k0 = 0.5 * math.pi * (RADIUS_MM * 1e-3) ** 2 * HEIGHT_MM * 1e-3 * 8930.0 * VELOCITY ** 2
+    check(abs(e["kinetic_J"] + e["internal_J"] - e["contact_J"] - k0) < 0.01 * k0,
+          f"K + W_int - W_contact = {e['kinetic_J'] + e['internal_J'] - e['contact_J']} J, K0 = {k0} J")
+    res = s["results"]
+    check(res["final_radius_mm"] > RADIUS_MM and res["final_height_mm"] < HEIGHT_MM, f"results {res}")
+    check(res["final_height_mm"] > HEIGHT_MM - 1.01 * VELOCITY * END_TIME * 1e3, f"height {res['final_height_mm']}")
+    check(res["max_equivalent_plastic_strain"] > 0, "the impact face must have yielded")
+
+    with open(os.path.join(out, "history.csv")) as f:
+        rows = list(csv.reader(f))
+    header, data = rows[0], [[float(v) for v in r] for r in rows[1:]]
+    for col in ["time_s", "final_radius_mm", "final_height_mm", "kinetic_J", "balance_error"]:
+        check(col in header, f"history.csv: no column {col}: {header}")
+    check(len(data) >= 10 and all(len(r) == len(header) for r in data), "history.csv: rows")
+    t = [r[0] for r in data]
+    check(t[0] == 0.0 and all(b > a for a, b in zip(t, t[1:])), "history.csv: time must start at 0 and increase")
+    check(abs(t[-1] - END_TIME) <= 1e-12 * END_TIME, f"history.csv: last time {t[-1]}")
+    h = header.index("final_height_mm")
+    check(abs(data[-1][h] - res["final_height_mm"]) < 1e-9, "history.csv's last height differs from summary.json")
+    k = header.index("kinetic_J")
+    check(abs(data[0][k] - k0) < 1e-6 * k0, f"history.csv: kinetic energy at t = 0 is {data[0][k]}, expected {k0}")
+
+    pngs = [f for f in os.listdir(out) if f.endswith(".png")]
+    check(len(pngs) >= 1, "no PNG figure written")
+    for p in pngs:
+        with open(os.path.join(out, p), "rb") as f:
+            check(f.read(8) == b"\x89PNG\r\n\x1a\n", f"{p} is not a PNG")
+    print(f"ok  outputs: {s['particles']} particles, {s['steps']} steps, {len(data)} history rows, PNGs {pngs}")
+
+
+def vtk(out):
+    import numpy as np
+    import meshio
+
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    pvds = [f for f in os.listdir(out) if f.endswith(".pvd")]
+    check(pvds == ["taylor_bar.pvd"], f"expected one taylor_bar.pvd, found {pvds}")
+    sets = ElementTree.parse(os.path.join(out, pvds[0])).getroot().findall("./Collection/DataSet")
+    check(len(sets) >= 2, "the .pvd lists fewer than two snapshots")
+    times = [float(d.get("timestep")) for d in sets]
+    check(times[0] == 0.0 and all(b > a for a, b in zip(times, times[1:])), f"snapshot times {times}")
+    check(abs(times[-1] - s["end_time_s"]) <= 1e-12 * s["end_time_s"], "the last snapshot is not at the end time")
+    meshes = []
+    for d in sets:
+        path = os.path.join(out, d.get("file"))
+        check(os.path.exists(path), f"{path} listed in the .pvd does not exist")
+        m = meshio.read(path)
+        meshes.append(m)
+        n = s["particles"]
+        check(m.points.shape == (n, 3), f"{path}: points {m.points.shape}, summary says {n} particles")
+        shapes = {"displacement": (n, 3), "velocity": (n, 3), "stress": (n, 9), "equivalent_plastic_strain": (n,),
+                  "det_F": (n,)}
+        for name, shape in shapes.items():
+            a = m.point_data.get(name)
+            check(a is not None, f"{path}: no point array {name}")
+            if a is None:
+                continue
+            check(a.shape == shape, f"{path}: {name} has shape {a.shape}, expected {shape}")
+            check(bool(np.all(np.isfinite(a))), f"{path}: {name} is not finite")
+        if failures:
+            return
+        check(bool(np.all(m.points[:, 2] == 0.0)) and bool(np.all(m.point_data["displacement"][:, 2] == 0.0)),
+              f"{path}: a 2D body has z = 0")
+        # The particle values are a lumped projection with the RK shape functions, which dip
+        # slightly below zero at the edge of their supports: a non-negative field may come out
+        # a hair below zero next to a plastic zone, never by more than round-off of its size.
+        eps = m.point_data["equivalent_plastic_strain"]
+        check(eps.min() >= -1e-6 * max(eps.max(), 1e-12), f"{path}: eps_p down to {eps.min()} (max {eps.max()})")
+        det = m.point_data["det_F"]
+        check(bool(np.all((det > 0.8) & (det < 1.2))), f"{path}: det F in {det.min()}..{det.max()}")
+        stress = m.point_data["stress"].reshape(n, 3, 3)
+        check(bool(np.allclose(stress, stress.transpose(0, 2, 1), rtol=0, atol=1e-6 * max(1.0, abs(stress).max()))),
+              f"{path}: Cauchy stress is not symmetric")
+    first, last = meshes[0], meshes[-1]
+    ref = first.points
+    check(bool(np.all(first.point_data["displacement"] == 0.0)), "the t = 0 snapshot has non-zero displacement")
+    # The bar starts in uniform motion at -227 m/s (RK reproduces constants exactly).
+    v0 = first.point_data["velocity"]
+    check(bool(np.allclose(v0[:, 0], 0.0, atol=1e-9)) and bool(np.allclose(v0[:, 1], -VELOCITY, rtol=1e-12)),
+          f"initial velocity {v0[:, 1].min()}..{v0[:, 1].max()}, expected -{VELOCITY}")
+    # Reference grid: 21 x 21 particles on [0, R] x [0, L].
+    check(abs(ref[:, 0].max() - RADIUS_MM * 1e-3) < 1e-12 and abs(ref[:, 1].max() - HEIGHT_MM * 1e-3) < 1e-12 and
+          ref[:, :2].min() == 0.0, "the first snapshot is not the reference section")
+    for m, t in zip(meshes, times):
+        gap = np.abs(m.points - (ref + m.point_data["displacement"])).max()
+        check(gap < 1e-12, f"t = {t}: points differ from reference + displacement by {gap} m")
+    x = last.points
+    face = ref[:, 1] == 0.0
+    radius_mm, height_mm = x[face, 0].max() * 1e3, x[:, 1].max() * 1e3
+    res = s["results"]
+    check(abs(radius_mm - res["final_radius_mm"]) < 1e-9 and abs(height_mm - res["final_height_mm"]) < 1e-9,
+          f"the last snapshot gives radius {radius_mm} and height {height_mm} mm; summary.json says {res}")
+    axis = ref[:, 0] == 0.0
+    check(np.abs(x[axis, 0]).max() < 1e-15, "axis particles left r = 0")
+    check(x[:, 1].min() > -0.02 * HEIGHT_MM * 1e-3 / (AXIAL - 1), "particles below the wall")
+    print(f"ok  vtk: {len(meshes)} snapshots of {s['particles']} particles; final radius {radius_mm:.4f} mm, "
+          f"height {height_mm:.4f} mm")
+
+
+def main(argv):
+    mode = argv[1]
+    if mode == "bad-options":
+        bad_options(argv[2], argv[3])
+    elif mode == "help":
+        help_text(argv[2])
+    elif mode == "run":
+        real_run(argv[2], argv[3])
+    elif mode == "outputs":
+        outputs(argv[2])
+    elif mode == "vtk":
+        vtk(argv[2])
+    else:
+        sys.exit(f"unknown mode {mode}")
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
