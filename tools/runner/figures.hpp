@@ -66,17 +66,18 @@ class figure_recorder {
 
   void plot() const {
     if constexpr (std::is_same_v<Case, cases::taylor_bar>) {
-      shapes_png("fig4_shape.png", "Taylor bar: deformed section", {"initial", "final"}, "");
+      shapes_png("fig4_shape.png", "Taylor bar: initial and final section (r, z)", {"initial", "final"}, "", true);
       history_png("fig5_radius.png", "Taylor bar: radius of the impact face", "time (us)", "1*1e6", "radius (mm)",
                   "final_radius_mm");
       history_png("fig6_height.png", "Taylor bar: height", "time (us)", "1*1e6", "height (mm)", "final_height_mm");
     } else if constexpr (std::is_same_v<Case, cases::block_forging>) {
-      shapes_png("shapes.png", "block forging: 0, 20, 40, 60% compression", written_, "");
+      shapes_png("shapes.png", "block forging: section at 0, 20, 40 and 60% compression", written_, "", false,
+                 "% compression");
       history_png("tool_force.png", "block forging: top tool force per metre", "stroke (mm)",
                   fmt::format("1*{}", 2.0 * params_.tool_velocity_m_s * 1e3), "force (MN/m)",
                   "final_tool_force_N_per_m", 1e-6);
     } else {
-      shapes_png("shape.png", "wheel forging: final shape with punch and die", {"final"}, tools_at_end());
+      shapes_png("shape.png", "wheel forging: final section with punch and die", {"final"}, tools_at_end(), true);
       history_png("punch_force.png", "wheel forging: punch force", "stroke (mm)",
                   fmt::format("1*{}", params_.tool_velocity_m_s * 1e3), "force (kN)", "final_punch_force_N", 1e-3);
     }
@@ -119,23 +120,46 @@ class figure_recorder {
     }
   }
 
+  // One panel per shape (side by side when `columns`, else stacked), all on the same axes.
   void shapes_png(const std::string& png, const std::string& title, const std::vector<std::string>& labels,
-                  const std::string& extra) const {
-    static constexpr const char* colors[] = {"gray60", "dark-violet", "web-blue", "dark-orange", "forest-green"};
-    std::string plots;
-    int k = labels.size() > 1 ? 0 : 1;
+                  const std::string& extra, bool columns, const std::string& unit_suffix = "") const {
+    static constexpr const char* colors[] = {"dark-violet", "web-blue", "dark-orange", "forest-green", "gray40"};
+    std::vector<std::string> panels;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     for (const auto& l : labels) {
       const auto file = dir_ / ("shape_" + l + ".csv");
       if (!std::filesystem::exists(file)) continue;
-      plots += fmt::format("{}{} skip 1 using 1:2 with lines lw 0.8 lc rgb '{}' title {}", plots.empty() ? "" : ", ",
-                           io::detail::gnuplot_quote(file.string()), colors[k++ % 5], io::detail::gnuplot_quote(l));
+      std::ifstream in(file);
+      std::string line;
+      std::getline(in, line);
+      double x, y;
+      char comma;
+      while (std::getline(in, line)) {
+        std::stringstream ss(line);
+        if (!(ss >> x >> comma >> y)) continue;
+        lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x), lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+      }
+      std::string plot = fmt::format("plot {} skip 1 using 1:2 with lines lw 0.8 lc rgb '{}' notitle",
+                                     io::detail::gnuplot_quote(file.string()), colors[panels.size() % 5]);
+      if (!extra.empty()) plot += ", $punch with lines lw 3 lc rgb 'black' notitle, $die with lines lw 3 lc rgb 'gray30' notitle";
+      panels.push_back(fmt::format("set title {}\n{}\n", io::detail::gnuplot_quote(l + unit_suffix), plot));
     }
-    if (!extra.empty()) plots += ", $punch with lines lw 3 lc rgb 'black' title 'punch', $die with lines lw 3 lc rgb 'gray30' title 'die'";
-    if (plots.empty()) return;
-    const std::string script = extra + fmt::format(
-        "set datafile separator ','\nset title {}\nset size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\n"
-        "set key top right box opaque\nset grid\nplot {}\n", io::detail::gnuplot_quote(title), plots);
-    io::gnuplot_png(dir_ / png, script, {.width = 900, .height = 900});
+    if (panels.empty()) return;
+    if constexpr (std::is_same_v<Case, cases::wheel_forging>) {  // show the die wall and the punch
+      hi[0] = std::max(hi[0], 36.0);
+      hi[1] = std::max(hi[1], (38e-3 - params_.stroke_m) * 1e3 + 4.0);
+      lo[0] = std::min(lo[0], -1.0);
+    }
+    const double pad = 0.04 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    std::string script = extra + fmt::format(
+        "set datafile separator ','\nset size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset grid\n"
+        "set xrange [{}:{}]\nset yrange [{}:{}]\nset multiplot layout {},{} title {}\n",
+        lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad, columns ? 1 : panels.size(), columns ? panels.size() : 1,
+        io::detail::gnuplot_quote(title));
+    for (const auto& p : panels) script += p;
+    script += "unset multiplot\n";
+    const int n = static_cast<int>(panels.size());
+    io::gnuplot_png(dir_ / png, script, {.width = columns ? 450 * n : 900, .height = columns ? 900 : 330 * n});
   }
 
   void history_png(const std::string& png, const std::string& title, const std::string& xlabel,
