@@ -1,0 +1,17 @@
+// Covering configurations (policies::covering_configs) rows 0, 3, 6: each instantiates the whole
+// solver and runs a small impact (see test::check_combination). The 12 rows are spread over
+// combinations_part1..4 so that the costly instantiations build in parallel; the rows of one
+// part use three different contact policies.
+
+#include <doctest/doctest.h>
+
+#include "support/solver_fixtures.hpp"
+
+namespace hana = boost::hana;
+
+template <std::size_t Row>
+using row_config = typename decltype(+rkpm::policies::covering_configs[hana::size_c<Row>])::type;
+
+TEST_CASE("covering row 0") { rkpm::test::check_combination<row_config<0>>(); }
+TEST_CASE("covering row 3") { rkpm::test::check_combination<row_config<3>>(); }
+TEST_CASE("covering row 6") { rkpm::test::check_combination<row_config<6>>(); }
