@@ -1,0 +1,117 @@
+// A whole time step allocates nothing: global operator new is replaced by a counting version
+// and s.step() is called after warm-up steps (first-touch buffers, OpenMP thread pool), over
+// enough steps to include time-step re-estimates (every time_step_update_interval steps).
+// Configurations: axisymmetric J2 (power law) with effective-mass Coulomb contact (axis
+// constraints, contact, return mapping) and plane strain elastic with prescribed velocities.
+// Results do not depend on the thread count: the same run with 1 and 2 OpenMP threads gives
+// the same coefficients to 1e-12 relative (the loops gather per point and per particle, and
+// every sum runs in a fixed order).
+
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "support/solver_fixtures.hpp"
+
+namespace {
+std::atomic<long> allocations{0};
+std::atomic<bool> counting{false};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace rkpm;
+
+namespace {
+
+using axi_cfg = config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::axisymmetric,
+                       material::j2_plasticity<material::hardening::power_law>,
+                       contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>>;
+using ps_cfg = config<kernel::quartic_spline, correction::quadratic, quadrature::q4, geometry::plane_strain,
+                      material::elastic, contact::none>;
+
+// The impact of test::check_combination: a block moving down onto a flat tool.
+template <class Cfg>
+problem_for<Cfg> impact_problem() {
+  using G = typename Cfg::geometry_type;
+  const vec2 lo(G::is_axisymmetric ? 0.0 : -2e-3, 0.0), hi(lo[0] + 4e-3, 3e-3);
+  auto p = test::grid_problem<Cfg>(lo, hi, Eigen::Vector2i(9, 7), material::elastic_constants{200e9, 0.3, 7800.0});
+  if constexpr (!std::is_same_v<typename Cfg::contact_type, contact::none>)
+    p.contact = test::make_contact<typename Cfg::contact_type>({test::flat_tool_below(-5e-3, 5e-3, -1e-5)});
+  p.initial_velocity = [](const vec2& X) { return vec2(2e3 * X[1] * X[1], -80.0 * (1.0 + 0.2 * std::sin(900.0 * X[1]))); };
+  return p;
+}
+
+template <class Cfg>
+long allocations_per_steps(problem_for<Cfg> p, int warmup, int steps) {
+  run_options o;
+  o.end_time = 1.0;
+  o.time_step_update_interval = 5;
+  explicit_solver<Cfg> s(std::move(p), o);
+  for (int k = 0; k < warmup; ++k) s.step();
+  allocations = 0;
+  counting = true;
+  for (int k = 0; k < steps; ++k) s.step();
+  counting = false;
+  CHECK(s.last_contact().active >= 0);
+  return allocations.load();
+}
+
+}  // namespace
+
+TEST_CASE("the counting operator new sees allocations") {
+  counting = true;
+  std::vector<double>* v = new std::vector<double>(10);
+  counting = false;
+  CHECK(allocations.load() >= 2);
+  delete v;
+  allocations = 0;
+}
+
+TEST_CASE("a time step allocates nothing") {
+  // Axisymmetric J2 with contact: the block lands on the tool during the counted steps.
+  auto p = impact_problem<axi_cfg>();
+  const long a = allocations_per_steps<axi_cfg>(std::move(p), 3, 30);
+  CHECK(a == 0);
+  // Plane strain with prescribed velocities (constraint projection both half steps).
+  auto q = impact_problem<ps_cfg>();
+  for (index_t I = 0; I < q.particles.size(); ++I)
+    if (q.particles.position[I][1] == 0.0) q.constraints.push_back({I, 1, [](double t) { return -80.0 + 1e6 * t; }});
+  CHECK(allocations_per_steps<ps_cfg>(std::move(q), 3, 30) == 0);
+}
+
+#ifdef _OPENMP
+TEST_CASE("results do not depend on the thread count") {
+  auto run = [](int threads) {
+    omp_set_num_threads(threads);
+    run_options o;
+    o.end_time = 1.0;
+    explicit_solver<axi_cfg> s(impact_problem<axi_cfg>(), o);
+    for (int k = 0; k < 60; ++k) s.step();
+    CHECK(s.last_contact().active > 0);
+    return std::pair{s.coefficients(), s.energy().internal};
+  };
+  const auto [d1, w1] = run(1);
+  const auto [d2, w2] = run(2);
+  double scale = 0.0, diff = 0.0;
+  for (std::size_t I = 0; I < d1.size(); ++I) {
+    scale = std::max(scale, d1[I].cwiseAbs().maxCoeff());
+    diff = std::max(diff, (d1[I] - d2[I]).cwiseAbs().maxCoeff());
+  }
+  MESSAGE("1 vs 2 threads: max coefficient difference " << diff << " of " << scale);
+  REQUIRE(scale > 0.0);
+  CHECK(diff <= 1e-12 * scale);
+  CHECK(w1 == doctest::Approx(w2).epsilon(1e-12));
+}
+#endif
