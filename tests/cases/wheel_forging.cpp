@@ -2,9 +2,12 @@
 // paper's particles per direction and a 4 mm stroke instead of 20 mm. Physical invariants:
 //   - plastic incompressibility: sum_q J_q w_q (axisymmetric weights, 2 pi r included or not,
 //     the ratio is what counts) changes by less than 2%;
-//   - no slave particle lies inside the punch (above its moving outline) or the die (below
-//     z = 0, beyond r = 35 mm) by more than 2% of the particle spacing; the depth inside the punch
-//     is the true distance to its outline, not the vertical one, because of the 5:1 flanks;
+//   - no particle lies inside the punch (above its moving outline) or the die (below z = 0,
+//     beyond r = 35 mm) by more than 2% of the particle spacing; the depth inside the punch is
+//     the true distance to its outline, not the vertical one, because of the 5:1 flanks. (Over
+//     the full 20 mm stroke this fails: from about 5 mm on, the punch's inner land corner cuts
+//     between the slave particles of the surface and the second row ends up inside the punch;
+//     see tutorials/06_wheel_forging/README.md.)
 //   - material flows outward and stays in the die: the punch's land (r 12..24 mm) presses the
 //     slug's top ring down to its own level and stays in contact; the slug spreads (largest r
 //     grows) but stays inside the die wall r = 35 mm. Early in the stroke nothing is pushed up
@@ -72,9 +75,12 @@ TEST_CASE("wheel forging, 4 mm stroke: volume kept, punch and die not crossed, o
       [&](const auto& s) {
         const auto x = s.particle_positions();
         const double drop = p.tool_velocity_m_s * s.time();
-        for (index_t J : s.slave_particles()) {
-          worst_punch = std::max(worst_punch, punch_depth(x[J], punch, drop));
-          worst_die = std::max({worst_die, -x[J].y(), x[J].x() - die_r});
+        // Every particle, not only the slaves: a tool corner can cut between slave particles
+        // (one-pass particle-to-segment contact stops slaves, not the tool's corners), and the
+        // particles behind the surface then end up inside the tool.
+        for (const vec2& xi : x) {
+          worst_punch = std::max(worst_punch, punch_depth(xi, punch, drop));
+          worst_die = std::max({worst_die, -xi.y(), xi.x() - die_r});
         }
       },
       1);
