@@ -37,6 +37,9 @@ bar_result run_bar(int nx, double periods) {
   p.initial_velocity = [V](const vec2& X) { return vec2(V * std::cos(std::numbers::pi * X[0] / L), 0.0); };
   run_options o;
   o.end_time = periods * T;
+  // The integer-step energy of central differences is off by O((omega dt)^2) for the high
+  // modes the sampled initial velocity contains: 0.2 % at half the stable step, 0.4 % at 0.7.
+  o.time_step_fraction = 0.5;
   explicit_solver<cfg> s(std::move(p), o);
   // End displacement: mean physical u_x over the particles at x = 0.
   std::vector<index_t> end;
