@@ -109,7 +109,7 @@ class figure_recorder {
       const vec2 shift(0.0, -params_.stroke_m);
       auto poly = [&](const std::vector<vec2>& pts, const vec2& d, const char* name) {
         s += fmt::format("${} << EOD\n", name);
-        for (const vec2& p : pts) s += fmt::format("{} {}\n", (p[0] + d[0]) * 1e3, (p[1] + d[1]) * 1e3);
+        for (const vec2& p : pts) s += fmt::format("{},{}\n", (p[0] + d[0]) * 1e3, (p[1] + d[1]) * 1e3);  // comma: the plots read CSV
         s += "EOD\n";
       };
       poly(Case::punch_outline(), shift, "punch");

@@ -95,6 +95,7 @@ class dynamics {
   // ---- stepping ----------------------------------------------------------------------
   void step() {
     const double dt = dt_;
+    step_dt_ = dt;  // errors raised inside the step name the step being taken
     std::copy(d_.begin(), d_.end(), d_prev_.begin());
     const index_t n = model_.particle_count();
 #pragma omp parallel for schedule(static)
@@ -139,6 +140,7 @@ class dynamics {
     }
     time_ += dt;
     ++steps_;
+    step_dt_ = 0.0;
     dt_min_ = std::min(dt_min_, dt);
     dt_max_ = std::max(dt_max_, dt);
     energy_.kinetic = kinetic_energy();
@@ -240,13 +242,6 @@ class dynamics {
     for (index_t I = 0; I < model_.particle_count(); ++I)
       w += 0.5 * mass_[I] * (v_[I] - v_before_[I]).dot(v_[I] + v_half_prev_[I]);
     return w;
-  }
-
-  double kinetic_change() const {
-    double k = 0.0;
-    for (index_t I = 0; I < model_.particle_count(); ++I)
-      k += 0.5 * mass_[I] * (v_[I].squaredNorm() - v_before_[I].squaredNorm());
-    return k;
   }
 
   double plastic_energy() const {
@@ -351,11 +346,11 @@ class dynamics {
       const vec2& X = model_.points.position[bad_point];
       if (!material_error.empty())
         fail("step {}, t = {:.6g} s: the material update failed at quadrature point {} (X = {:.6g}, {:.6g}): {}",
-             steps_, time_, bad_point, X[0], X[1], material_error);
+             steps_ + (step_dt_ > 0.0), time_ + step_dt_, bad_point, X[0], X[1], material_error);
       fail("step {}, t = {:.6g} s: det F = {:.6g} at quadrature point {} (X = {:.6g}, {:.6g}): the body "
            "has inverted or the solution has blown up; reduce the time step fraction, refine the "
            "particles or check the boundary conditions. Output written so far is kept",
-           steps_, time_, det_F_[bad_point], bad_point, X[0], X[1]);
+           steps_ + (step_dt_ > 0.0), time_ + step_dt_, det_F_[bad_point], bad_point, X[0], X[1]);
     }
     min_stretch_ = min_stretch;
 
@@ -434,6 +429,7 @@ class dynamics {
   contact::step_result last_contact_;
   double max_penetration_ = 0.0;
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
+  double step_dt_ = 0.0;  // the step being taken, 0 between steps
   double time_ = 0.0, dt_ = 0.0, reference_dt_ = 0.0, min_stretch_ = 1.0;
   double dt_min_ = std::numeric_limits<double>::infinity(), dt_max_ = 0.0;
   index_t steps_ = 0;
