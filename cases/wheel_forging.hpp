@@ -39,6 +39,10 @@ struct wheel_forging_parameters {
   double axial_particles = 30;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e11;
+  // 1: every particle is a contact slave, not only the boundary ones. The punch's convex
+  // corners (r = 12 and 24 mm) otherwise slip between two surface particles and drag the
+  // particles behind them into the punch (about 1 mm deep by the end of the stroke).
+  double all_particles_slaves = 1.0;
 
   using P = wheel_forging_parameters;
   static constexpr std::array fields = {
@@ -57,6 +61,7 @@ struct wheel_forging_parameters {
       parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles},
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
+      parameter<P>{"all_particles_slaves", "0/1", "1: every particle is checked against the tools", &P::all_particles_slaves},
   };
 };
 
@@ -99,6 +104,8 @@ struct wheel_forging {
         .contact = make_contact<Contact>(std::move(tools), p.friction, p.penalty_stiffness_N_m),
         .initial_velocity = {},
     };
+    if (p.all_particles_slaves != 0.0)
+      for (index_t I = 0; I < pr.particles.size(); ++I) pr.slave_particles.push_back(I);
     return pr;
   }
 
