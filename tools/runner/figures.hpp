@@ -159,7 +159,8 @@ class figure_recorder {
     for (const auto& p : panels) script += p;
     script += "unset multiplot\n";
     const int n = static_cast<int>(panels.size());
-    io::gnuplot_png(dir_ / png, script, {.width = columns ? 450 * n : 900, .height = columns ? 900 : 330 * n});
+    const int width = n == 1 ? 900 : columns ? 450 * n : 900, height = n == 1 ? 700 : columns ? 900 : 330 * n;
+    io::gnuplot_png(dir_ / png, script, {.width = width, .height = height});
   }
 
   void history_png(const std::string& png, const std::string& title, const std::string& xlabel,
