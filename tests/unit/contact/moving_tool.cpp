@@ -18,6 +18,8 @@
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 
+#include "support/contact_fixtures.hpp"
+
 // Count heap allocations while `counting` is set.
 namespace {
 std::atomic<bool> counting{false};
@@ -33,26 +35,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace rkpm;
 using namespace rkpm::contact;
-
-namespace {
-
-struct identity_body {
-  std::vector<vec2> X;
-  std::vector<double> m;
-  body_view view() const {
-    body_view b{&X, &m, {}, {}};
-    for (index_t J = 0; J < static_cast<index_t>(X.size()); ++J) {
-      b.slave.push_back(J);
-      b.slave_table.neighbor.push_back(J);
-      b.slave_table.N.push_back(1.0);
-      b.slave_table.grad.push_back(vec2::Zero());
-      b.slave_table.offset.push_back(J + 1);
-    }
-    return b;
-  }
-};
-
-}  // namespace
+using rkpm::test::identity_body;
 
 TEST_CASE("a tool moving into a resting particle gives it the tool's velocity; reaction and work follow") {
   const double V = 2.0, U = 0.5, m = 3.0, dt = 1e-3;

@@ -16,27 +16,14 @@
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 
+#include "support/contact_fixtures.hpp"
+
 using namespace rkpm;
 using namespace rkpm::contact;
+using rkpm::test::identity_body;
 
 namespace {
 
-// Particles that carry their own mass: N_I(X_J) = delta_IJ, every particle a slave.
-struct identity_body {
-  std::vector<vec2> X;
-  std::vector<double> m;
-  body_view view() const {
-    body_view b{&X, &m, {}, {}};
-    for (index_t J = 0; J < static_cast<index_t>(X.size()); ++J) {
-      b.slave.push_back(J);
-      b.slave_table.neighbor.push_back(J);
-      b.slave_table.N.push_back(1.0);
-      b.slave_table.grad.push_back(vec2::Zero());
-      b.slave_table.offset.push_back(J + 1);
-    }
-    return b;
-  }
-};
 
 // A 9 x 9 RK grid on the unit square (linear correction, cubic spline, support 2h); the slaves are
 // its boundary particles. Masses rho dV_I with a little variation so that m_I differ.

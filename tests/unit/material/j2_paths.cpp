@@ -13,6 +13,8 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/paper_materials.hpp"
+
 using rkpm::mat3;
 using rkpm::material::elastic_constants;
 using rkpm::material::j2_plasticity;
@@ -20,10 +22,8 @@ namespace h = rkpm::material::hardening;
 
 namespace {
 
-const elastic_constants copper{117e9, 0.35, 8930.0};
-const double mu = 117e9 / 2.7, K = 130e9, lambda = K - 2.0 * mu / 3.0;
-const h::linear copper_hardening{400e6, 100e6};
-const h::power_law wheel_hardening{576.79e6, 0.01658, 0.3593};
+using namespace rkpm::test::paper_materials;
+const double mu = copper_mu, K = copper_K, lambda = copper_lambda;
 
 mat3 block(double f11, double f12, double f21, double f22, double f33) {
   mat3 F;

@@ -12,6 +12,8 @@
 
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/paper_materials.hpp"
+
 using rkpm::mat3;
 using rkpm::material::elastic_constants;
 using rkpm::material::j2_plasticity;
@@ -19,8 +21,8 @@ namespace h = rkpm::material::hardening;
 
 namespace {
 
-const elastic_constants copper{117e9, 0.35, 8930.0};
-const double mu = 117e9 / 2.7, K = 130e9, lambda = K - 2.0 * mu / 3.0;
+using namespace rkpm::test::paper_materials;
+const double mu = copper_mu, K = copper_K, lambda = copper_lambda;
 
 mat3 shear(double g) {
   mat3 F = mat3::Identity();

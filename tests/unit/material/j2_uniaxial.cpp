@@ -13,6 +13,8 @@
 
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/paper_materials.hpp"
+
 using rkpm::mat3;
 using rkpm::material::elastic_constants;
 using rkpm::material::j2_plasticity;
@@ -20,12 +22,9 @@ namespace h = rkpm::material::hardening;
 
 namespace {
 
-const elastic_constants copper{117e9, 0.35, 8930.0};
+using namespace rkpm::test::paper_materials;
 const double E = 117e9, nu = 0.35;
-const double mu = E / (2 * (1 + nu)), K = E / (3 * (1 - 2 * nu));
-const h::linear copper_hardening{400e6, 100e6};
-const elastic_constants aluminium{71e9, 0.3, 2700.0};
-const h::power_law wheel_hardening{576.79e6, 0.01658, 0.3593};
+const double mu = copper_mu, K = copper_K;
 
 mat3 diagonal(double f11, double f22, double f33) {
   mat3 F = mat3::Zero();
