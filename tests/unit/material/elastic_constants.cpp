@@ -9,26 +9,12 @@
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/error_message.hpp"
+
+using rkpm::test::contains;
+using rkpm::test::error_message;
+
 using rkpm::material::elastic_constants;
-
-namespace {
-
-// The message of the rkpm::error thrown by f, or "" if none was thrown.
-template <class Fn>
-std::string error_message(Fn&& f) {
-  try {
-    f();
-  } catch (const rkpm::error& e) {
-    return e.what();
-  }
-  return {};
-}
-
-bool contains(const std::string& text, const std::string& word) {
-  return text.find(word) != std::string::npos;
-}
-
-}  // namespace
 
 TEST_CASE("copper constants (Taylor bar, spec section 5): derived moduli") {
   const elastic_constants c{117e9, 0.35, 8930.0};

@@ -8,25 +8,12 @@
 #include <rkpm/material/hardening.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/error_message.hpp"
+
+using rkpm::test::contains;
+using rkpm::test::error_message;
+
 namespace h = rkpm::material::hardening;
-
-namespace {
-
-template <class Fn>
-std::string error_message(Fn&& f) {
-  try {
-    f();
-  } catch (const rkpm::error& e) {
-    return e.what();
-  }
-  return {};
-}
-
-bool contains(const std::string& text, const std::string& word) {
-  return text.find(word) != std::string::npos;
-}
-
-}  // namespace
 
 TEST_CASE("linear hardening: Taylor bar copper, 400 MPa + 100 MPa eps_p") {
   const h::linear law{400e6, 100e6};
