@@ -36,7 +36,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
   using Ct = typename Config::contact_type;
   using solver_type = dynamics<G, M, Ct>;
   run_options options;
-  options.end_time = r.end_time.value_or(Case::end_time(p));
+  options.end_time = Case::end_time(p);
   const std::function<std::unique_ptr<solver_type>()> make = [&] {
     auto prob = Case::template build<Ct>(p, r.resolution);
     auto model = build_discrete_model<typename Config::kernel_type, typename Config::correction_type,
@@ -73,6 +73,14 @@ template <class Case>
 run_outcome run_case(const run_request& r) {
   typename Case::parameters p;
   for (const auto& [name, value] : r.sets) cases::set_parameter(p, name, value);
+  // --end-time becomes the case's own parameter, so that summary.json, the checks of the case
+  // (tools that would meet) and the figures (the wheel's tools at the end) all agree with it.
+  if (r.end_time) {
+    if constexpr (requires { p.end_time_s; })
+      p.end_time_s = *r.end_time;
+    else
+      p.stroke_m = *r.end_time * p.tool_velocity_m_s;  // wheel forging: the stroke reached then
+  }
   if (r.help) {
     fmt::print("{}: {}\nparameters (--set NAME=VALUE, SI units):\n{}", Case::name, Case::description,
                cases::describe_parameters(p));
