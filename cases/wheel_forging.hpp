@@ -43,6 +43,10 @@ struct wheel_forging_parameters {
   // corners (r = 12 and 24 mm) otherwise slip between two surface particles and drag the
   // particles behind them into the punch (about 1 mm deep by the end of the stroke).
   double all_particles_slaves = 1.0;
+  // Deepest penetration a tool face still acts on. The default of rigid_tool (half the
+  // shortest segment: 18 mm for the die) would make every particle within 18 mm of the floor a
+  // candidate at every step; a few particle spacings is plenty.
+  double contact_depth_m = 2e-3;
 
   using P = wheel_forging_parameters;
   static constexpr std::array fields = {
@@ -62,6 +66,7 @@ struct wheel_forging_parameters {
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
       parameter<P>{"all_particles_slaves", "0/1", "1: every particle is checked against the tools", &P::all_particles_slaves},
+      parameter<P>{"contact_depth_m", "m", "deepest penetration a tool face acts on", &P::contact_depth_m},
   };
 };
 
@@ -89,13 +94,14 @@ struct wheel_forging {
     require_positive("slug_height_m", p.slug_height_m);
     if (!(p.stroke_m < p.slug_height_m)) fail("stroke_m = {} must be below the slug height {}", p.stroke_m, p.slug_height_m);
     if (!(p.slug_radius_m < 35e-3)) fail("slug_radius_m = {} must fit inside the die (35 mm)", p.slug_radius_m);
+    require_positive("contact_depth_m", p.contact_depth_m);
     if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
     const Eigen::Vector2i n(refined_count(p.radial_particles, resolution), refined_count(p.axial_particles, resolution));
     const vec2 lo(0.0, 0.0), hi(p.slug_radius_m, p.slug_height_m);
     std::vector<contact::rigid_tool> tools{
         contact::rigid_tool("punch", punch_outline(), contact::side::right,
-                            contact::tool_motion::constant_velocity(vec2(0.0, -p.tool_velocity_m_s))),
-        contact::rigid_tool("die", die_outline(), contact::side::left, contact::tool_motion::fixed())};
+                            contact::tool_motion::constant_velocity(vec2(0.0, -p.tool_velocity_m_s)), p.contact_depth_m),
+        contact::rigid_tool("die", die_outline(), contact::side::left, contact::tool_motion::fixed(), p.contact_depth_m)};
     problem<material_type, Contact> pr{
         .particles = make_grid_particles<2>(lo, hi, n, p.support_factor),
         .mesh = make_grid_mesh(lo, hi, n),
