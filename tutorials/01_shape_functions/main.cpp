@@ -40,6 +40,7 @@
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/kernel/quartic_spline.hpp>
+#include <rkpm/io/gnuplot.hpp>
 
 namespace fs = std::filesystem;
 using rkpm::index_t;
@@ -48,33 +49,19 @@ using rkpm::vec;
 // ---------------------------------------------------------------------------------------
 // Plotting with gnuplot
 // ---------------------------------------------------------------------------------------
-// We write each figure's gnuplot script next to its PNG (so the figure can be restyled by
-// hand) and run gnuplot on it. The cairo terminal gives anti-aliased output; gnuplot builds
-// without cairo only have the libgd `png` terminal, so we fall back to that.
+// rkpm::io::gnuplot_png runs gnuplot with the cairo terminal (or libgd's `png` where cairo
+// is missing) and checks that a PNG came out; a failing script is kept as <name>.png.gp.
 namespace plot {
 
-bool run_script(const fs::path& script) {
-  const std::string cmd = fmt::format("gnuplot '{}' 2>/dev/null", script.string());
-  return std::system(cmd.c_str()) == 0;
-}
-
-// Writes <dir>/<name>.gp with the terminal and output set, then the body, and runs it.
 void png(const fs::path& dir, const std::string& name, const std::string& body, int width,
          int height) {
   const fs::path png_file = dir / (name + ".png");
-  const fs::path script = dir / (name + ".gp");
-  for (const char* terminal : {"pngcairo enhanced font 'Sans,10'", "png"}) {
-    std::ofstream gp(script);
-    gp << fmt::format("set terminal {} size {},{}\n", terminal, width, height)
-       << fmt::format("set output '{}'\n", png_file.string()) << body;
-    gp.close();
-    if (run_script(script)) {
-      std::cout << "  wrote " << png_file.string() << "\n";
-      return;
-    }
+  try {
+    rkpm::io::gnuplot_png(png_file, body, {.width = width, .height = height, .font = "Sans,10"});
+    std::cout << "  wrote " << png_file.string() << "\n";
+  } catch (const rkpm::error& e) {
+    std::cout << "  could not plot " << png_file.string() << ": " << e.what() << "; the CSV data is there\n";
   }
-  std::cout << "  could not run gnuplot for " << png_file.string()
-            << " (is gnuplot installed? apt-get install gnuplot-nox); the CSV data is there\n";
 }
 
 }  // namespace plot

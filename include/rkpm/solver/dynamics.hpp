@@ -144,7 +144,6 @@ class dynamics {
     dt_min_ = std::min(dt_min_, dt);
     dt_max_ = std::max(dt_max_, dt);
     energy_.kinetic = kinetic_energy();
-    energy_.plastic = plastic_energy();
     energy_.record();
     if (steps_ % options_.time_step_update_interval == 0) update_time_step();
   }
@@ -244,12 +243,6 @@ class dynamics {
     return w;
   }
 
-  double plastic_energy() const {
-    double w = 0.0;
-    for (index_t q = 0; q < model_.point_count(); ++q) w += state_[q].plastic_work * model_.points.weight[q];
-    return w;
-  }
-
   void setup_constraints(std::vector<velocity_constraint> constraints) {
     if constexpr (G::is_axisymmetric) {
       double size = 0.0, rmin = std::numeric_limits<double>::infinity();
@@ -305,8 +298,9 @@ class dynamics {
     const index_t nq = model_.point_count();
     index_t bad_point = -1;
     double min_stretch = std::numeric_limits<double>::infinity();
+    double plastic = 0.0;
     std::string material_error;
-#pragma omp parallel for schedule(static) reduction(min : min_stretch)
+#pragma omp parallel for schedule(static) reduction(min : min_stretch) reduction(+ : plastic)
     for (index_t q = 0; q < nq; ++q) {
       mat2 H = mat2::Zero();
       vec2 u = vec2::Zero();
@@ -336,6 +330,7 @@ class dynamics {
         }
         continue;
       }
+      plastic += state_[q].plastic_work * model_.points.weight[q];
       const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
       // P = tau F^-T; the in-plane block and the out-of-plane (hoop) component.
       stress_w_[q] = tau_[q].topLeftCorner<2, 2>() * Fi.transpose() * model_.points.weight[q];
@@ -353,6 +348,7 @@ class dynamics {
            steps_ + (step_dt_ > 0.0), time_ + step_dt_, det_F_[bad_point], bad_point, X[0], X[1]);
     }
     min_stretch_ = min_stretch;
+    energy_.plastic = plastic;
 
     const auto& tt = model_.particles_of_points;
     const index_t n = model_.particle_count();

@@ -18,21 +18,15 @@
 #include <unistd.h>
 
 #include <rkpm/io/json.hpp>
+#include <rkpm/io/gnuplot.hpp>  // io::detail::run_capture
 
 namespace fs = std::filesystem;
 using rkpm::io::json;
 
 namespace {
 
-std::pair<int, std::string> run(const std::string& cmd) {
-  std::FILE* p = ::popen((cmd + " 2>&1").c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  const int st = ::pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+// Runs a command and returns its exit status and output (stdout and stderr).
+using rkpm::io::detail::run_capture;
 
 // The JSON number grammar of RFC 8259, written out independently of the writer.
 bool is_json_number(const std::string& s) {
@@ -147,7 +141,7 @@ TEST_CASE("json file parsed back by Python's json module") {
   for (int indent : {2, -1}) {
     const auto path = dir / "sub" / fmt::format("summary_{}.json", indent);
     rkpm::io::write_json(path, doc, indent);
-    const auto [rc, out] = run(python.string() + " '" + script.string() + "' '" + path.string() + "'");
+    const auto [rc, out] = run_capture(python.string() + " '" + script.string() + "' '" + path.string() + "'");
     INFO("python output: " << out);
     CHECK(rc == 0);
   }

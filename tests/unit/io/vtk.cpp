@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <rkpm/io/vtk.hpp>
+#include <rkpm/io/gnuplot.hpp>  // io::detail::run_capture
 
 namespace fs = std::filesystem;
 using rkpm::mat3;
@@ -25,22 +26,15 @@ namespace {
 
 const fs::path python = "/usr/bin/python3";
 
-std::pair<int, std::string> run(const std::string& cmd) {
-  std::FILE* p = ::popen((cmd + " 2>&1").c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  const int st = ::pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+// Runs a command and returns its exit status and output (stdout and stderr).
+using rkpm::io::detail::run_capture;
 
 // Runs check_vtu.py; meshio missing is a failure with the install command, never a skip.
 void check_with_meshio(const std::string& args) {
   REQUIRE_MESSAGE(fs::exists(python), "/usr/bin/python3 missing: install python3-meshio (apt-get install python3-meshio)");
   const auto script = fs::path(__FILE__).parent_path() / "check_vtu.py";
   REQUIRE_MESSAGE(fs::exists(script), "helper script missing: " << script);
-  const auto [rc, out] = run(python.string() + " '" + script.string() + "' " + args);
+  const auto [rc, out] = run_capture(python.string() + " '" + script.string() + "' " + args);
   INFO("check_vtu.py " << args << "\n" << out);
   REQUIRE_MESSAGE(rc != 2, "meshio is not installed for /usr/bin/python3: install python3-meshio "
                            "(apt-get install python3-meshio)");
