@@ -9,6 +9,7 @@
 
 #include <Eigen/Cholesky>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
@@ -58,8 +59,8 @@ class constraint_projector {
       }
       for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) row[column_[e]] = 0.0;
     }
-    llt_.compute(A);
-    if (llt_.info() != Eigen::Success)
+    llt_.emplace(A);
+    if (llt_->info() != Eigen::Success)
       fail("the {} velocity constraints are linearly dependent (a particle or direction given twice?)", n);
     work_ = Eigen::VectorXd::Zero(n);
   }
@@ -77,7 +78,7 @@ class constraint_projector {
       for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) lv += value_[e] * v[column_[e]][k];
       work_[r] = lv - (constraints_[r].velocity ? constraints_[r].velocity(t) : 0.0);
     }
-    llt_.solveInPlace(work_);
+    llt_->solveInPlace(work_);
     for (index_t r = 0; r < n; ++r) {
       const int k = constraints_[r].direction;
       for (index_t e = offset_[r]; e < offset_[r + 1]; ++e)
@@ -89,7 +90,10 @@ class constraint_projector {
   std::vector<velocity_constraint> constraints_;
   std::vector<index_t> offset_, column_;
   std::vector<double> value_, value_over_mass_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  // Engaged only once factored: a default-constructed Eigen::LLT leaves its ComputationInfo
+  // uninitialized, so copying or moving an empty projector (as the solver's constructor does)
+  // would read it (undefined behaviour, found by the sanitizer build).
+  std::optional<Eigen::LLT<Eigen::MatrixXd>> llt_;
   Eigen::VectorXd work_;
 };
 
