@@ -1,5 +1,5 @@
 #pragma once
-// Case 2 of the paper (spec/paper.md section 6): plane-strain forging of a square block.
+// Case 2 of the paper (docs/method.md section 10.2): plane-strain forging of a square block.
 // A 500 mm x 500 mm copper block (21 x 21 particles) between two flat rigid tools 1300 mm wide
 // that move toward each other at 10 m/s each, Coulomb friction 0.2, for 0.015 s: 300 mm of
 // closure, 60% reduction. Forces are per metre of depth.

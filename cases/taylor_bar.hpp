@@ -1,5 +1,5 @@
 #pragma once
-// Case 1 of the paper (spec/paper.md section 5): Taylor bar impact, axisymmetric.
+// Case 1 of the paper (docs/method.md section 10.1): Taylor bar impact, axisymmetric.
 // A copper cylinder (R0 = 3.2 mm, L0 = 32.4 mm) hits a rigid frictionless wall at 227 m/s;
 // half of the (r, z) section, 21 x 51 particles, 80 microseconds. The paper's Table 3 gives
 // the final radius of the impact face and the final height. Parameters are SI; results are

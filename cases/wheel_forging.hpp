@@ -1,5 +1,5 @@
 #pragma once
-// Case 3 of the paper (spec/paper.md section 7, with our reconstruction of its lost figure):
+// Case 3 of the paper (docs/method.md section 10.3, with our reconstruction of its lost figure):
 // axisymmetric forging of an aluminium slug into a wheel. The slug (r 0..22 mm, z 0..28 mm,
 // 31 x 30 particles) sits on a fixed die (floor z = 0 to r = 35 mm, wall r = 35 mm); the punch
 // (0,38)-(10,38)-(12,28)-(24,28)-(26,38)-(34.5,38) mm moves down at 10 m/s for 20 mm, driving
@@ -79,7 +79,7 @@ struct wheel_forging {
 
   static double end_time(const parameters& p) { return p.stroke_m / p.tool_velocity_m_s; }
 
-  // Punch and die at t = 0 (m): the reconstruction of spec/paper.md section 7.
+  // Punch and die at t = 0 (m): the reconstruction of docs/method.md section 10.3.
   static std::vector<vec2> punch_outline() {
     return {vec2(-1e-3, 38e-3), vec2(10e-3, 38e-3), vec2(12e-3, 28e-3), vec2(24e-3, 28e-3),
             vec2(26e-3, 38e-3), vec2(34.5e-3, 38e-3)};

@@ -3,7 +3,7 @@
 // ---------------------------------------------------------------------------------------
 // Introduction
 // ---------------------------------------------------------------------------------------
-// Every later program in rkpm rests on one formula (spec/paper.md (P2)-(P3)):
+// Every later program in rkpm rests on one formula (docs/method.md (2), (11)):
 //
 //   N_I(x) = H(0)^T M(x)^-1 H((x - x_I)/s) Phi_a(x - x_I) dV_I
 //   M(x)   = sum_J H((x - x_J)/s) H((x - x_J)/s)^T Phi_a(x - x_J) dV_J

@@ -5,7 +5,7 @@
 // ---------------------------------------------------------------------------------------
 // Tutorial 01 built the RK shape functions N_I. The solver never integrates them exactly:
 // every integral over the body (internal force, lumped mass) is a sum over quadrature points
-// of background cells (spec/paper.md section 2),
+// of background cells (docs/method.md section 3),
 //
 //   f_int,I = sum_q P(X_q) grad N_I(X_q) w_q,     m_I = rho sum_q N_I(X_q) w_q,
 //

@@ -3,7 +3,7 @@
 // ---------------------------------------------------------------------------------------
 // Introduction
 // ---------------------------------------------------------------------------------------
-// The paper's contact algorithm (spec/paper.md section 3, (P4)-(P7)) runs inside every
+// The paper's contact algorithm (docs/method.md section 6, (P4)-(P7) = (56)-(59)) runs inside every
 // explicit step, after the velocities v(n+1/2) and coefficients d(n+1) have been predicted:
 //
 //   1. find the slave particles (the body's boundary particles) whose PHYSICAL position

@@ -4,7 +4,7 @@
 // Introduction
 // ---------------------------------------------------------------------------------------
 // A copper cylinder (radius 3.2 mm, length 32.4 mm) hits a rigid wall at 227 m/s
-// (spec/paper.md section 5). The bar mushrooms: the impact face spreads to more than twice
+// (docs/method.md section 10.1). The bar mushrooms: the impact face spreads to more than twice
 // its radius and the bar loses a third of its length in 80 us. The paper's Table 3 gives the
 // final radius of the impact face and the final height for the 2x2 Gauss rule (Q4) and for
 // its cheaper two-point rule (Q2); this program computes both.

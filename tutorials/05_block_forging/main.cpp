@@ -5,7 +5,7 @@
 // ---------------------------------------------------------------------------------------
 // A 500 mm x 500 mm copper block is squeezed between two rigid flat tools that move toward
 // each other at 10 m/s each, with Coulomb friction 0.2, to 60% reduction of its height
-// (spec/paper.md section 6). Friction holds the faces back while the middle flows out: the
+// (docs/method.md section 10.2). Friction holds the faces back while the middle flows out: the
 // block barrels. The tools slide along the body and new body surface folds onto them, so
 // contact must be found anew every step: the particle-to-segment search of (P4)-(P7).
 //

@@ -6,7 +6,7 @@
 // An aluminium slug (radius 22 mm, height 28 mm) stands on a die (a floor and a wall at
 // r = 35 mm). A shaped punch comes down at 10 m/s for 20 mm: its land (r 12..24 mm) presses
 // the slug while a hub recess (r < 10 mm) and a rim recess (r > 26 mm) leave room for the
-// material to rise (spec/paper.md section 7; the paper's figure of the tools is lost, and
+// material to rise (docs/method.md section 10.3; the paper's figure of the tools is lost, and
 // cases/wheel_forging.hpp documents our reconstruction). The flow stress follows a power law,
 // sigma_y = 576.79 (0.01658 + eps_p)^0.3593 MPa, and contact is frictionless.
 //
