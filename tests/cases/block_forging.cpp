@@ -1,4 +1,4 @@
-// Block forging (cases/block_forging.hpp, spec/paper.md section 6), reduced: 11 x 11 particles
+// Block forging (cases/block_forging.hpp, docs/method.md section 10.2), reduced: 11 x 11 particles
 // instead of 21 x 21, and 20% compression instead of 60%. Physical invariants:
 //   - no slave particle crosses either moving tool by more than 2% of the particle spacing;
 //   - plastic incompressibility: the deformed area sum_q J_q w_q stays within a few % of the

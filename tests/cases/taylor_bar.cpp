@@ -1,4 +1,4 @@
-// The Taylor bar (cases/taylor_bar.hpp, spec/paper.md section 5), reduced: the paper's 21 x 51
+// The Taylor bar (cases/taylor_bar.hpp, docs/method.md section 10.1), reduced: the paper's 21 x 51
 // particles but only the first microseconds of the impact. Physical invariants, checked after
 // every step through the observer (no stored numbers):
 //   - no slave particle's physical position lies below the wall by more than 2% of the axial

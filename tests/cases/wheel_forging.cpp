@@ -1,4 +1,4 @@
-// Wheel forging (cases/wheel_forging.hpp, spec/paper.md section 7), reduced: about half the
+// Wheel forging (cases/wheel_forging.hpp, docs/method.md section 10.3), reduced: about half the
 // paper's particles per direction and a 4 mm stroke instead of 20 mm. Physical invariants:
 //   - plastic incompressibility: sum_q J_q w_q (axisymmetric weights, 2 pi r included or not,
 //     the ratio is what counts) changes by less than 2%;

@@ -1,5 +1,5 @@
 #pragma once
-// The paper's materials (spec/paper.md sections 5 and 7) for the material tests, with
+// The paper's materials (docs/method.md sections 10.1 and 10.3) for the material tests, with
 // copper's moduli written in closed form so that the tests do not lean on the accessors of
 // elastic_constants they check.
 

@@ -1,4 +1,4 @@
-// Gradients of the RK shape functions (spec/paper.md (P2)-(P3), d(M^-1) = -M^-1 dM M^-1)
+// Gradients of the RK shape functions (docs/method.md (11)-(14), d(M^-1) = -M^-1 dM M^-1)
 // against central finite differences of N itself, with step 1e-6 times the support in each
 // direction, on a 20% perturbed grid and the Taylor bar's anisotropic grid (metres), for both
 // kernels and both corrections, at interior points, particles, edges and corners.

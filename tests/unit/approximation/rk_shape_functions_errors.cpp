@@ -1,4 +1,4 @@
-// Clear errors instead of garbage (design.md section 4, style.md): a point whose neighbors
+// Clear errors instead of garbage (docs/method.md section 2.4): a point whose neighbors
 // cannot support the basis throws rkpm::error naming the point, the neighbor count and the
 // condition estimate; a point covered by no support throws; a table build reports the same.
 

@@ -1,4 +1,4 @@
-// Reproducing conditions of the RK shape functions (spec/paper.md (P2)-(P3)):
+// Reproducing conditions of the RK shape functions (docs/method.md (10)-(11)):
 //   sum_I N_I(x) p(X_I) = p(x)   and   sum_I grad N_I(x) p(X_I) = grad p(x)
 // for every monomial p up to the correction order (linear: 1, x, y; quadratic: also x^2, xy,
 // y^2), for both kernels and both corrections, on a uniform grid, a 20% randomly perturbed

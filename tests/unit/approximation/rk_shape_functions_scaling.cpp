@@ -2,7 +2,7 @@
 // set given in metres and scaled by f (positions and supports times f, volumes times f^2, i.e.
 // millimetres for f = 1e3, and the extreme f = 1e-8 and 1e8) gives the same N and grad N
 // divided by f, entry by entry, to 1e-12 relative to sum |N| and sum |grad N|_inf. This holds
-// only because the basis is scaled by the support (design.md section 4): with unscaled
+// only because the basis is scaled by the support (docs/method.md (8)): with unscaled
 // monomials M would be singular to round-off at f = 1e-8.
 
 #include <doctest/doctest.h>

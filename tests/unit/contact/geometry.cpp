@@ -1,6 +1,6 @@
 // Rigid tool geometry and the segment search: normals, penetration, max depth, the choice of
 // segment at convex and concave corners, sliding across a vertex, and the grid search against a
-// brute-force search over all segments. The wheel punch of spec/paper.md section 7 (in mm; the
+// brute-force search over all segments. The wheel punch of docs/method.md section 10.3 (in mm; the
 // geometry is scale-free) has both kinds of corner.
 #include <doctest/doctest.h>
 

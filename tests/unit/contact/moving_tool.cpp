@@ -107,7 +107,7 @@ TEST_CASE("sliding under gravity down a slope and across a vertex onto the flat"
 }
 
 TEST_CASE("the wheel punch pushes free particles with its own normal velocity") {
-  // Punch of spec/paper.md section 7 in mm, moving down at 10 mm/s; particles at rest below it.
+  // Punch of docs/method.md section 10.3 in mm, moving down at 10 mm/s; particles at rest below it.
   const double V = 10.0, dt = 1e-3;
   identity_body body{{{18, 27.9}, {11.5, 25.0}, {5, 27.9}, {25, 27.0}}, {1, 1, 1, 1}};
   const rigid_tool punch("punch", {{0, 38}, {10, 38}, {12, 28}, {24, 28}, {26, 38}, {34.5, 38}}, side::right,

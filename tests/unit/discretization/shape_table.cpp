@@ -1,4 +1,4 @@
-// shape_table (design.md section 5): the compressed rows agree with point-by-point evaluation,
+// shape_table (docs/method.md section 9.3): the compressed rows agree with point-by-point evaluation,
 // the transpose lists every entry exactly once under its particle, and interpolate()
 // reproduces linear fields (scalar and vector) exactly, as the linear RK basis promises.
 

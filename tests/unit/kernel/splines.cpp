@@ -1,4 +1,4 @@
-// The 1D window profiles (spec/paper.md (P1)): compact support on [-1, 1], even, unit
+// The 1D window profiles (docs/method.md (4), (5)): compact support on [-1, 1], even, unit
 // integral, C1 (in fact C2) across their knots, and derivatives that agree with finite
 // differences. Reference numbers are the closed forms in the header comments, evaluated here
 // independently.

@@ -1,5 +1,5 @@
 // The tensor-product window Phi_a(x) = prod_k phi(x_k / a_k) / a_k with one support per
-// direction (spec/paper.md (P1), design.md section 4): product of the 1D profiles, unit
+// direction (docs/method.md (6), section 2.3): product of the 1D profiles, unit
 // integral over its rectangle for any supports, gradient against central differences, and
 // the strict support test used by the neighbor search.
 

@@ -1,5 +1,5 @@
 // Hardening laws: flow stress, slope and exact work integral against the closed forms of
-// spec/paper.md (Taylor bar copper, wheel aluminium), and rejection of bad parameters.
+// docs/method.md section 10 (Taylor bar copper, wheel aluminium), and rejection of bad parameters.
 #include <doctest/doctest.h>
 
 #include <cmath>
