@@ -1,6 +1,6 @@
 #pragma once
-// RK shape functions and their gradients at one point (spec/paper.md (P2)-(P3),
-// design.md section 4):
+// RK shape functions and their gradients at one point (docs/method.md (8)-(14),
+// section 2):
 //   N_I(x) = H(0)^T M(x)^-1 H(z_I) Phi_a(x - x_I) dV_I,   z_I = (x - x_I) / s
 //   M(x)   = sum_I H(z_I) H(z_I)^T Phi_a(x - x_I) dV_I
 // with the basis scaled by s (the mean support of the neighbors), and the gradient from

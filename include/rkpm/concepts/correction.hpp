@@ -1,6 +1,6 @@
 #pragma once
 // Correction: the polynomial basis H(z) that the RK correction function C(x; x - x_I) is built
-// on (spec/paper.md (P3), design.md section 4). `order` is the highest degree reproduced
+// on (docs/method.md (7)-(11)). `order` is the highest degree reproduced
 // exactly; `size<Dim>` the number of monomials; `evaluate` fills H and dH/dz at a scaled
 // offset z = (x - x_I) / scale.
 

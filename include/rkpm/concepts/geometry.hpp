@@ -1,5 +1,5 @@
 #pragma once
-// Geometry: how a 2D section stands for a 3D body (design.md section 4).
+// Geometry: how a 2D section stands for a 3D body (docs/method.md (16), (35), (37)).
 //   weight_factor(X)          2 pi R in axisymmetric geometry, 1 in plane strain (per metre)
 //   out_of_plane_stretch(u,X) F33: the hoop stretch 1 + u_r / R, or 1
 //   is_axisymmetric            true when the hoop term enters the internal force and the

@@ -1,7 +1,7 @@
 #pragma once
 // Kernel: a 1D window profile phi(z) with support |z| <= 1, even, normalised to unit
 // integral, with first and second derivatives. The 2D window is the tensor product
-// Phi_a(x) = prod_k phi(x_k / a_k) / a_k  (spec/paper.md (P1), design.md section 4).
+// Phi_a(x) = prod_k phi(x_k / a_k) / a_k  (docs/method.md (4)-(6)).
 
 #include <concepts>
 #include <string_view>

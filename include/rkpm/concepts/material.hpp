@@ -1,6 +1,6 @@
 #pragma once
 // Material and Hardening: what the explicit solver calls at every quadrature point
-// (design.md section 4, "Stress update").
+// (docs/method.md section 4).
 //
 // Material: `kirchhoff_stress(F, s)` takes the current total deformation gradient F (3x3, with
 // the 2D block structure [[F11, F12, 0], [F21, F22, 0], [0, 0, F33]], F33 = 1 in plane strain

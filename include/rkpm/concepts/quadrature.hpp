@@ -1,6 +1,6 @@
 #pragma once
 // Quadrature: a rule on the reference square [-1, 1]^2 of a background cell
-// (spec/paper.md section 2). `rule` lists (xi, eta, weight) per point.
+// (docs/method.md section 3). `rule` lists (xi, eta, weight) per point.
 
 #include <array>
 #include <concepts>

@@ -1,6 +1,6 @@
 #pragma once
 // Enforcement policies: how large the normal contact force (P4) and the mass in the sticking
-// force (P6) are for a slave particle J with penetration g (spec/paper.md section 3).
+// force (P6) are for a slave particle J with penetration g (docs/method.md (56)-(57), (61), section 6.6).
 //   paper          f_n = m_s g / dt^2, m_s = m_J (the paper's form). With RK redistribution (P7)
 //                  it moves x_J back by only g m_s sum_I N_I(X_J)^2 / m_I, part of the gap.
 //   effective_mass f_n = m_eff g / dt^2 with m_eff = 1 / sum_I (N_I(X_J)^2 / m_I): an isolated

@@ -1,5 +1,5 @@
 #pragma once
-// Friction policies for particle-to-segment contact (spec/paper.md section 3).
+// Friction policies for particle-to-segment contact (docs/method.md (57)-(58), section 6.6).
 // limit(trial, f_n) turns the tangential force that would make the particle stick, the
 // sticking force (P6) f_st = -m v_T / dt, into the force the law allows:
 //   frictionless: zero;

@@ -1,6 +1,6 @@
 #pragma once
 // particle_to_segment<Enforcement, Friction>: the paper's contact subroutine against moving
-// rigid tools (spec/paper.md section 3, (P4)-(P7); design.md section 4 "Contact").
+// rigid tools (docs/method.md section 6, (P4)-(P7) = (56)-(59)).
 // enforce(t_next, dt, d, v), with d = d_{n+1} predicted and v = v_{n+1/2}, tools at t_next:
 //   (i)   slave positions x_J = X_J + sum_I N_I(X_J) d_I and velocities v_J = sum_I N_I(X_J) v_I;
 //         per tool, the master segment each penetrating slave crossed (segment_search.hpp),

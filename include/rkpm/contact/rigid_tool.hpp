@@ -1,5 +1,5 @@
 #pragma once
-// rigid_tool: a master surface of spec/paper.md section 3, an open polyline of segments
+// rigid_tool: a master surface of docs/method.md section 6, an open polyline of segments
 // P_k - P_{k+1} that translates rigidly with a prescribed motion. body_side says on which side
 // of the polyline direction the body lies; the unit normals n_k point out of the tool toward
 // the body. Because the tool only translates, its geometry is kept in its own frame

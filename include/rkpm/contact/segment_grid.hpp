@@ -1,6 +1,6 @@
 #pragma once
 // segment_grid: a uniform grid over the segments of one rigid tool, in the tool's own frame
-// (design.md section 5: contact search with a grid, not all pairs). The tool only translates,
+// (docs/method.md section 9.3: contact search with a grid, not all pairs). The tool only translates,
 // so the grid is built once and queried at y = x - u(t). Each segment is listed in every cell
 // that its bounding box, grown by the tool's reach, overlaps; so the one cell containing y
 // lists every segment that could catch y (rigid_tool::catches), each once.

@@ -1,6 +1,6 @@
 #pragma once
 // choose_segment: which master segment of a tool a penetrating slave particle is pushed out of
-// (step i of the contact subroutine, spec/paper.md section 3). Among the segments that catch
+// (step 1 of the contact subroutine, docs/method.md section 6.8). Among the segments that catch
 // the particle (rigid_tool::catches), prefer, in this order:
 //   1. the face its path from the previous call crossed (the first one crossed along the path),
 //      which is the physically right one at concave corners where a particle is behind two faces;

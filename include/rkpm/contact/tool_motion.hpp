@@ -1,5 +1,5 @@
 #pragma once
-// tool_motion: the prescribed rigid translation u(t) of a tool (spec/paper.md section 3: the
+// tool_motion: the prescribed rigid translation u(t) of a tool (docs/method.md section 6.1: the
 // master bodies are rigid tools with prescribed motion). Fixed, constant velocity, or any
 // function of time; the function form is evaluated once per tool per step, so std::function
 // costs nothing that matters.

@@ -1,6 +1,6 @@
 #pragma once
 // background_mesh: the quadrilateral integration cells that cover the body
-// (spec/paper.md section 2). Cells hold four node indices counter-clockwise.
+// (docs/method.md section 3.1). Cells hold four node indices counter-clockwise.
 //   node   #nodes list of corner positions (reference configuration)
 //   cell   #cells list of 4 node indices, counter-clockwise
 // make_grid_mesh builds the cells of a regular particle grid with the same node numbering as

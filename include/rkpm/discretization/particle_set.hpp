@@ -2,7 +2,7 @@
 // particle_set<Dim>: the particles of an RK discretization in the reference configuration.
 //   position  #particles list of X_I
 //   volume    #particles list of dV_I (the quadrature weight of the particle in (P3))
-//   support   #particles list of a_I, one support size per direction (design.md section 4)
+//   support   #particles list of a_I, one support size per direction (docs/method.md section 2.3)
 
 #include <cmath>
 #include <vector>

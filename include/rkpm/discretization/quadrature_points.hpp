@@ -1,5 +1,5 @@
 #pragma once
-// Quadrature points of a background mesh for a rule Q (spec/paper.md section 2):
+// Quadrature points of a background mesh for a rule Q (docs/method.md (15)-(16)):
 //   position  #points X_q = sum_a N_a(xi_q) X_a  (bilinear map of the cell)
 //   weight    #points w_q = W_q * det J(xi_q) * G::weight_factor(X_q)  (2 pi R in axisymmetric)
 //   cell      #points the cell each point belongs to

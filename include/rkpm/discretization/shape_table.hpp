@@ -1,6 +1,6 @@
 #pragma once
 // shape_table<Dim>: RK shape functions and gradients at a list of evaluation points, in
-// compressed sparse rows, built once in the reference configuration (design.md section 5).
+// compressed sparse rows, built once in the reference configuration (docs/method.md section 9.3).
 //   offset    #points+1; the entries of point p are offset[p] .. offset[p+1]-1
 //   neighbor  #entries particle index_t I
 //   N         #entries N_I(x_p)

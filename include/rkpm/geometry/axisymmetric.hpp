@@ -2,7 +2,7 @@
 // Axisymmetric: coordinates (r, z) with the axis at r = 0. Weights and masses carry 2 pi R,
 // so forces are totals over the ring (N); the hoop stretch is F33 = 1 + u_r / R at the
 // point's reference radius R > 0 (Gauss points never lie on the axis). The symmetry axis
-// u_r = 0 is held on physical values by the solver's constraints (design.md section 4).
+// u_r = 0 is held on physical values by the solver's constraints (docs/method.md section 5.7).
 
 #include <numbers>
 #include <string_view>

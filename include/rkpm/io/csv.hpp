@@ -1,5 +1,5 @@
 #pragma once
-// rkpm::io::csv_writer: time histories as CSV (design.md section 6). One header row of column
+// rkpm::io::csv_writer: time histories as CSV (docs/method.md section 9.4). One header row of column
 // names, then one row of doubles per call, written in shortest round-trip form (reading a value
 // back with strtod gives the same double) and flushed per row, so a run that dies keeps every
 // row it wrote.

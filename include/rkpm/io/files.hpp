@@ -1,5 +1,5 @@
 #pragma once
-// File helpers shared by the output writers (design.md section 6, "Output a user expects"):
+// File helpers shared by the output writers (docs/method.md section 9.4):
 // create the parent directories of an output path, and replace a whole file atomically so
 // that a run killed while writing leaves either the previous or the new file, never half of it.
 

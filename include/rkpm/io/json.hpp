@@ -1,5 +1,5 @@
 #pragma once
-// rkpm::io::json: a small ordered JSON value for the per-run summary (design.md section 6:
+// rkpm::io::json: a small ordered JSON value for the per-run summary (docs/method.md section 9.4:
 // case, policies, particle counts, steps, wall time, key results, energy error). Object keys
 // keep insertion order so summaries read in the order they were built. Numbers are doubles,
 // written as the shortest text that reads back to the same double; NaN and infinities have

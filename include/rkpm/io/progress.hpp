@@ -1,5 +1,5 @@
 #pragma once
-// rkpm::io::progress_line: the one-line progress display of long runs (design.md section 6):
+// rkpm::io::progress_line: the one-line progress display of long runs (docs/method.md section 9.4):
 //   [ 42%] t = 33.6 us  step 1200  3400 steps/s  eta 12 s
 // Shown on a terminal only (or when forced), redrawn in place with '\r' at most a few times a
 // second so that printing never costs the solver measurable time. The time unit is chosen

@@ -1,5 +1,5 @@
 #pragma once
-// VTK XML output for ParaView (design.md section 6): write_vtu() writes the particles of one
+// VTK XML output for ParaView (docs/method.md section 9.4): write_vtu() writes the particles of one
 // snapshot as an UnstructuredGrid of VTK_VERTEX cells (z = 0) with per-particle arrays
 // (displacement, velocity, stress, equivalent plastic strain, det F, ...); pvd_series keeps the
 // .pvd index of a time series valid after every added snapshot.

@@ -1,6 +1,6 @@
 #pragma once
 // Tensor-product window Phi_a(x) = prod_k phi(x_k / a_k) / a_k with a separate support a_k per
-// direction (design.md section 4: the Taylor bar's 0.16 mm x 0.648 mm spacing needs it), and
+// direction (docs/method.md (6), section 2.3: the Taylor bar's 0.16 mm x 0.648 mm spacing needs it), and
 // its gradient with respect to x.
 
 #include <rkpm/concepts/kernel.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // Hencky hyperelasticity (logarithmic strains): the J2 model of j2_plasticity.hpp without
 // yield, tau = sum_i (lambda tr(eps) + 2 mu eps_i) n_i n_i^T with b = F F^T = sum_i lambda_i^2
-// n_i n_i^T and eps_i = ln(lambda_i) (design.md section 4). Path-independent, so the state
+// n_i n_i^T and eps_i = ln(lambda_i) (docs/method.md (22)). Path-independent, so the state
 // carries only the two always-zero plastic members the solver reads for output and energy.
 
 #include <string_view>

@@ -1,7 +1,7 @@
 #pragma once
 // Isotropic elastic constants shared by every material law: Young's modulus E, Poisson's ratio
-// nu and the reference density rho0 (spec/paper.md sections 5 and 7), with the derived moduli
-// the Hencky law and the stable time step need (design.md section 4):
+// nu and the reference density rho0 (docs/method.md sections 10.1 and 10.3), with the derived moduli
+// the Hencky law and the stable time step need (docs/method.md (20)-(21)):
 //   mu = E / (2 (1 + nu)),  K = E / (3 (1 - 2 nu)),  lambda = E nu / ((1 + nu) (1 - 2 nu)).
 
 #include <cmath>

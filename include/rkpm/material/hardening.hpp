@@ -1,7 +1,7 @@
 #pragma once
-// Isotropic hardening laws sigma_y(eps_p) for J2 plasticity (spec/paper.md section 4).
-//   linear:    sigma_y = sigma_y0 + H eps_p              (Taylor bar, section 5: 400 MPa, 100 MPa)
-//   power_law: sigma_y = K (eps0 + eps_p)^n               (wheel, section 7: 576.79 MPa, 0.01658,
+// Isotropic hardening laws sigma_y(eps_p) for J2 plasticity (docs/method.md (23)-(24)).
+//   linear:    sigma_y = sigma_y0 + H eps_p              (Taylor bar, section 10.1: 400 MPa, 100 MPa)
+//   power_law: sigma_y = K (eps0 + eps_p)^n               (wheel, section 10.3: 576.79 MPa, 0.01658,
 //                                                           0.3593; initial yield 132.2 MPa)
 // Both satisfy rkpm::Hardening. `integral(a, b)` is the exact plastic work per unit volume
 // int_a^b sigma_y de_p, which j2_plasticity uses when a law provides it.

@@ -1,6 +1,6 @@
 #pragma once
 // Hencky (logarithmic) elasticity on tensors with the 2D block structure
-// [[a11, a12, 0], [a12, a22, 0], [0, 0, a33]] (design.md section 4, "Stress update"):
+// [[a11, a12, 0], [a12, a22, 0], [0, 0, a33]] (docs/method.md (22), section 4.2):
 //   b = sum_i lambda_i^2 n_i n_i^T,  eps_i = ln(lambda_i),  tau_i = lambda tr(eps) + 2 mu eps_i,
 //   tau = sum_i tau_i n_i n_i^T.
 // The out-of-plane direction e3 is always principal, so only the in-plane 2x2 block needs an

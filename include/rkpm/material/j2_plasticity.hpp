@@ -1,5 +1,5 @@
 #pragma once
-// Finite-strain J2 plasticity with logarithmic elastic strains (design.md section 4; the
+// Finite-strain J2 plasticity with logarithmic elastic strains (docs/method.md section 4.4; the
 // multiplicative model of Simo, CMAME 99 (1992), in its principal-stretch form):
 //   F = F_e F_p,  b_e = F_e F_e^T,  tau = Hencky(b_e),  -1/2 L_v(b_e) b_e^-1 = dgamma n,
 //   n = sqrt(3/2) dev(tau) / |dev(tau)|,  f = q - sigma_y(eps_p) <= 0,  q = sqrt(3/2) |dev(tau)|.

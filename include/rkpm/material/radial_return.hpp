@@ -1,5 +1,5 @@
 #pragma once
-// The scalar equation of the J2 radial return (design.md section 4, "Stress update"): given the
+// The scalar equation of the J2 radial return (docs/method.md (28)-(29)): given the
 // trial von Mises stress q_trial > sigma_y(eps_p_n), find the plastic increment dgamma >= 0 with
 //   r(dgamma) = q_trial - 3 mu dgamma - sigma_y(eps_p_n + dgamma) = 0.
 // Linear hardening has the closed form dgamma = (q_trial - sigma_y(eps_p_n)) / (3 mu + H); any

@@ -1,6 +1,6 @@
 #pragma once
 // config<Kernel, Correction, Quadrature, Geometry, Material, Contact>: one type that names a
-// whole method (design.md section 3), with defaults for the paper's common case and
+// whole method (docs/method.md section 9.2), with defaults for the paper's common case and
 // rebinding aliases so that a tutorial swaps one choice in one line:
 //   using paper_q4 = config<>::with_quadrature<quadrature::q4>;
 

@@ -1,5 +1,5 @@
 #pragma once
-// Essential conditions on physical values (design.md section 4). RK coefficients are not
+// Essential conditions on physical values (docs/method.md (50)-(51), section 5.7). RK coefficients are not
 // nodal values, so "u_r = 0 on the axis" means sum_J N_J(X_I) d_Jr = 0, not d_Ir = 0. Each
 // constraint row r reads  sum_J Lambda_rJ v_Jk = g_r(t)  with Lambda_rJ = N_J(X_I).
 // Imposed with Lagrange multipliers in the explicit update, this is the M-orthogonal

@@ -1,13 +1,13 @@
 #pragma once
 // discrete_model: everything the time-stepping loop reads, computed once in the reference
-// configuration (design.md sections 4 and 5). Only this builder depends on the kernel, the
+// configuration (docs/method.md sections 2.7 and 9.3). Only this builder depends on the kernel, the
 // correction and the quadrature rule; the loop (solver/dynamics.hpp) does not, so those
 // policies cost a small instantiation each instead of a copy of the whole solver.
 //   points               quadrature points X_q and weights w_q (2 pi R included)
 //   at_points            N_I(X_q), grad N_I(X_q)
 //   particles_of_points  transpose of at_points (scatter without atomics)
 //   at_particles         N_J(X_I): physical values at the particles
-//   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, design.md section 4)
+//   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, docs/method.md (38))
 
 #include <cmath>
 #include <string_view>

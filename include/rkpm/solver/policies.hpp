@@ -1,6 +1,6 @@
 #pragma once
 // The shipped policies of each family as Boost.Hana type lists, the cartesian product of
-// all combinations, and a pairwise covering set (design.md section 3).
+// all combinations, and a pairwise covering set (docs/method.md section 9.2).
 //
 // Every solver type costs compile time, and the full product is 2 x 2 x 3 x 2 x 3 x 4 = 288
 // configurations. The tests instantiate `covering_configs`: 12 configurations in which every

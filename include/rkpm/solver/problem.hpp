@@ -1,6 +1,6 @@
 #pragma once
 // problem: the run-time description of one simulation that a case builds for any
-// configuration type (design.md section 1): particles, cells, material, contact (with its
+// configuration type (docs/method.md section 9.1): particles, cells, material, contact (with its
 // tools), initial velocity, constraints and body force; and run_options for the stepping.
 
 #include <functional>

@@ -1,6 +1,6 @@
 #pragma once
 // Stable time step of the central-difference scheme, dt_crit = 2 / omega_max, with
-// omega_max^2 the largest eigenvalue of M^-1 K (design.md section 4 "Time integration").
+// omega_max^2 the largest eigenvalue of M^-1 K (docs/method.md (45)-(49), section 5.6).
 // K is the elastic tangent stiffness of the discretization about a configuration given by
 // the deformation gradient at each quadrature point (the reference configuration when none is
 // given), applied matrix-free:
