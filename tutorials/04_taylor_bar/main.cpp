@@ -67,7 +67,7 @@ template <class Method>
 outcome run(const taylor_bar::parameters& params, const fs::path& dir) {
   const std::string rule(Method::quadrature_type::name);
   run_options options;
-  options.end_time = taylor_bar::end_time(params);  // the step is chosen by rkpm (half the stable step)
+  options.end_time = taylor_bar::end_time(params);  // the step is chosen by rkpm (0.7 of the stable step)
 
   const auto start = std::chrono::steady_clock::now();
   // The solver keeps pointers into itself (the contact sees its particle arrays), so it is
