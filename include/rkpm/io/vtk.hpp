@@ -4,11 +4,18 @@
 // (displacement, velocity, stress, equivalent plastic strain, det F, ...); pvd_series keeps the
 // .pvd index of a time series valid after every added snapshot.
 //
-// Arrays are Float64 so nothing is lost against the solver's doubles. The default encoding is
-// inline base64 ("binary"): one base64 stream holding a UInt64 byte count followed by the raw
-// little-/big-endian values, as VTK's own vtkXMLWriter writes it uncompressed; "ascii" writes
-// shortest round-trip decimal text instead.
+// Arrays are Float64 so nothing is lost against the solver's doubles. Encodings, as VTK's own
+// vtkXMLWriter writes them (header_type UInt64, native byte order):
+//   appended (default)  every array's bytes in one raw <AppendedData> block after the XML,
+//                       each DataArray naming its offset: the smallest and fastest file
+//   binary              base64 inside each DataArray (plain-text XML, a third larger)
+//   ascii               shortest round-trip decimal text
+// Binary data is zlib-compressed (compressor="vtkZLibDataCompressor", blocks of 32 KiB) when
+// the header is compiled with RKPM_WITH_ZLIB and linked with zlib, which the rkpm CMake target
+// does when find_package(ZLIB) finds it; without it the writer is the same minus compression,
+// and asking for vtu_compression::zlib is an error saying so.
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -22,13 +29,38 @@
 
 #include <fmt/format.h>
 
+#ifdef RKPM_WITH_ZLIB
+#include <zlib.h>
+#endif
+
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/files.hpp>
 
 namespace rkpm::io {
 
-enum class vtu_encoding { binary, ascii };
+enum class vtu_encoding { appended, binary, ascii };
+enum class vtu_compression { none, zlib };
+
+// True if this translation unit can compress (compiled with RKPM_WITH_ZLIB, linked with zlib).
+#ifdef RKPM_WITH_ZLIB
+inline constexpr bool vtu_zlib_available = true;
+#else
+inline constexpr bool vtu_zlib_available = false;
+#endif
+inline constexpr vtu_compression default_vtu_compression =
+    vtu_zlib_available ? vtu_compression::zlib : vtu_compression::none;
+
+// How a .vtu is written; converts from a bare encoding, so write_vtu(path, x, d,
+// vtu_encoding::ascii) still reads as before. Compression applies to appended and binary data.
+struct vtu_format {
+  vtu_encoding encoding = vtu_encoding::appended;
+  vtu_compression compression = default_vtu_compression;
+  int zlib_level = 6;  // 1 (fastest) .. 9 (smallest); zlib's default is 6
+
+  vtu_format() = default;
+  vtu_format(vtu_encoding e, vtu_compression c = default_vtu_compression) : encoding(e), compression(c) {}  // NOLINT
+};
 
 // Named per-particle arrays of one snapshot, in the order they were added (ParaView lists them
 // in that order). Values are copied: a snapshot is written once, not every step.
@@ -115,70 +147,192 @@ inline void append_base64(std::string& out, const unsigned char* bytes, std::siz
   }
 }
 
-// One DataArray body: header (UInt64 byte count) and values in one base64 stream, or text.
-template <class T>
-void append_values(std::string& out, std::span<const T> values, vtu_encoding encoding) {
-  if (encoding == vtu_encoding::ascii) {
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      out += (i % 9 == 0) ? "\n          " : " ";
-      fmt::format_to(std::back_inserter(out), "{}", values[i]);
-    }
-    out += "\n        ";
-    return;
-  }
-  const std::uint64_t bytes = values.size() * sizeof(T);
-  std::vector<unsigned char> raw(sizeof(std::uint64_t) + bytes);
-  std::memcpy(raw.data(), &bytes, sizeof bytes);
-  if (bytes) std::memcpy(raw.data() + sizeof bytes, values.data(), bytes);
-  out += "\n          ";
-  append_base64(out, raw.data(), raw.size());
-  out += "\n        ";
+// Bytes of one binary DataArray as VTK reads them: uncompressed, a UInt64 byte count then the
+// values; compressed, the UInt64 header [#blocks, block size, size of a partial last block (0 if
+// none), compressed size of each block] then the zlib streams of the 32 KiB blocks.
+struct binary_block {
+  std::vector<unsigned char> header, body;
+};
+
+inline constexpr std::size_t vtu_block_size = 32768;
+
+inline void append_u64(std::vector<unsigned char>& out, std::uint64_t v) {
+  unsigned char b[sizeof v];
+  std::memcpy(b, &v, sizeof v);
+  out.insert(out.end(), b, b + sizeof v);
 }
 
-template <class T>
-void append_data_array(std::string& out, std::string_view type, std::string_view name, int components,
-                       std::span<const T> values, vtu_encoding encoding) {
-  fmt::format_to(std::back_inserter(out), "        <DataArray type=\"{}\"", type);
-  if (!name.empty()) fmt::format_to(std::back_inserter(out), " Name=\"{}\"", xml_escape(name));
-  if (components > 1) fmt::format_to(std::back_inserter(out), " NumberOfComponents=\"{}\"", components);
-  fmt::format_to(std::back_inserter(out), " format=\"{}\">",
-                 encoding == vtu_encoding::ascii ? "ascii" : "binary");
-  append_values(out, values, encoding);
-  out += "</DataArray>\n";
+inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, const vtu_format& format,
+                                  std::string_view name) {
+  binary_block block;
+  if (format.compression == vtu_compression::none) {
+    append_u64(block.header, size);
+    block.body.assign(bytes, bytes + size);
+    return block;
+  }
+#ifdef RKPM_WITH_ZLIB
+  const std::size_t blocks = (size + vtu_block_size - 1) / vtu_block_size;
+  append_u64(block.header, blocks);
+  append_u64(block.header, vtu_block_size);
+  append_u64(block.header, size % vtu_block_size);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = b * vtu_block_size, n = std::min(vtu_block_size, size - begin);
+    uLongf compressed = compressBound(static_cast<uLong>(n));
+    const std::size_t at = block.body.size();
+    block.body.resize(at + compressed);
+    const int rc = compress2(block.body.data() + at, &compressed, bytes + begin, static_cast<uLong>(n),
+                             format.zlib_level);
+    if (rc != Z_OK) fail("write_vtu: zlib failed ({}) on array \"{}\"; try vtu_compression::none", rc, name);
+    block.body.resize(at + compressed);
+    append_u64(block.header, compressed);
+  }
+  return block;
+#else
+  fail("write_vtu: array \"{}\": zlib compression asked for, but rkpm was compiled without zlib; "
+       "install zlib (Debian zlib1g-dev), compile with -DRKPM_WITH_ZLIB and link -lz, or use "
+       "vtu_compression::none", name);
+#endif
 }
+
+// Writes the XML of the DataArrays and collects the appended block: one object per file.
+class vtu_arrays {
+ public:
+  vtu_arrays(std::string& xml, const vtu_format& format) : xml_(xml), format_(format) {
+    if (format_.encoding == vtu_encoding::ascii) format_.compression = vtu_compression::none;
+  }
+
+  template <class T>
+  void add(std::string_view type, std::string_view name, int components, std::span<const T> values) {
+    fmt::format_to(std::back_inserter(xml_), "        <DataArray type=\"{}\"", type);
+    if (!name.empty()) fmt::format_to(std::back_inserter(xml_), " Name=\"{}\"", xml_escape(name));
+    if (components > 1) fmt::format_to(std::back_inserter(xml_), " NumberOfComponents=\"{}\"", components);
+    switch (format_.encoding) {
+      case vtu_encoding::ascii:
+        xml_ += " format=\"ascii\">";
+        for (std::size_t i = 0; i < values.size(); ++i) {
+          xml_ += (i % 9 == 0) ? "\n          " : " ";
+          // uint8 would print as a character through fmt's char-like handling; widen it.
+          if constexpr (sizeof(T) == 1)
+            fmt::format_to(std::back_inserter(xml_), "{}", static_cast<int>(values[i]));
+          else
+            fmt::format_to(std::back_inserter(xml_), "{}", values[i]);
+        }
+        xml_ += "\n        </DataArray>\n";
+        return;
+      case vtu_encoding::binary: {
+        const auto block = encode(values, name);
+        xml_ += " format=\"binary\">\n          ";
+        if (format_.compression == vtu_compression::none) {
+          // One base64 stream of count and values, as vtkXMLWriter writes it uncompressed.
+          std::vector<unsigned char> all(block.header);
+          all.insert(all.end(), block.body.begin(), block.body.end());
+          append_base64(xml_, all.data(), all.size());
+        } else {
+          // Compressed: header and blocks are two base64 streams.
+          append_base64(xml_, block.header.data(), block.header.size());
+          append_base64(xml_, block.body.data(), block.body.size());
+        }
+        xml_ += "\n        </DataArray>\n";
+        return;
+      }
+      case vtu_encoding::appended:
+        blocks_.push_back(encode(values, name));
+        xml_ += " format=\"appended\" offset=\"";
+        marks_.push_back(xml_.size());  // the offset is written by finish()
+        xml_ += "\"/>\n";
+        return;
+    }
+  }
+
+  // After the last array and the closing </UnstructuredGrid>: writes the offsets and the raw
+  // <AppendedData> block. The arrays lie in it in reverse order of the XML. Any order is valid
+  // VTK (each array is read at its offset); this one is also read right by meshio 7, whose raw
+  // reader rewrites the offsets in place while looking arrays up by offset in document order,
+  // so that in document order a rewritten offset of an earlier array can equal the raw offset of
+  // a later one and shadow it.
+  void finish() {
+    if (format_.encoding != vtu_encoding::appended) return;
+    std::vector<std::size_t> offset(blocks_.size());
+    std::size_t bytes = 0;
+    for (std::size_t k = blocks_.size(); k-- > 0;) {
+      offset[k] = bytes;
+      bytes += blocks_[k].header.size() + blocks_[k].body.size();
+    }
+    std::string out;
+    out.reserve(xml_.size() + 24 * blocks_.size() + bytes + 64);
+    std::size_t from = 0;
+    for (std::size_t k = 0; k < blocks_.size(); ++k) {
+      out.append(xml_, from, marks_[k] - from);
+      fmt::format_to(std::back_inserter(out), "{}", offset[k]);
+      from = marks_[k];
+    }
+    out.append(xml_, from);
+    // "_" marks offset 0; the newline after the last byte is not data.
+    out += "  <AppendedData encoding=\"raw\">\n   _";
+    for (std::size_t k = blocks_.size(); k-- > 0;) {
+      out.append(reinterpret_cast<const char*>(blocks_[k].header.data()), blocks_[k].header.size());
+      out.append(reinterpret_cast<const char*>(blocks_[k].body.data()), blocks_[k].body.size());
+    }
+    out += "\n  </AppendedData>\n";
+    xml_ = std::move(out);
+  }
+
+  const vtu_format& format() const { return format_; }
+
+ private:
+  template <class T>
+  binary_block encode(std::span<const T> values, std::string_view name) const {
+    return encode_binary(reinterpret_cast<const unsigned char*>(values.data()), values.size_bytes(), format_,
+                         name);
+  }
+
+  std::string& xml_;
+  vtu_format format_;
+  std::vector<binary_block> blocks_;  // appended: each array's bytes, in XML order
+  std::vector<std::size_t> marks_;    // appended: where each array's offset goes in xml_
+};
 
 }  // namespace detail
 
 // Writes one snapshot: points  #points particle positions (x, y) -> (x, y, 0), each a
 // VTK_VERTEX cell; data arrays must have one entry per point. The file is replaced atomically.
 inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points,
-                      const point_data& data = {}, vtu_encoding encoding = vtu_encoding::binary) {
+                      const point_data& data = {}, const vtu_format& format = {}) {
   const std::size_t n = points.size();
   for (const auto& a : data.arrays())
     if (a.values.size() != n * static_cast<std::size_t>(a.components))
       fail("write_vtu '{}': array \"{}\" has {} entries for {} points; give one per particle",
            path.string(), a.name, a.values.size() / static_cast<std::size_t>(a.components), n);
-
   std::string out;
-  out.reserve(256 + n * 64 * (3 + data.arrays().size()));
+  detail::vtu_arrays arrays(out, format);
+  if (arrays.format().compression == vtu_compression::zlib) {
+    if (!vtu_zlib_available)
+      fail("write_vtu '{}': zlib compression asked for, but rkpm was compiled without zlib; install "
+           "zlib (Debian zlib1g-dev) and reconfigure, or use vtu_compression::none", path.string());
+    if (format.zlib_level < 1 || format.zlib_level > 9)
+      fail("write_vtu '{}': zlib level {} must be 1 to 9", path.string(), format.zlib_level);
+  }
+  const bool text = format.encoding == vtu_encoding::ascii;
+  out.reserve(1024 + (text ? n * 64 * (3 + data.arrays().size()) : 0));
   fmt::format_to(std::back_inserter(out),
                  "<?xml version=\"1.0\"?>\n"
-                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\">\n"
+                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\"{}>\n"
                  "  <UnstructuredGrid>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
-                 std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian", n, n);
+                 std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian",
+                 arrays.format().compression == vtu_compression::zlib ? " compressor=\"vtkZLibDataCompressor\"" : "",
+                 n, n);
 
   out += "      <PointData>\n";
   for (const auto& a : data.arrays())
-    detail::append_data_array(out, "Float64", a.name, a.components, std::span<const double>(a.values),
-                              encoding);
+    arrays.add("Float64", a.name, a.components, std::span<const double>(a.values));
   out += "      </PointData>\n";
 
   std::vector<double> xyz;
   xyz.reserve(3 * n);
   for (const auto& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), 0.0});
   out += "      <Points>\n";
-  detail::append_data_array(out, "Float64", "Points", 3, std::span<const double>(xyz), encoding);
+  arrays.add("Float64", "Points", 3, std::span<const double>(xyz));
   out += "      </Points>\n";
 
   // Cell I is the single vertex I: connectivity = offsets - 1 = 0..n-1, type 1 (VTK_VERTEX).
@@ -189,20 +343,14 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
   }
   const std::vector<std::uint8_t> types(n, std::uint8_t{1});
   out += "      <Cells>\n";
-  detail::append_data_array(out, "Int64", "connectivity", 1, std::span<const std::int64_t>(connectivity),
-                            encoding);
-  detail::append_data_array(out, "Int64", "offsets", 1, std::span<const std::int64_t>(offsets), encoding);
-  if (encoding == vtu_encoding::ascii) {
-    // uint8 would print as characters through fmt's char-like handling; widen for text.
-    const std::vector<int> types_text(n, 1);
-    detail::append_data_array(out, "UInt8", "types", 1, std::span<const int>(types_text), encoding);
-  } else {
-    detail::append_data_array(out, "UInt8", "types", 1, std::span<const std::uint8_t>(types), encoding);
-  }
+  arrays.add("Int64", "connectivity", 1, std::span<const std::int64_t>(connectivity));
+  arrays.add("Int64", "offsets", 1, std::span<const std::int64_t>(offsets));
+  arrays.add("UInt8", "types", 1, std::span<const std::uint8_t>(types));
   out += "      </Cells>\n"
          "    </Piece>\n"
-         "  </UnstructuredGrid>\n"
-         "</VTKFile>\n";
+         "  </UnstructuredGrid>\n";
+  arrays.finish();
+  out += "</VTKFile>\n";
   replace_file(path, out);
 }
 
@@ -220,10 +368,10 @@ class pvd_series {
 
   // Writes <pvd stem>_<index, 6 digits>.vtu next to the .pvd and adds it; returns its path.
   std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const point_data& data,
-                                     vtu_encoding encoding = vtu_encoding::binary) {
+                                     const vtu_format& format = {}) {
     const std::string name = fmt::format("{}_{:06d}.vtu", path_.stem().string(), entries_.size());
     const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, points, data, encoding);
+    write_vtu(vtu, points, data, format);
     add(time, name);
     return vtu;
   }
