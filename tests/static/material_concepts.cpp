@@ -1,6 +1,10 @@
-// Compile-time checks of rkpm::Material and rkpm::Hardening: the shipped laws satisfy them and
-// types missing any one required member do not.
+// Checks of rkpm::Material and rkpm::Hardening: at compile time the shipped laws satisfy them
+// and types missing any one required member do not; at run time each shipped law keeps what
+// the concepts promise but cannot express (stress-free reference state, symmetric
+// block-structured stress, Hooke's law for small strain, a slope that is the derivative).
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/material/elastic.hpp>
@@ -107,4 +111,69 @@ static_assert(!rkpm::Hardening<wrong::hardening_without_name>);
 static_assert(!rkpm::Hardening<wrong::hardening_with_float_stress>);
 static_assert(!rkpm::Hardening<m::elastic>);
 
-TEST_CASE("material concepts are checked at compile time") { CHECK(true); }
+// ---- what the concepts cannot state, checked at run time on every shipped law -------------
+// A Material starts with no plastic strain or work, is stress-free at F = I, returns a
+// symmetric Kirchhoff stress with the 2D block structure of F, tends to Hooke's law with its
+// own constants for small strain (without plastic flow), and reports the density and wave
+// speed of those constants.
+template <rkpm::Material M>
+void check_material_contract(const M& material, const m::elastic_constants& c) {
+  CAPTURE(M::name);
+  auto s = material.initial_state();
+  CHECK(s.equivalent_plastic_strain == 0.0);
+  CHECK(s.plastic_work == 0.0);
+  CHECK(material.kirchhoff_stress(rkpm::mat3::Identity(), s).norm() <= 1e-9 * c.youngs_modulus);
+  CHECK(material.density() == c.density);
+  CHECK(material.dilatational_wave_speed() ==
+        doctest::Approx(std::sqrt((c.lame_lambda() + 2.0 * c.shear_modulus()) / c.density)).epsilon(1e-14));
+  CHECK(material.constants().youngs_modulus == c.youngs_modulus);
+
+  // A small block-structured displacement gradient (hoop stretch in F33), well below yield.
+  rkpm::mat3 grad = rkpm::mat3::Zero();
+  grad(0, 0) = 2e-6;
+  grad(0, 1) = -1e-6;
+  grad(1, 0) = 3e-6;
+  grad(1, 1) = -1.5e-6;
+  grad(2, 2) = 0.5e-6;
+  const rkpm::mat3 eps = 0.5 * (grad + grad.transpose());
+  const rkpm::mat3 hooke =
+      c.lame_lambda() * eps.trace() * rkpm::mat3::Identity() + 2.0 * c.shear_modulus() * eps;
+  const rkpm::mat3 tau = material.kirchhoff_stress(rkpm::mat3::Identity() + grad, s);
+  CHECK((tau - tau.transpose()).norm() <= 1e-12 * tau.norm());
+  CHECK(tau(0, 2) == 0.0);
+  CHECK(tau(1, 2) == 0.0);
+  CHECK(tau(2, 0) == 0.0);
+  CHECK(tau(2, 1) == 0.0);
+  CHECK((tau - hooke).norm() <= 1e-4 * hooke.norm());  // geometric terms are O(|grad|)
+  CHECK(s.equivalent_plastic_strain == 0.0);
+  CHECK(s.plastic_work == 0.0);
+}
+
+// A Hardening law starts at a positive yield stress, does not soften, and its slope is the
+// derivative of its flow stress.
+template <rkpm::Hardening H>
+void check_hardening_contract(const H& law) {
+  CAPTURE(H::name);
+  CHECK(law.flow_stress(0.0) > 0.0);
+  for (double e : {0.0, 0.01, 0.1, 0.5}) {
+    CAPTURE(e);
+    CHECK(law.slope(e) >= 0.0);
+    CHECK(law.flow_stress(e + 0.01) >= law.flow_stress(e));
+    const double h = 1e-7;
+    CHECK(law.slope(e) ==
+          doctest::Approx((law.flow_stress(e + h) - law.flow_stress(e)) / h).epsilon(1e-4).scale(1e6));
+  }
+}
+
+TEST_CASE("the shipped materials keep the promises of Material that the type system cannot check") {
+  const m::elastic_constants steel{200e9, 0.3, 7800.0}, copper{117e9, 0.35, 8930.0};
+  check_material_contract(m::elastic(steel), steel);
+  check_material_contract(m::j2_plasticity<h::linear>(copper, h::linear{400e6, 100e6}), copper);
+  check_material_contract(m::j2_plasticity<h::power_law>(steel, h::power_law{576.79e6, 0.01658, 0.3593}), steel);
+}
+
+TEST_CASE("the shipped hardening laws keep the promises of Hardening that the type system cannot check") {
+  check_hardening_contract(h::linear{400e6, 100e6});
+  check_hardening_contract(h::linear{400e6, 0.0});  // perfect plasticity
+  check_hardening_contract(h::power_law{576.79e6, 0.01658, 0.3593});
+}

@@ -1,6 +1,8 @@
 // VTK XML output read back by an independent reader: meshio under /usr/bin/python3
 // (Debian python3-meshio) checks coordinates, vertex cells and every array's shape and values,
-// recomputed in Python from the same closed formulas, for both encodings and for a .pvd series.
+// recomputed in Python from the same closed formulas, for every encoding (appended raw, inline
+// base64, ascii), with and without zlib, and for a .pvd series; check_vtu.py also walks the
+// appended block's headers and zlib blocks itself.
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -71,18 +73,70 @@ fs::path scratch() {
 
 }  // namespace
 
+using rkpm::io::vtu_compression;
+using rkpm::io::vtu_encoding;
+using rkpm::io::vtu_format;
+
+const char* name(vtu_encoding e) {
+  return e == vtu_encoding::appended ? "appended" : e == vtu_encoding::binary ? "binary" : "ascii";
+}
+const char* name(vtu_compression c) { return c == vtu_compression::zlib ? "zlib" : "none"; }
+
+TEST_CASE("vtu: this build compresses (zlib1g-dev is a listed package)") {
+  // The runner's snapshots rely on it; a build that lost zlib should say so here.
+  CHECK(rkpm::io::vtu_zlib_available);
+  CHECK(rkpm::io::default_vtu_compression == vtu_compression::zlib);
+  CHECK(vtu_format{}.encoding == vtu_encoding::appended);
+}
+
 TEST_CASE("vtu: meshio reads points, vertex cells and scalar/vector/tensor arrays exactly") {
   const auto dir = scratch();
-  for (auto encoding : {rkpm::io::vtu_encoding::binary, rkpm::io::vtu_encoding::ascii}) {
-    for (int n : {1, 2, 3, 37}) {  // sizes that exercise every base64 padding case
-      const bool binary = encoding == rkpm::io::vtu_encoding::binary;
-      CAPTURE(binary);
-      CAPTURE(n);
-      const auto s = make(n);
-      const auto path = dir / "one" / fmt::format("snap_{}_{}.vtu", binary ? "bin" : "txt", n);
-      rkpm::io::write_vtu(path, s.points, s.data, encoding);
-      check_with_meshio(fmt::format("vtu '{}' {}", path.string(), n));
+  std::vector<vtu_compression> compressions{vtu_compression::none};
+  if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
+  for (auto encoding : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii}) {
+    for (auto compression : compressions) {
+      // 1, 2, 3, 37: every base64 padding case; 4100: a tensor array of 295,200 bytes is ten
+      // 32 KiB zlib blocks and a partial one.
+      for (int n : {1, 2, 3, 37, 4100}) {
+        CAPTURE(name(encoding));
+        CAPTURE(name(compression));
+        CAPTURE(n);
+        const auto s = make(n);
+        const auto path = dir / "one" / fmt::format("snap_{}_{}_{}.vtu", name(encoding), name(compression), n);
+        rkpm::io::write_vtu(path, s.points, s.data, vtu_format(encoding, compression));
+        check_with_meshio(fmt::format("vtu '{}' {} {} {}", path.string(), n, name(encoding), name(compression)));
+      }
     }
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vtu: appended raw is smaller than base64, zlib smaller still, ascii largest") {
+  const auto dir = scratch() / "sizes";
+  const auto s = make(4100);
+  auto size = [&](vtu_format f) {
+    const auto path = dir / fmt::format("{}_{}.vtu", name(f.encoding), name(f.compression));
+    rkpm::io::write_vtu(path, s.points, s.data, f);
+    return fs::file_size(path);
+  };
+  const auto appended = size({vtu_encoding::appended, vtu_compression::none});
+  const auto base64 = size({vtu_encoding::binary, vtu_compression::none});
+  const auto ascii = size({vtu_encoding::ascii, vtu_compression::none});
+  // 4100 points of 17 doubles (14 in the arrays, 3 coordinates), 2 Int64 and a UInt8.
+  const std::uintmax_t values = 4100 * (17 * 8 + 2 * 8 + 1);
+  CHECK(appended > values);
+  CHECK(appended < values + 4096);  // headers and XML only
+  CHECK(base64 > values * 4 / 3);
+  CHECK(base64 < values * 4 / 3 + 4096);
+  CHECK(ascii > base64);
+  if (rkpm::io::vtu_zlib_available) {
+    const auto zlib = size({vtu_encoding::appended, vtu_compression::zlib});
+    CHECK(zlib < appended / 2);  // the vertex cells and zero z components compress to almost nothing
+    vtu_format level1{vtu_encoding::appended, vtu_compression::zlib};
+    level1.zlib_level = 1;
+    CHECK(size(level1) >= zlib);
+    level1.zlib_level = 0;
+    CHECK_THROWS_AS(rkpm::io::write_vtu(dir / "bad.vtu", s.points, s.data, level1), rkpm::error);
   }
   fs::remove_all(dir);
 }
@@ -114,7 +168,7 @@ TEST_CASE("pvd: the index is valid after every addition and lists each added fil
   std::string expect;
   for (int k = 0; k < 3; ++k) {
     const auto s = make(sizes[k]);
-    const auto vtu = pvd.add_snapshot(times[k], s.points, s.data);
+    const auto vtu = pvd.add_snapshot(times[k], s.points, s.data);  // default: appended, zlib
     CHECK(vtu.parent_path() == dir);
     CHECK(vtu.filename() == fmt::format("run_{:06d}.vtu", k));
     expect += fmt::format(" {},{}", times[k], sizes[k]);
@@ -124,7 +178,7 @@ TEST_CASE("pvd: the index is valid after every addition and lists each added fil
   // add() with a caller-written file, named relative to the .pvd directory.
   const auto s = make(3);
   fs::create_directories(dir / "extra");
-  rkpm::io::write_vtu(dir / "extra" / "late.vtu", s.points, s.data, rkpm::io::vtu_encoding::ascii);
+  rkpm::io::write_vtu(dir / "extra" / "late.vtu", s.points, s.data, vtu_encoding::ascii);
   pvd.add(4e-6, "extra/late.vtu");
   CHECK(pvd.size() == 4);
   check_with_meshio(fmt::format("pvd '{}'{} 4e-06,3", pvd.path().string(), expect));
