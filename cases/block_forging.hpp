@@ -33,7 +33,7 @@ struct block_forging_parameters {
   double yield_stress_Pa = 400e6;
   double hardening_modulus_Pa = 100e6;
   double end_time_s = 0.015;
-  double particles_per_side = 21;
+  int particles_per_side = 21;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e12;
 
@@ -50,7 +50,7 @@ struct block_forging_parameters {
       parameter<P>{"yield_stress_Pa", "Pa", "initial yield stress", &P::yield_stress_Pa},
       parameter<P>{"hardening_modulus_Pa", "Pa", "linear hardening modulus H", &P::hardening_modulus_Pa},
       parameter<P>{"end_time_s", "s", "simulated time", &P::end_time_s},
-      parameter<P>{"particles_per_side", "-", "particles per side at resolution 1", &P::particles_per_side},
+      parameter<P>{"particles_per_side", "-", "particles per side at resolution 1", &P::particles_per_side, 2},
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
   };
@@ -97,8 +97,9 @@ struct block_forging {
     return pr;
   }
 
-  // Key measures: tool gap, body width, largest penetration so far (mm) and the reaction of the
-  // top tool per metre of depth, averaged over the last output interval.
+  // Key measures at the solver's current time: tool gap (the block's height), body width,
+  // largest penetration so far (mm) and the reaction of the top tool per metre of depth,
+  // averaged over the last output interval.
   template <class Solver>
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
                                                              const std::vector<vec2>& tool_force) {
@@ -108,10 +109,10 @@ struct block_forging {
       lo = std::min(lo, xi[0]);
       hi = std::max(hi, xi[0]);
     }
-    return {{"final_height_mm", gap(p, s.time()) * 1e3},
-            {"final_width_mm", (hi - lo) * 1e3},
+    return {{"height_mm", gap(p, s.time()) * 1e3},
+            {"width_mm", (hi - lo) * 1e3},
             {"max_penetration_mm", s.max_penetration() * 1e3},
-            {"final_tool_force_N_per_m", tool_force.size() > 1 ? std::abs(tool_force[1][1]) : 0.0}};
+            {"tool_force_N_per_m", tool_force.size() > 1 ? std::abs(tool_force[1][1]) : 0.0}};
   }
 };
 

@@ -33,8 +33,8 @@ struct taylor_bar_parameters {
   double hardening_modulus_Pa = 100e6;
   double friction = 0.0;
   double end_time_s = 80e-6;
-  double radial_particles = 21;
-  double axial_particles = 51;
+  int radial_particles = 21;
+  int axial_particles = 51;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e11;
 
@@ -50,8 +50,8 @@ struct taylor_bar_parameters {
       parameter<P>{"hardening_modulus_Pa", "Pa", "linear hardening modulus H", &P::hardening_modulus_Pa},
       parameter<P>{"friction", "-", "Coulomb coefficient at the wall", &P::friction},
       parameter<P>{"end_time_s", "s", "simulated time", &P::end_time_s},
-      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles},
-      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles},
+      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles, 2},
+      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles, 2},
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
   };
@@ -93,8 +93,9 @@ struct taylor_bar {
     return pr;
   }
 
-  // Key measures (mm): the largest radius of the impact face (particles that started on it),
-  // the height (largest z) and the largest equivalent plastic strain.
+  // Key measures at the solver's current time (mm): the largest radius of the impact face
+  // (particles that started on it), the height (largest z) and the largest equivalent plastic
+  // strain.
   template <class Solver>
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
                                                              const std::vector<vec2>& /*tool_force*/) {
@@ -106,8 +107,8 @@ struct taylor_bar {
       height = std::max(height, x[I][1]);
     }
     for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
-    return {{"final_radius_mm", radius * 1e3},
-            {"final_height_mm", height * 1e3},
+    return {{"radius_mm", radius * 1e3},
+            {"height_mm", height * 1e3},
             {"max_equivalent_plastic_strain", eps_p}};
   }
 };

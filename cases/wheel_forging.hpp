@@ -35,14 +35,14 @@ struct wheel_forging_parameters {
   double flow_coefficient_Pa = 576.79e6;
   double flow_offset = 0.01658;
   double flow_exponent = 0.3593;
-  double radial_particles = 31;
-  double axial_particles = 30;
+  int radial_particles = 31;
+  int axial_particles = 30;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e11;
   // 1: every particle is a contact slave, not only the boundary ones. The punch's convex
   // corners (r = 12 and 24 mm) otherwise slip between two surface particles and drag the
   // particles behind them into the punch (about 1 mm deep by the end of the stroke).
-  double all_particles_slaves = 1.0;
+  bool all_particles_slaves = true;
   // Deepest penetration a tool face still acts on. The default of rigid_tool (half the
   // shortest segment: 18 mm for the die) would make every particle within 18 mm of the floor a
   // candidate at every step; a few particle spacings is plenty.
@@ -61,8 +61,8 @@ struct wheel_forging_parameters {
       parameter<P>{"flow_coefficient_Pa", "Pa", "K in sigma_y = K (eps0 + eps_p)^n", &P::flow_coefficient_Pa},
       parameter<P>{"flow_offset", "-", "eps0 in the flow law", &P::flow_offset},
       parameter<P>{"flow_exponent", "-", "n in the flow law", &P::flow_exponent},
-      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles},
-      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles},
+      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles, 2},
+      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles, 2},
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
       parameter<P>{"all_particles_slaves", "0/1", "1: every particle is checked against the tools", &P::all_particles_slaves},
@@ -110,13 +110,14 @@ struct wheel_forging {
         .contact = make_contact<Contact>(std::move(tools), p.friction, p.penalty_stiffness_N_m),
         .initial_velocity = {},
     };
-    if (p.all_particles_slaves != 0.0)
+    if (p.all_particles_slaves)
       for (index_t I = 0; I < pr.particles.size(); ++I) pr.slave_particles.push_back(I);
     return pr;
   }
 
-  // Key measures: penetration (mm), relative change of the deformed volume sum_q J_q w_q,
-  // heights reached in the hub (r < 10 mm) and rim (r > 26 mm) recesses, punch force (N).
+  // Key measures at the solver's current time: penetration (mm), relative change of the
+  // deformed volume sum_q J_q w_q, heights reached in the hub (r < 10 mm) and rim (r > 26 mm)
+  // recesses, punch force (N, averaged over the last output interval).
   template <class Solver>
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
                                                              const std::vector<vec2>& tool_force) {
@@ -136,7 +137,7 @@ struct wheel_forging {
             {"volume_change", v / v0 - 1.0},
             {"hub_height_mm", hub * 1e3},
             {"rim_height_mm", rim * 1e3},
-            {"final_punch_force_N", tool_force.empty() ? 0.0 : std::abs(tool_force[0][1])}};
+            {"punch_force_N", tool_force.empty() ? 0.0 : std::abs(tool_force[0][1])}};
   }
 };
 

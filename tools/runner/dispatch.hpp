@@ -1,10 +1,11 @@
 #pragma once
 // The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --contact E`:
-// a table, built with Boost.Hana from the policy lists, from the option strings to one
-// compiled configuration type per combination. The case fixes geometry and material; Coulomb
-// friction (coefficient 0 is frictionless) serves every case. Only the discrete-model builder
-// depends on kernel, correction and quadrature, so the table's 36 entries per case share
-// three instantiations of the time-stepping loop (one per enforcement).
+// a table, built with Boost.Hana from the policy lists the command line offers (methods.hpp),
+// from the policies' names to one compiled configuration type per combination. The case fixes
+// geometry and material; Coulomb friction (coefficient 0 is frictionless) serves every case.
+// Only the discrete-model builder depends on kernel, correction and quadrature, so the table's
+// 36 entries per case share three instantiations of the time-stepping loop (one per
+// enforcement).
 
 #include <boost/hana.hpp>
 #include <map>
@@ -17,17 +18,14 @@
 #include <rkpm/solver/dynamics.hpp>
 #include <rkpm/solver/policies.hpp>
 
+#include "case_list.hpp"
 #include "cases/parameters.hpp"
+#include "methods.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
 #include "simulate.hpp"
 
 namespace rkpm::runner {
-
-namespace hana = boost::hana;
-
-inline constexpr auto enforcements =
-    hana::tuple_t<contact::enforcement::paper, contact::enforcement::effective_mass, contact::enforcement::penalty>;
 
 template <class Case, class Config>
 run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
@@ -44,7 +42,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
                                                                            options.max_moment_condition);
     return std::make_unique<solver_type>(std::move(model), std::move(prob), options);
   };
-  return simulate<Case, solver_type>(r, p, make);
+  return simulate<Case, Config>(r, p, make);
 }
 
 template <class Case>
@@ -54,8 +52,7 @@ using run_function = run_outcome (*)(const run_request&, const typename Case::pa
 template <class Case>
 std::map<std::string, run_function<Case>> dispatch_table() {
   std::map<std::string, run_function<Case>> table;
-  auto combos = hana::cartesian_product(
-      hana::make_tuple(policies::kernels, policies::corrections, policies::quadratures, enforcements));
+  auto combos = hana::cartesian_product(hana::make_tuple(kernels, corrections, quadratures, enforcements));
   hana::for_each(combos, [&](auto combo) {
     using K = typename decltype(+combo[hana::size_c<0>])::type;
     using C = typename decltype(+combo[hana::size_c<1>])::type;
@@ -68,7 +65,8 @@ std::map<std::string, run_function<Case>> dispatch_table() {
   return table;
 }
 
-// Runs the case named by the request (parameters from --set), or prints its --help.
+// Runs the case named by the request, with its parameters from --set and --end-time (the
+// parser has checked them); declared in case_list.hpp, instantiated in run_CASE.cpp.
 template <class Case>
 run_outcome run_case(const run_request& r) {
   typename Case::parameters p;
@@ -81,19 +79,10 @@ run_outcome run_case(const run_request& r) {
     else
       p.stroke_m = *r.end_time * p.tool_velocity_m_s;  // wheel forging: the stroke reached then
   }
-  if (r.help) {
-    fmt::print("{}: {}\nparameters (--set NAME=VALUE, SI units):\n{}", Case::name, Case::description,
-               cases::describe_parameters(p));
-    return {};
-  }
   const auto table = dispatch_table<Case>();
   const auto it = table.find(r.method_key());
   if (it == table.end()) fail("no compiled configuration for '{}'", r.method_key());
   return it->second(r, p);
 }
-
-run_outcome run_taylor_bar(const run_request& r);
-run_outcome run_block_forging(const run_request& r);
-run_outcome run_wheel_forging(const run_request& r);
 
 }  // namespace rkpm::runner

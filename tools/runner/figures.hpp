@@ -1,22 +1,22 @@
 #pragma once
-// The PNG figures of each case (gnuplot), from CSV files the run writes:
-//   taylor_bar     fig4_shape.png (final deformed section), fig5_radius.png, fig6_height.png
+// The PNG figures of each case, drawn by gnuplot from the run's own arrays (io/gnuplot.hpp):
+//   taylor_bar     fig4_shape.png (initial and final section), fig5_radius.png, fig6_height.png
 //                  (the paper's figures 4, 5 and 6)
-//   block_forging  shapes.png (0, 40 and 60% compression), tool_force.png (force vs stroke)
+//   block_forging  shapes.png (0, 20, 40 and 60% compression), tool_force.png (force vs stroke)
 //   wheel_forging  shape.png (final shape with punch and die), punch_force.png
-// figure_recorder<Case>::observe writes shape_LABEL.csv when the run passes each shape time;
-// plot() draws the figures after the run.
+// figure_recorder<Case>::observe keeps the deformed cells when the run passes each shape time
+// (and writes them to shape_LABEL.csv for the user's own plots); plot() draws the figures after
+// the run from those shapes and the history the run recorded.
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include <rkpm/io/csv.hpp>
 #include <rkpm/io/gnuplot.hpp>
 
 #include "cases/block_forging.hpp"
@@ -24,6 +24,24 @@
 #include "cases/wheel_forging.hpp"
 
 namespace rkpm::runner {
+
+// The rows of history.csv, kept in memory for the figures.
+struct history_table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+
+  // (column a * scale_a, column b * scale_b) for every row; empty if a column is missing.
+  std::vector<std::pair<double, double>> series(const std::string& a, double scale_a, const std::string& b,
+                                                double scale_b) const {
+    const auto ia = std::find(columns.begin(), columns.end(), a) - columns.begin();
+    const auto ib = std::find(columns.begin(), columns.end(), b) - columns.begin();
+    std::vector<std::pair<double, double>> out;
+    if (ia == static_cast<std::ptrdiff_t>(columns.size()) || ib == static_cast<std::ptrdiff_t>(columns.size()))
+      return out;
+    for (const auto& r : rows) out.emplace_back(r[ia] * scale_a, r[ib] * scale_b);
+    return out;
+  }
+};
 
 struct shape_time {
   std::string label;
@@ -54,145 +72,147 @@ class figure_recorder {
   void observe(const Solver& s) {
     const bool last = s.time() >= s.options().end_time * (1.0 - 1e-12);
     while (next_ < times_.size() && (s.time() >= times_[next_].time * (1.0 - 1e-9) || last)) {
-      write_shape(s, times_[next_].label);
-      if (last && times_[next_].time > s.time() * (1.0 + 1e-9)) {
-        ++next_;
-        continue;
-      }
-      written_.push_back(times_[next_].label);
+      // A shape time beyond a run that stopped early is not drawn.
+      if (!(last && times_[next_].time > s.time() * (1.0 + 1e-9))) record_shape(s, times_[next_].label);
       ++next_;
     }
   }
 
-  void plot() const {
+  void plot(const history_table& history) const {
     if constexpr (std::is_same_v<Case, cases::taylor_bar>) {
-      shapes_png("fig4_shape.png", "Taylor bar: initial and final section (r, z)", {"initial", "final"}, "", true);
-      history_png("fig5_radius.png", "Taylor bar: radius of the impact face", "time (us)", "1*1e6", "radius (mm)",
-                  "final_radius_mm");
-      history_png("fig6_height.png", "Taylor bar: height", "time (us)", "1*1e6", "height (mm)", "final_height_mm");
+      shapes_png("fig4_shape.png", "Taylor bar: initial and final section (r, z)", "", true);
+      history_png("fig5_radius.png", "Taylor bar: radius of the impact face", "time (us)", "radius (mm)",
+                  history.series("time_s", 1e6, "radius_mm", 1.0));
+      history_png("fig6_height.png", "Taylor bar: height", "time (us)", "height (mm)",
+                  history.series("time_s", 1e6, "height_mm", 1.0));
     } else if constexpr (std::is_same_v<Case, cases::block_forging>) {
-      shapes_png("shapes.png", "block forging: section at 0, 20, 40 and 60% compression", written_, "", false,
-                 "% compression");
-      history_png("tool_force.png", "block forging: top tool force per metre", "stroke (mm)",
-                  fmt::format("1*{}", 2.0 * params_.tool_velocity_m_s * 1e3), "force (MN/m)",
-                  "final_tool_force_N_per_m", 1e-6);
+      shapes_png("shapes.png", "block forging: section at 0, 20, 40 and 60% compression", "% compression", false);
+      history_png("tool_force.png", "block forging: top tool force per metre", "stroke (mm)", "force (MN/m)",
+                  history.series("time_s", 2.0 * params_.tool_velocity_m_s * 1e3, "tool_force_N_per_m", 1e-6));
     } else {
-      shapes_png("shape.png", "wheel forging: final section with punch and die", {"final"}, tools_at_end(), true);
-      history_png("punch_force.png", "wheel forging: punch force", "stroke (mm)",
-                  fmt::format("1*{}", params_.tool_velocity_m_s * 1e3), "force (kN)", "final_punch_force_N", 1e-3);
+      shapes_png("shape.png", "wheel forging: final section with punch and die", "", true);
+      history_png("punch_force.png", "wheel forging: punch force", "stroke (mm)", "force (kN)",
+                  history.series("time_s", params_.tool_velocity_m_s * 1e3, "punch_force_N", 1e-3));
     }
   }
 
  private:
-  // The deformed background cells (their nodes are the particles in the paper's cases),
-  // one closed outline per cell separated by blank lines, which gnuplot draws as a mesh.
+  using polyline = std::vector<std::pair<double, double>>;  // (x, y) in mm
+
+  struct shape {
+    std::string label;
+    std::vector<polyline> cells;  // one closed outline per background cell, or
+    polyline points;              // the particles, when the cells are not on the particles
+  };
+
+  // The deformed background cells (their nodes are the particles in the paper's cases).
   template <class Solver>
-  void write_shape(const Solver& s, const std::string& label) const {
+  void record_shape(const Solver& s, const std::string& label) {
     const auto x = s.particle_positions();
     const auto& mesh = s.model().mesh;
-    std::ofstream out(dir_ / ("shape_" + label + ".csv"));
-    out << "x_mm,y_mm\n";
+    shape sh{label, {}, {}};
     if (mesh.node.size() != x.size()) {
-      for (const vec2& p : x) out << fmt::format("{},{}\n", p[0] * 1e3, p[1] * 1e3);
-      return;
+      for (const vec2& p : x) sh.points.emplace_back(p[0] * 1e3, p[1] * 1e3);
+    } else {
+      for (const auto& c : mesh.cell) {
+        polyline outline;
+        for (int k = 0; k <= 4; ++k) outline.emplace_back(x[c[k % 4]][0] * 1e3, x[c[k % 4]][1] * 1e3);
+        sh.cells.push_back(std::move(outline));
+      }
     }
-    for (const auto& c : mesh.cell) {
-      for (int k = 0; k <= 4; ++k) out << fmt::format("{},{}\n", x[c[k % 4]][0] * 1e3, x[c[k % 4]][1] * 1e3);
+    write_shape_csv(sh);
+    shapes_.push_back(std::move(sh));
+  }
+
+  // shape_LABEL.csv: x_mm,y_mm, one outline per cell separated by blank lines.
+  void write_shape_csv(const shape& sh) const {
+    std::ofstream out(dir_ / ("shape_" + sh.label + ".csv"));
+    out << "x_mm,y_mm\n";
+    for (const auto& [x, y] : sh.points) out << fmt::format("{},{}\n", x, y);
+    for (const auto& outline : sh.cells) {
+      for (const auto& [x, y] : outline) out << fmt::format("{},{}\n", x, y);
       out << "\n";
     }
   }
 
-  // Gnuplot commands that draw the punch and die of the wheel case at the end of the stroke.
-  std::string tools_at_end() const {
+  // The wheel case's punch (at the end of the stroke) and die, in mm.
+  static std::vector<polyline> tools_at_end(const typename Case::parameters& p) {
     if constexpr (std::is_same_v<Case, cases::wheel_forging>) {
-      std::string s;
-      const vec2 shift(0.0, -params_.stroke_m);
-      auto poly = [&](const std::vector<vec2>& pts, const vec2& d, const char* name) {
-        s += fmt::format("${} << EOD\n", name);
-        for (const vec2& p : pts) s += fmt::format("{},{}\n", (p[0] + d[0]) * 1e3, (p[1] + d[1]) * 1e3);  // comma: the plots read CSV
-        s += "EOD\n";
+      auto mm = [](const std::vector<vec2>& pts, const vec2& d) {
+        polyline out;
+        for (const vec2& q : pts) out.emplace_back((q[0] + d[0]) * 1e3, (q[1] + d[1]) * 1e3);
+        return out;
       };
-      poly(Case::punch_outline(), shift, "punch");
-      poly(Case::die_outline(), vec2::Zero(), "die");
-      return s;
+      return {mm(Case::punch_outline(), vec2(0.0, -p.stroke_m)), mm(Case::die_outline(), vec2::Zero())};
     } else {
-      return "";
+      return {};
     }
   }
 
-  // One panel per shape (side by side when `columns`, else stacked), all on the same axes.
-  void shapes_png(const std::string& png, const std::string& title, const std::vector<std::string>& labels,
-                  const std::string& extra, bool columns, const std::string& unit_suffix = "") const {
+  // One panel per recorded shape (side by side when `columns`, else stacked), all on the same
+  // axes; the wheel's panels also show the tools.
+  void shapes_png(const std::string& png, const std::string& title, const std::string& unit_suffix,
+                  bool columns) const {
     static constexpr const char* colors[] = {"dark-violet", "web-blue", "dark-orange", "forest-green", "gray40"};
-    std::vector<std::string> panels;
+    if (shapes_.empty()) return;
+    const auto tools = tools_at_end(params_);
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (const auto& l : labels) {
-      const auto file = dir_ / ("shape_" + l + ".csv");
-      if (!std::filesystem::exists(file)) continue;
-      std::ifstream in(file);
-      std::string line;
-      std::getline(in, line);
-      double x, y;
-      char comma;
-      while (std::getline(in, line)) {
-        std::stringstream ss(line);
-        if (!(ss >> x >> comma >> y)) continue;
-        lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x), lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+    auto extend = [&](const polyline& line) {
+      for (const auto& [x, y] : line) {
+        lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
+        lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
       }
-      std::string plot = fmt::format("plot {} skip 1 using 1:2 with lines lw 0.8 lc rgb '{}' notitle",
-                                     io::detail::gnuplot_quote(file.string()), colors[panels.size() % 5]);
-      if (!extra.empty()) plot += ", $punch with lines lw 3 lc rgb 'black' notitle, $die with lines lw 3 lc rgb 'gray30' notitle";
-      panels.push_back(fmt::format("set title {}\n{}\n", io::detail::gnuplot_quote(l + unit_suffix), plot));
+    };
+    for (const auto& sh : shapes_) {
+      extend(sh.points);
+      for (const auto& c : sh.cells) extend(c);
     }
-    if (panels.empty()) return;
     if constexpr (std::is_same_v<Case, cases::wheel_forging>) {  // show the die wall and the punch
       hi[0] = std::max(hi[0], 36.0);
       hi[1] = std::max(hi[1], (38e-3 - params_.stroke_m) * 1e3 + 4.0);
       lo[0] = std::min(lo[0], -1.0);
     }
     const double pad = 0.04 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
-    std::string script = extra + fmt::format(
-        "set datafile separator ','\nset size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset grid\n"
-        "set xrange [{}:{}]\nset yrange [{}:{}]\nset multiplot layout {},{} title {}\n",
-        lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad, columns ? 1 : panels.size(), columns ? panels.size() : 1,
-        io::detail::gnuplot_quote(title));
-    for (const auto& p : panels) script += p;
-    script += "unset multiplot\n";
-    const int n = static_cast<int>(panels.size());
+    const int n = static_cast<int>(shapes_.size());
     const int width = n == 1 ? 900 : columns ? 450 * n : 900, height = n == 1 ? 700 : columns ? 900 : 330 * n;
-    io::gnuplot_png(dir_ / png, script, {.width = width, .height = height});
+    io::gnuplot_figure fig(dir_ / png, {.width = width, .height = height});
+    fig << fmt::format("set size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset grid\n"
+                       "set xrange [{}:{}]\nset yrange [{}:{}]\nset multiplot layout {},{} title {}\n",
+                       lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad, columns ? 1 : n, columns ? n : 1,
+                       io::gnuplot_quote(title));
+    for (std::size_t k = 0; k < shapes_.size(); ++k) {
+      const shape& sh = shapes_[k];
+      fig << fmt::format("set title {}\nplot '-' using 1:2 with {} lc rgb '{}' notitle",
+                         io::gnuplot_quote(sh.label + unit_suffix), sh.cells.empty() ? "points pt 7 ps 0.3" : "lines lw 0.8",
+                         colors[k % 5]);
+      for (std::size_t t = 0; t < tools.size(); ++t)
+        fig << fmt::format(", '-' using 1:2 with lines lw 3 lc rgb '{}' notitle", t == 0 ? "black" : "gray30");
+      fig << "\n";
+      if (sh.cells.empty())
+        fig.send1d(sh.points);
+      else
+        fig.send2d(sh.cells);
+      for (const auto& tool : tools) fig.send1d(tool);
+    }
+    fig << "unset multiplot\n";
+    fig.render();
   }
 
   void history_png(const std::string& png, const std::string& title, const std::string& xlabel,
-                   const std::string& xscale, const std::string& ylabel, const std::string& column,
-                   double yscale = 1.0) const {
-    const auto file = (dir_ / "history.csv").string();
-    const int index = column_index(file, column);
-    if (index < 0) return;
-    const std::string script = fmt::format(
-        "set datafile separator ','\nset title {}\nset xlabel {}\nset ylabel {}\nset grid\nset key off\n"
-        "plot {} skip 1 using ($1*{}):(${}*{}) with lines lw 2\n",
-        io::detail::gnuplot_quote(title), io::detail::gnuplot_quote(xlabel), io::detail::gnuplot_quote(ylabel),
-        io::detail::gnuplot_quote(file), xscale.substr(2), index, yscale);
-    io::gnuplot_png(dir_ / png, script);
-  }
-
-  // 1-based column of `name` in the header of a CSV file, or -1.
-  static int column_index(const std::string& file, const std::string& name) {
-    std::ifstream in(file);
-    std::string header;
-    std::getline(in, header);
-    std::stringstream ss(header);
-    std::string cell;
-    for (int i = 1; std::getline(ss, cell, ','); ++i)
-      if (cell == name) return i;
-    return -1;
+                   const std::string& ylabel, const std::vector<std::pair<double, double>>& series) const {
+    if (series.empty()) return;
+    io::gnuplot_figure fig(dir_ / png);
+    fig << fmt::format("set title {}\nset xlabel {}\nset ylabel {}\nset grid\nset key off\n"
+                       "plot '-' using 1:2 with lines lw 2\n",
+                       io::gnuplot_quote(title), io::gnuplot_quote(xlabel), io::gnuplot_quote(ylabel));
+    fig.send1d(series);
+    fig.render();
   }
 
   std::filesystem::path dir_;
   typename Case::parameters params_;
   std::vector<shape_time> times_;
-  std::vector<std::string> written_;
+  std::vector<shape> shapes_;
   std::size_t next_ = 0;
 };
 

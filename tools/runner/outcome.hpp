@@ -3,14 +3,14 @@
 
 #include <string>
 
-#include <rkpm/io/json.hpp>
+#include "json.hpp"
 
 namespace rkpm::runner {
 
 struct run_outcome {
   bool completed = false;
   std::string directory;
-  io::json summary;
+  json summary;  // the content of summary.json
 };
 
 }  // namespace rkpm::runner

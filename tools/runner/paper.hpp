@@ -1,9 +1,12 @@
 #pragma once
-// `rkpm_run paper`: all three cases with Q2 and Q4, and a markdown report beside the paper's
-// Table 3 (Taylor bar radius and height) and Table 5 (CPU-time reduction of Q2 against Q4).
+// `rkpm_run paper`: the chosen cases (default all) with Q2 and Q4, and a markdown report beside
+// the paper's Table 3 (Taylor bar radius and height) and Table 5 (CPU-time reduction of Q2
+// against Q4).
+
+#include "request.hpp"
 
 namespace rkpm::runner {
 
-int run_paper(int argc, char** argv);
+int run_paper(const paper_request& o);
 
 }  // namespace rkpm::runner

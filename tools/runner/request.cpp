@@ -1,108 +1,149 @@
+// The command line of rkpm_run through CLI11: one subcommand per case (from case_list.hpp) and
+// `paper`. Choices come from the policy lists (methods.hpp), ranges and numbers are checked by
+// CLI11, `--set NAME=VALUE` by the case's own parameter list; every error is one line.
 #include "request.hpp"
 
 #include <charconv>
 #include <cmath>
-#include <string_view>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <rkpm/core/error.hpp>
+
+#include "case_list.hpp"
 
 namespace rkpm::runner {
 namespace {
 
-bool one_of(const std::string& v, std::initializer_list<std::string_view> allowed) {
-  for (auto a : allowed)
-    if (v == a) return true;
-  return false;
+// A positive, finite number of seconds.
+const CLI::Validator positive_seconds(
+    [](std::string& text) -> std::string {
+      double t = 0.0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), t);
+      if (ec != std::errc() || end != text.data() + text.size() || !(t > 0.0) || !std::isfinite(t))
+        return fmt::format("must be a positive number of seconds, got '{}'", text);
+      return {};
+    },
+    "> 0");
+
+// NAME=VALUE where NAME is a parameter of Case and VALUE suits it.
+template <class Case>
+CLI::Validator parameter_setting() {
+  return CLI::Validator(
+      [](std::string& setting) -> std::string {
+        const auto eq = setting.find('=');
+        if (eq == std::string::npos || eq == 0) return fmt::format("expects NAME=VALUE, got '{}'", setting);
+        typename Case::parameters p;
+        try {
+          cases::set_parameter(p, std::string_view(setting).substr(0, eq), std::string_view(setting).substr(eq + 1));
+        } catch (const rkpm::error& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "NAME=VALUE");
 }
 
-template <class T>
-T parse_number(std::string_view option, std::string_view text) {
-  T value{};
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size())
-    fail("{} expects a number, got '{}'", option, text);
-  return value;
+// The options of `rkpm_run CASE`, bound to `r`.
+template <class Case>
+void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
+  CLI::App* sub = app.add_subcommand(std::string(Case::name), std::string(Case::description));
+  sub->add_option("--quadrature", r.quadrature, "background integration rule")
+      ->check(CLI::IsMember(policy_names(quadratures)))
+      ->capture_default_str();
+  sub->add_option("--kernel", r.kernel, "kernel")->check(CLI::IsMember(policy_names(kernels)))->capture_default_str();
+  sub->add_option("--correction", r.correction, "correction order")
+      ->check(CLI::IsMember(policy_names(corrections)))
+      ->capture_default_str();
+  sub->add_option("--contact", r.contact, "contact enforcement")
+      ->check(CLI::IsMember(policy_names(enforcements)))
+      ->capture_default_str();
+  sub->add_option("--resolution", r.resolution, "K times the particles per direction (K - 1 more per gap)")
+      ->check(CLI::Range(1, 16))
+      ->capture_default_str();
+  sub->add_option_function<std::string>(
+         "--end-time", [&r](const std::string& t) { r.end_time = std::stod(t); },
+         "simulated time (default: the case's; the wheel's stroke follows it)")
+      ->type_name("SECONDS")
+      ->check(positive_seconds);
+  sub->add_option("--threads", r.threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  sub->add_option("--out", r.out_dir, "output directory (default results/CASE-QUADRATURE)");
+  sub->add_option("--set", sets, "override a case parameter, SI units (`CASE --help` lists them); repeatable")
+      ->check(parameter_setting<Case>())
+      ->allow_extra_args(false);
+  sub->add_flag_callback("--no-plots", [&r] { r.plots = false; }, "skip the gnuplot figures");
+  sub->add_flag("--quiet", r.quiet, "no progress line");
+  sub->footer([] {
+    return fmt::format("parameters of {} (--set NAME=VALUE; name, default, unit, meaning):\n{}", Case::name,
+                       cases::describe_parameters(typename Case::parameters{}));
+  });
+  sub->callback([&r, sub] { r.case_name = sub->get_name(); });
+}
+
+void add_paper(CLI::App& app, paper_request& p) {
+  CLI::App* sub = app.add_subcommand("paper", "every case with Q2 and Q4, and a report beside the paper's tables");
+  sub->add_option("--resolution", p.resolution, "K times the particles per direction")
+      ->check(CLI::Range(1, 16))
+      ->capture_default_str();
+  sub->add_option("--threads", p.threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  sub->add_option("--out", p.out, "output directory")->capture_default_str();
+  sub->add_option("--cases", p.cases, "comma-separated cases to run (default: all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(case_names()));
+  sub->add_flag_callback("--no-plots", [&p] { p.plots = false; }, "skip the gnuplot figures");
 }
 
 }  // namespace
 
-std::string usage() {
-  return "usage: rkpm_run CASE [options]      CASE: taylor_bar | block_forging | wheel_forging\n"
-         "       rkpm_run paper [--resolution K] [--threads N] [--out DIR]\n"
-         "options:\n"
-         "  --quadrature q2|q4|q9          background integration rule (default q2)\n"
-         "  --kernel cubic|quartic         kernel (default cubic)\n"
-         "  --correction linear|quadratic  correction order (default linear)\n"
-         "  --contact paper|effective_mass|penalty   contact enforcement (default paper)\n"
-         "  --resolution K                 refine the particle grid K times per direction (default 1)\n"
-         "  --end-time SECONDS             simulated time (default: the case's)\n"
-         "  --threads N                    OpenMP threads (default: all)\n"
-         "  --out DIR                      output directory (default results/CASE-QUADRATURE)\n"
-         "  --set NAME=VALUE               override a case parameter (see CASE --help)\n"
-         "  --no-plots                     skip the gnuplot figures\n"
-         "  --quiet                        no progress line\n"
-         "  --help                         this text, and with a CASE its parameters\n";
-}
+command_line parse_command_line(int argc, char** argv) {
+  command_line cl;
+  std::vector<std::string> sets;
+  CLI::App app("rkpm_run: the paper's cases with the policies chosen on the command line", "rkpm_run");
+  app.require_subcommand(1);
+  hana::for_each(case_types, [&](auto t) { add_case<typename decltype(t)::type>(app, cl.run, sets); });
+  add_paper(app, cl.paper);
+  // The options every case takes, also in the top-level help.
+  const CLI::App* first_case = app.get_subcommand(std::string(decltype(+hana::front(case_types))::type::name));
+  app.footer([first_case] {
+    return "options of every CASE (`rkpm_run CASE --help` adds the case's parameters):\n" +
+           CLI::Formatter().make_groups(first_case, CLI::AppFormatMode::Sub);
+  });
 
-run_request parse_run_request(int argc, char** argv, int first) {
-  run_request r;
-  if (first >= argc) fail("no case given; {}", "the cases are taylor_bar, block_forging, wheel_forging");
-  r.case_name = argv[first];
-  if (r.case_name == "--help" || r.case_name == "-h") {
-    r.help = true;
-    r.case_name.clear();
-    return r;
+  if (argc < 2) {
+    fmt::print("{}", app.help());
+    cl.exit_code = 2;
+    return cl;
   }
-  if (!one_of(r.case_name, {"taylor_bar", "block_forging", "wheel_forging"}))
-    fail("unknown case '{}'; the cases are taylor_bar, block_forging, wheel_forging", r.case_name);
-  for (int i = first + 1; i < argc; ++i) {
-    const std::string opt = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) fail("{} needs a value", opt);
-      return argv[++i];
-    };
-    if (opt == "--help" || opt == "-h") {
-      r.help = true;
-    } else if (opt == "--quadrature") {
-      r.quadrature = value();
-      if (!one_of(r.quadrature, {"q2", "q4", "q9"})) fail("--quadrature must be q2, q4 or q9, got '{}'", r.quadrature);
-    } else if (opt == "--kernel") {
-      r.kernel = value();
-      if (!one_of(r.kernel, {"cubic", "quartic"})) fail("--kernel must be cubic or quartic, got '{}'", r.kernel);
-    } else if (opt == "--correction") {
-      r.correction = value();
-      if (!one_of(r.correction, {"linear", "quadratic"}))
-        fail("--correction must be linear or quadratic, got '{}'", r.correction);
-    } else if (opt == "--contact") {
-      r.contact = value();
-      if (!one_of(r.contact, {"paper", "effective_mass", "penalty"}))
-        fail("--contact must be paper, effective_mass or penalty, got '{}'", r.contact);
-    } else if (opt == "--resolution") {
-      r.resolution = parse_number<int>(opt, value());
-      if (r.resolution < 1 || r.resolution > 16) fail("--resolution must be a whole number from 1 to 16, got {}", r.resolution);
-    } else if (opt == "--end-time") {
-      const double t = parse_number<double>(opt, value());
-      if (!(t > 0.0) || !std::isfinite(t)) fail("--end-time must be positive (seconds), got {}", t);
-      r.end_time = t;
-    } else if (opt == "--threads") {
-      r.threads = parse_number<int>(opt, value());
-      if (r.threads < 1 || r.threads > 1024) fail("--threads must be at least 1, got {}", r.threads);
-    } else if (opt == "--out") {
-      r.out_dir = value();
-    } else if (opt == "--set") {
-      const std::string kv = value();
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) fail("--set expects NAME=VALUE, got '{}'", kv);
-      r.sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-    } else if (opt == "--no-plots") {
-      r.plots = false;
-    } else if (opt == "--quiet") {
-      r.quiet = true;
-    } else {
-      fail("unknown option '{}' (see --help)", opt);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    fmt::print("{}", app.help());  // the chosen subcommand's help, if one was given
+    return cl;
+  } catch (const CLI::ParseError& e) {
+    if (app.get_subcommands().empty() && !app.remaining().empty()) {
+      const std::string first = app.remaining().front();
+      if (first.starts_with("-"))
+        fail("give the case first: rkpm_run CASE [options], where CASE is {} or paper", fmt::join(case_names(), ", "));
+      fail("unknown case '{}'; the cases are {} (or paper for all of them)", first, fmt::join(case_names(), ", "));
     }
+    std::string message = e.what();
+    for (char& c : message)
+      if (c == '\n') c = ' ';
+    fail("{} (see --help)", message);
   }
-  return r;
+  if (app.got_subcommand("paper")) {
+    cl.what = command_line::action::paper;
+    return cl;
+  }
+  cl.what = command_line::action::run;
+  for (const auto& s : sets) {
+    const auto eq = s.find('=');
+    cl.run.sets.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+  }
+  return cl;
 }
 
 }  // namespace rkpm::runner

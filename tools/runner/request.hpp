@@ -1,25 +1,28 @@
 #pragma once
-// run_request: the options of `rkpm_run CASE ...`, parsed and checked.
+// The command line of rkpm_run, parsed and checked by CLI11 (request.cpp):
+//   rkpm_run CASE [options]     one case (the cases are listed once, in case_list.hpp)
+//   rkpm_run paper [options]    all cases with Q2 and Q4, and the report (paper.cpp)
 
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "methods.hpp"
+
 namespace rkpm::runner {
 
 struct run_request {
   std::string case_name;
-  std::string quadrature = "q2";
-  std::string kernel = "cubic";
-  std::string correction = "linear";
-  std::string contact = "paper";
+  std::string quadrature{paper_quadrature::name};
+  std::string kernel{paper_kernel::name};
+  std::string correction{paper_correction::name};
+  std::string contact{paper_enforcement::name};
   int resolution = 1;
   std::optional<double> end_time;  // s; overrides the case's
   int threads = 0;                 // 0: OpenMP's default
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;
-  bool help = false;
   bool quiet = false;              // no progress line
   std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
 
@@ -28,9 +31,24 @@ struct run_request {
   std::string output_directory() const { return out_dir.empty() ? "results/" + case_name + "-" + quadrature : out_dir; }
 };
 
-// Parses argv[first..]; throws rkpm::error with a one-line message on bad input.
-run_request parse_run_request(int argc, char** argv, int first);
+struct paper_request {
+  int resolution = 1;
+  int threads = 0;  // 0: OpenMP's default
+  std::string out = "results/paper";
+  std::vector<std::string> cases;  // empty: every case
+  bool plots = true;
+};
 
-std::string usage();
+struct command_line {
+  enum class action { run, paper, exit };
+  action what = action::exit;
+  int exit_code = 0;  // for action::exit: help printed (0) or no arguments (2)
+  run_request run;
+  paper_request paper;
+};
+
+// Parses argv. Prints the help itself (--help, or the usage when there are no arguments);
+// throws rkpm::error with a one-line message on bad input, before anything runs.
+command_line parse_command_line(int argc, char** argv);
 
 }  // namespace rkpm::runner

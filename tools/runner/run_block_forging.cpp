@@ -3,5 +3,5 @@
 #include "dispatch.hpp"
 
 namespace rkpm::runner {
-run_outcome run_block_forging(const run_request& r) { return run_case<cases::block_forging>(r); }
+template run_outcome run_case<cases::block_forging>(const run_request& r);
 }  // namespace rkpm::runner

@@ -3,5 +3,5 @@
 #include "dispatch.hpp"
 
 namespace rkpm::runner {
-run_outcome run_taylor_bar(const run_request& r) { return run_case<cases::taylor_bar>(r); }
+template run_outcome run_case<cases::taylor_bar>(const run_request& r);
 }  // namespace rkpm::runner

@@ -3,5 +3,5 @@
 #include "dispatch.hpp"
 
 namespace rkpm::runner {
-run_outcome run_wheel_forging(const run_request& r) { return run_case<cases::wheel_forging>(r); }
+template run_outcome run_case<cases::wheel_forging>(const run_request& r);
 }  // namespace rkpm::runner

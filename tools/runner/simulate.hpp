@@ -3,7 +3,7 @@
 //   summary.json  policies, sizes, steps, time-step range, timings, energies, key results
 //   history.csv   time, the case's key measures, tool forces, energies (flushed per row)
 //   CASE.pvd + CASE_NNNNNN.vtu  particles with displacement, velocity, stress, eps_p, det F
-//   shape_*.csv and PNG figures (figures.hpp)
+//   shape_*.csv and PNG figures (figures.hpp, drawn from the shapes and history kept in memory)
 // A run that fails (NaN, inverted body) keeps what it wrote and records the error in
 // summary.json. The loop itself does no I/O between output times.
 
@@ -20,11 +20,11 @@
 #endif
 
 #include <rkpm/io/csv.hpp>
-#include <rkpm/io/json.hpp>
 #include <rkpm/io/progress.hpp>
 #include <rkpm/io/vtk.hpp>
 
 #include "figures.hpp"
+#include "json.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
 
@@ -52,7 +52,7 @@ io::point_data snapshot_fields(const Solver& s) {
   return data;
 }
 
-template <class Case, class Solver>
+template <class Case, class Config, class Solver>
 run_outcome simulate(const run_request& request, const typename Case::parameters& params,
                      const std::function<std::unique_ptr<Solver>()>& make_solver) {
   namespace fs = std::filesystem;
@@ -61,19 +61,20 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   const fs::path dir = outcome.directory;
   fs::create_directories(dir);
 
-  io::json& summary = outcome.summary;
-  summary = io::json::object();
+  json& summary = outcome.summary;
+  summary = json::object();
   summary["case"] = Case::name;
-  summary["kernel"] = request.kernel;
-  summary["correction"] = request.correction;
-  summary["quadrature"] = request.quadrature;
-  summary["geometry"] = Case::geometry_type::name;
-  summary["contact"] = request.contact;
+  summary["kernel"] = Config::kernel_type::name;
+  summary["correction"] = Config::correction_type::name;
+  summary["quadrature"] = Config::quadrature_type::name;
+  summary["geometry"] = Config::geometry_type::name;
+  summary["contact"] = Config::contact_type::enforcement_type::name;
   summary["resolution"] = request.resolution;
   summary["status"] = "setting up";
-  io::json& parameters = summary["parameters"];
-  parameters = io::json::object();
-  for (const auto& f : Case::parameters::fields) parameters[f.name] = params.*(f.member);
+  json& parameters = summary["parameters"];
+  parameters = json::object();
+  for (const auto& f : Case::parameters::fields)
+    cases::visit_value(f, params, [&](auto value) { parameters[std::string(f.name)] = value; });
 
   const auto t0 = std::chrono::steady_clock::now();
   std::unique_ptr<Solver> holder;
@@ -82,7 +83,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   } catch (const std::exception& e) {
     summary["status"] = "failed";
     summary["error"] = e.what();
-    io::write_json(dir / "summary.json", summary);
+    write_json(dir / "summary.json", summary);
     throw;
   }
   Solver& s = *holder;
@@ -102,6 +103,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   for (const char* c : {"kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"})
     columns.emplace_back(c);
   io::csv_writer history(dir / "history.csv", columns);
+  history_table table{columns, {}};  // the same rows, for the figures
   io::pvd_series vtk(dir / (std::string(Case::name) + ".pvd"));
   figure_recorder<Case> figures(dir, params);
 
@@ -130,6 +132,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
       const auto& e = s.energy();
       for (double v : {e.kinetic, e.internal, e.plastic, e.contact, e.external, e.balance_error()}) row.push_back(v);
       history.row(row);
+      table.rows.push_back(row);
       next_history += end_time / history_rows;
     }
     if (t >= next_snapshot || last) {
@@ -161,8 +164,8 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   summary["threads"] = active_threads();
   summary["wall_s"] = wall_s;
   summary["setup_s"] = setup_s;
-  io::json& energy = summary["energy"];
-  energy = io::json::object();
+  json& energy = summary["energy"];
+  energy = json::object();
   const auto& e = s.energy();
   energy["kinetic_J"] = e.kinetic;
   energy["internal_J"] = e.internal;
@@ -170,13 +173,13 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   energy["contact_J"] = e.contact;
   energy["external_J"] = e.external;
   energy["balance_error"] = e.balance_error();
-  io::json& results = summary["results"];
-  results = io::json::object();
+  json& results = summary["results"];  // the case's measures at the end of the run
+  results = json::object();
   for (const auto& [k, v] : measures) results[k] = v;
-  io::write_json(dir / "summary.json", summary);
+  write_json(dir / "summary.json", summary);
   if (request.plots) {
     try {
-      figures.plot();
+      figures.plot(table);
     } catch (const std::exception& ex) {
       fmt::print(stderr, "rkpm_run: figures skipped: {}\n", ex.what());
     }

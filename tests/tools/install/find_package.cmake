@@ -27,6 +27,23 @@ endfunction()
 step("install rkpm into ${prefix}"
      ${CMAKE_COMMAND} --install ${RKPM_BUILD_DIR} --prefix ${prefix} --component rkpm)
 
+# The library's target carries only what its headers need: no compiled Boost library (those
+# come with the optional component gnuplot, defined by rkpmConfig.cmake).
+file(GLOB_RECURSE rkpm_targets_files ${prefix}/*/rkpmTargets.cmake)
+if(NOT rkpm_targets_files)
+  message(FATAL_ERROR "find_package test: no rkpmTargets.cmake under ${prefix}")
+endif()
+foreach(f ${rkpm_targets_files})
+  file(READ ${f} rkpm_targets_text)
+  foreach(lib Boost::iostreams Boost::system Boost::filesystem)
+    string(FIND "${rkpm_targets_text}" "${lib}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "find_package test: the installed rkpm::rkpm links ${lib} (${f}); "
+                          "only rkpm::gnuplot may")
+    endif()
+  endforeach()
+endforeach()
+
 step("configure the consumer"
      ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${consumer_build} -G ${GENERATOR}
      -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
@@ -45,3 +62,4 @@ endif()
 
 step("build the consumer" ${CMAKE_COMMAND} --build ${consumer_build})
 step("run the consumer" ${consumer_build}/app)
+step("draw with the consumer's gnuplot component" ${consumer_build}/plot ${WORK_DIR}/consumer.png)

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks of the command-line runner rkpm_run (tools/runner), run by ctest (tests/tools/runner.cmake).
 
-    check_runner.py bad-options RKPM_RUN WORK_DIR  bad options: non-zero exit, one-line error, no output
+    check_runner.py bad-options RKPM_RUN WORK_DIR  bad options: non-zero exit, one-line error naming the fix, no output
     check_runner.py help RKPM_RUN                  `CASE --help` lists every case's parameters
     check_runner.py run RKPM_RUN OUT_DIR           a short Taylor bar run (the fixture of the next two)
     check_runner.py outputs OUT_DIR                summary.json keys and values, history.csv, .pvd, PNGs
@@ -40,8 +40,10 @@ def run(cmd, **kw):
 def bad_options(rkpm_run, work):
     out = os.path.join(work, "bad")
     shutil.rmtree(out, ignore_errors=True)
+    # (arguments, words the error must contain)
     cases = [
         ["nosuch_case"],
+        ["--quiet"],
         ["taylor_bar", "--frobnicate"],
         ["taylor_bar", "--quadrature", "q7"],
         ["taylor_bar", "--kernel", "gaussian"],
@@ -53,12 +55,29 @@ def bad_options(rkpm_run, work):
         ["taylor_bar", "--resolution", "two"],
         ["taylor_bar", "--end-time", "-1"],
         ["taylor_bar", "--end-time"],
+        ["taylor_bar", "--threads", "2x"],
+        ["taylor_bar", "--contact", "sticky"],
+        ["taylor_bar", "--set", "radial_particles=1"],
+        ["wheel_forging", "--set", "all_particles_slaves=0.5"],
+        ["paper", "--resolution", "2x"],
+        ["paper", "--threads", "0"],
+        ["paper", "--cases", "taylor_bar,nosuch_case"],
         ["block_forging", "--set", "end_time_s=1"],  # the tools would meet: the case rejects it
     ]
+    # Counts are whole numbers: a fraction is an error that names the parameter and the fix.
+    named = {
+        ("taylor_bar", "--set", "radial_particles=2.5"): ["radial_particles", "whole number", "radial_particles=3"],
+        ("block_forging", "--set", "particles_per_side=20.7"): ["particles_per_side", "whole number",
+                                                                "particles_per_side=21"],
+        ("wheel_forging", "--set", "axial_particles=1e3"): ["axial_particles", "whole number"],
+    }
+    cases += [list(k) for k in named]
     for args in cases:
         r = run([rkpm_run] + args + ["--out", out, "--no-plots", "--quiet"])
         err = r.stderr.rstrip("\n")
         label = " ".join(args)
+        for word in named.get(tuple(args), []):
+            check(word in err, f"'{label}': the error does not say {word!r}: {err!r}")
         check(r.returncode != 0, f"'{label}': exit status {r.returncode}, expected non-zero")
         check(err != "" and "\n" not in err, f"'{label}': expected a one-line error, got {r.stderr!r}")
         check(err.startswith("rkpm_run: "), f"'{label}': error does not start with 'rkpm_run: ': {err!r}")
@@ -69,7 +88,7 @@ def bad_options(rkpm_run, work):
     summary = os.path.join(out, "summary.json")
     if os.path.exists(summary):
         with open(summary) as f:
-            s = json.load(f)
+            s = strict_json(f)
         check(s.get("status") == "failed" and "error" in s, f"summary of a failed set-up: {s}")
         check(s.get("case") == "block_forging", f"only the set-up failure may write a summary, got {s.get('case')}")
 
@@ -109,13 +128,41 @@ def real_run(rkpm_run, out):
     check(r.returncode == 0, f"the short Taylor bar run failed with status {r.returncode}")
 
 
+def reject_constant(name):
+    raise ValueError(f"non-standard JSON constant {name} (NaN/Infinity must be written as null)")
+
+
+def strict_json(f):
+    """summary.json parsed as standard JSON (no NaN or Infinity), keys in file order."""
+    return json.load(f, parse_constant=reject_constant)
+
+
+# summary.json's keys in the order the runner writes them (a completed run).
+SUMMARY_KEYS = ["case", "kernel", "correction", "quadrature", "geometry", "contact", "resolution", "status",
+                "parameters", "particles", "quadrature_points", "steps", "dt_min_s", "dt_max_s", "end_time_s",
+                "threads", "wall_s", "setup_s", "energy", "results"]
+
+
 def finite(x):
     return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
 
 
 def outputs(out):
     with open(os.path.join(out, "summary.json")) as f:
-        s = json.load(f)
+        s = strict_json(f)
+    check(list(s) == SUMMARY_KEYS, f"summary.json: keys {list(s)}, expected {SUMMARY_KEYS}")
+    check(list(s.get("energy", {})) == ["kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J",
+                                        "balance_error"], f"summary.json: energy keys {list(s.get('energy', {}))}")
+    check(list(s.get("results", {})) == ["radius_mm", "height_mm", "max_equivalent_plastic_strain"],
+          f"summary.json: results keys {list(s.get('results', {}))}")
+    # Parameters keep their types: counts are integers, quantities are numbers.
+    params = s.get("parameters", {})
+    check(params.get("axial_particles") == AXIAL and type(params.get("axial_particles")) is int,
+          f"summary.json: parameters.axial_particles = {params.get('axial_particles')!r}, expected the integer {AXIAL}")
+    check(type(params.get("radial_particles")) is int, "summary.json: parameters.radial_particles is not an integer")
+    check(finite(params.get("velocity_m_s")) and params["velocity_m_s"] == VELOCITY, "summary.json: velocity_m_s")
+    for key in ["particles", "quadrature_points", "steps", "resolution", "threads"]:
+        check(type(s.get(key)) is int, f"summary.json: '{key}' is not an integer: {s.get(key)!r}")
     for key in ["case", "kernel", "correction", "quadrature", "geometry", "contact"]:
         check(isinstance(s.get(key), str), f"summary.json: '{key}' missing or not a string")
     for key in ["particles", "quadrature_points", "steps", "dt_min_s", "dt_max_s", "end_time_s", "threads", "wall_s",
@@ -123,7 +170,7 @@ def outputs(out):
         check(finite(s.get(key)), f"summary.json: '{key}' missing or not a finite number")
     for key in ["kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"]:
         check(finite(s.get("energy", {}).get(key)), f"summary.json: 'energy.{key}' missing or not finite")
-    for key in ["final_radius_mm", "final_height_mm", "max_equivalent_plastic_strain"]:
+    for key in ["radius_mm", "height_mm", "max_equivalent_plastic_strain"]:
         check(finite(s.get("results", {}).get(key)), f"summary.json: 'results.{key}' missing or not finite")
     if failures:
         return
@@ -148,21 +195,21 @@ def outputs(out):
     check(abs(e["kinetic_J"] + e["internal_J"] - e["contact_J"] - k0) < 0.01 * k0,
           f"K + W_int - W_contact = {e['kinetic_J'] + e['internal_J'] - e['contact_J']} J, K0 = {k0} J")
     res = s["results"]
-    check(res["final_radius_mm"] > RADIUS_MM and res["final_height_mm"] < HEIGHT_MM, f"results {res}")
-    check(res["final_height_mm"] > HEIGHT_MM - 1.01 * VELOCITY * END_TIME * 1e3, f"height {res['final_height_mm']}")
+    check(res["radius_mm"] > RADIUS_MM and res["height_mm"] < HEIGHT_MM, f"results {res}")
+    check(res["height_mm"] > HEIGHT_MM - 1.01 * VELOCITY * END_TIME * 1e3, f"height {res['height_mm']}")
     check(res["max_equivalent_plastic_strain"] > 0, "the impact face must have yielded")
 
     with open(os.path.join(out, "history.csv")) as f:
         rows = list(csv.reader(f))
     header, data = rows[0], [[float(v) for v in r] for r in rows[1:]]
-    for col in ["time_s", "final_radius_mm", "final_height_mm", "kinetic_J", "balance_error"]:
+    for col in ["time_s", "radius_mm", "height_mm", "kinetic_J", "balance_error"]:
         check(col in header, f"history.csv: no column {col}: {header}")
     check(len(data) >= 10 and all(len(r) == len(header) for r in data), "history.csv: rows")
     t = [r[0] for r in data]
     check(t[0] == 0.0 and all(b > a for a, b in zip(t, t[1:])), "history.csv: time must start at 0 and increase")
     check(abs(t[-1] - END_TIME) <= 1e-12 * END_TIME, f"history.csv: last time {t[-1]}")
-    h = header.index("final_height_mm")
-    check(abs(data[-1][h] - res["final_height_mm"]) < 1e-9, "history.csv's last height differs from summary.json")
+    h = header.index("height_mm")
+    check(abs(data[-1][h] - res["height_mm"]) < 1e-9, "history.csv's last height differs from summary.json")
     k = header.index("kinetic_J")
     check(abs(data[0][k] - k0) < 1e-6 * k0, f"history.csv: kinetic energy at t = 0 is {data[0][k]}, expected {k0}")
 
@@ -179,7 +226,7 @@ def vtk(out):
     import meshio
 
     with open(os.path.join(out, "summary.json")) as f:
-        s = json.load(f)
+        s = strict_json(f)
     pvds = [f for f in os.listdir(out) if f.endswith(".pvd")]
     check(pvds == ["taylor_bar.pvd"], f"expected one taylor_bar.pvd, found {pvds}")
     sets = ElementTree.parse(os.path.join(out, pvds[0])).getroot().findall("./Collection/DataSet")
@@ -235,7 +282,7 @@ def vtk(out):
     face = ref[:, 1] == 0.0
     radius_mm, height_mm = x[face, 0].max() * 1e3, x[:, 1].max() * 1e3
     res = s["results"]
-    check(abs(radius_mm - res["final_radius_mm"]) < 1e-9 and abs(height_mm - res["final_height_mm"]) < 1e-9,
+    check(abs(radius_mm - res["radius_mm"]) < 1e-9 and abs(height_mm - res["height_mm"]) < 1e-9,
           f"the last snapshot gives radius {radius_mm} and height {height_mm} mm; summary.json says {res}")
     axis = ref[:, 0] == 0.0
     check(np.abs(x[axis, 0]).max() < 1e-15, "axis particles left r = 0")

@@ -18,7 +18,8 @@
 #include <fmt/format.h>
 
 #include <rkpm/io/vtk.hpp>
-#include <rkpm/io/gnuplot.hpp>  // io::detail::run_capture
+
+#include "support/run_capture.hpp"
 
 namespace fs = std::filesystem;
 using rkpm::mat3;
@@ -29,7 +30,7 @@ namespace {
 const fs::path python = "/usr/bin/python3";
 
 // Runs a command and returns its exit status and output (stdout and stderr).
-using rkpm::io::detail::run_capture;
+using rkpm::test::run_capture;
 
 // Runs check_vtu.py; meshio missing is a failure with the install command, never a skip.
 void check_with_meshio(const std::string& args) {
