@@ -18,6 +18,8 @@
 #include <rkpm/rkpm.hpp>
 #include <rkpm/solver/policies.hpp>
 
+#include "cases/contact_setup.hpp"
+
 namespace rkpm::test {
 
 // The physics tests run problems of ~100 particles for ~1000 steps. With two OpenMP threads
@@ -47,18 +49,15 @@ M make_material(const material::elastic_constants& c) {
     return M(c, material::hardening::power_law{0.004 * c.youngs_modulus, 0.02, 0.3});
 }
 
+// Built as the cases build theirs (cases/contact_setup.hpp), with Coulomb friction 0.2 when the
+// policy has friction; contact::none takes no tools.
 template <class Ct>
 Ct make_contact(std::vector<contact::rigid_tool> tools, double penalty_stiffness = 1e12) {
   if constexpr (std::is_same_v<Ct, contact::none>) {
     return Ct{};
   } else {
-    using E = typename Ct::enforcement_type;
-    using F = typename Ct::friction_type;
-    F friction{};
-    if constexpr (std::is_same_v<F, contact::friction::coulomb>) friction.coefficient = 0.2;
-    E enforcement{};
-    if constexpr (std::is_same_v<E, contact::enforcement::penalty>) enforcement.stiffness = penalty_stiffness;
-    return Ct(std::move(tools), friction, enforcement);
+    const double friction = std::is_same_v<typename Ct::friction_type, contact::friction::coulomb> ? 0.2 : 0.0;
+    return cases::make_contact<Ct>(std::move(tools), friction, penalty_stiffness);
   }
 }
 
