@@ -1,7 +1,7 @@
 #pragma once
 // Umbrella header: everything a user needs to build and run an rkpm simulation.
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/approximation/rk_shape_functions.hpp>
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/contact/friction.hpp>
@@ -12,7 +12,7 @@
 #include <rkpm/discretization/neighbor_search.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
-#include <rkpm/discretization/quadrature_rules.hpp>
+#include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
@@ -21,4 +21,4 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/solver/config.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include <rkpm/contact/particle_to_segment.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 #include "cases/block_forging.hpp"
 
@@ -63,7 +63,7 @@ TEST_CASE_TEMPLATE("block forging to 20%: tools not crossed, volume kept, barrel
   const bf::parameters p = reduced();
   run_options o;
   o.end_time = bf::end_time(p);
-  explicit_solver<cfg> s(bf::build<contact_t>(p, 1), o);
+  auto s = make_solver<cfg>(bf::build<contact_t>(p, 1), o);
 
   const double h = p.width_m / (p.particles_per_side - 1.0), v = p.tool_velocity_m_s;
   const auto& X = s.model().particles.position;

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include <rkpm/contact/particle_to_segment.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 #include "cases/taylor_bar.hpp"
 
@@ -53,7 +53,7 @@ impact_record impact(double end_time) {
   p.end_time_s = end_time;
   run_options o;
   o.end_time = tb::end_time(p);
-  explicit_solver<cfg> s(tb::build<contact_t>(p, 1), o);
+  auto s = make_solver<cfg>(tb::build<contact_t>(p, 1), o);
 
   impact_record r;
   r.end_time = end_time;

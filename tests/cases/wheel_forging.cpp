@@ -21,7 +21,7 @@
 #include <vector>
 
 #include <rkpm/contact/particle_to_segment.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 #include "cases/wheel_forging.hpp"
 
@@ -65,7 +65,7 @@ TEST_CASE("wheel forging, 4 mm stroke: volume kept, punch and die not crossed, o
   p.stroke_m = 4e-3;
   run_options o;
   o.end_time = wf::end_time(p);
-  explicit_solver<cfg> s(wf::build<contact_t>(p, 1), o);
+  auto s = make_solver<cfg>(wf::build<contact_t>(p, 1), o);
 
   const double h = std::min(p.slug_radius_m / (p.radial_particles - 1.0), p.slug_height_m / (p.axial_particles - 1.0));
   const double die_r = wf::die_outline()[1].x();

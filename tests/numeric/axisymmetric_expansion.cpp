@@ -42,7 +42,7 @@ expansion expand(int n) {
   }
   run_options o;
   o.end_time = end_time;
-  explicit_solver<Cfg> s(std::move(p), o);
+  auto s = make_solver<Cfg>(std::move(p), o);
   s.run();
   const double t = s.time();
   CHECK(t == doctest::Approx(end_time).epsilon(1e-12));

@@ -18,7 +18,7 @@
 
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/material/elastic.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 using namespace rkpm;
 
@@ -73,7 +73,7 @@ drop_result drop(Contact contact) {
   run_options o;
   o.end_time = T;
   o.fixed_time_step = dt;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
 
   double M = 0.0;
   for (double m : s.mass()) M += m;

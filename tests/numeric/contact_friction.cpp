@@ -16,7 +16,7 @@
 
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/material/elastic.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 using namespace rkpm;
 
@@ -53,7 +53,7 @@ slide_history<Friction> slide(Friction friction, Enforcement enforcement, vec2 b
   run_options o;
   o.end_time = end_time;
   o.fixed_time_step = 1.5e-4;  // the same steps in every run (Galilean comparison)
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
   double M = 0.0;
   for (double m : s.mass()) M += m;
   slide_history<Friction> r;

@@ -17,7 +17,7 @@
 
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/material/elastic.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 using namespace rkpm;
 
@@ -48,7 +48,7 @@ piston_result piston(Enforcement enforcement, double R, double L, int nr, int nz
                      .contact = contact_t({tool}, {}, enforcement)};
   run_options o;
   o.end_time = 3.0 * L / c;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
   piston_result r;
   r.L = L;
   for (double m : s.mass()) r.mass += m;
@@ -129,7 +129,7 @@ TEST_CASE_TEMPLATE("a V-shaped punch and a fixed die close on a block without a 
   // A fixed step, so the residual depths below do not follow changes of the time step rule: the
   // punch advances V dt = 0.015 h per step.
   o.fixed_time_step = 1.5e-4;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
   const vec2 n1 = s.contact().tools()[0].normal(0), n2 = s.contact().tools()[0].normal(1);
   CHECK(n1.y() < 0.0);  // the punch's normals point down, into the block
   CHECK(n2.y() < 0.0);

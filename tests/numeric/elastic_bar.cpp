@@ -40,7 +40,7 @@ bar_result run_bar(int nx, double periods) {
   // The integer-step energy of central differences is off by O((omega dt)^2) for the high
   // modes the sampled initial velocity contains: 0.2 % at half the stable step, 0.4 % at 0.7.
   o.time_step_fraction = 0.5;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
   // End displacement: mean physical u_x over the particles at x = 0.
   std::vector<index_t> end;
   for (index_t I = 0; I < s.model().particle_count(); ++I)

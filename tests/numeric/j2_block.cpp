@@ -54,7 +54,7 @@ block_result pull(bool all_particles) {
   }
   run_options o;
   o.end_time = end_time;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
   block_result r;
   s.run(
       [&](const auto& solver) {

@@ -11,7 +11,7 @@
 
 #include <Eigen/LU>
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/approximation/rk_shape_functions.hpp>
 #include <rkpm/concepts/correction.hpp>
 #include <rkpm/concepts/kernel.hpp>

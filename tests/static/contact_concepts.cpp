@@ -24,36 +24,82 @@ static_assert(rkpm::FrictionLaw<c::friction::coulomb>);
 static_assert(!rkpm::FrictionLaw<c::enforcement::paper>);
 static_assert(!rkpm::ContactEnforcement<c::friction::coulomb>);
 
-static_assert(c::particle_to_segment<c::enforcement::effective_mass>::name == "effective_mass");
-static_assert(c::particle_to_segment<c::enforcement::paper, c::friction::coulomb>::friction_name == "coulomb");
+static_assert(c::particle_to_segment<c::enforcement::effective_mass>::name == "effective_mass+frictionless");
+static_assert(c::particle_to_segment<c::enforcement::paper, c::friction::coulomb>::name == "paper+coulomb");
 
 namespace {
+using rkpm::contact_body;
+using rkpm::contact_result;
+using rkpm::contact_slaves;
+using rkpm::vec2;
+// A complete policy, and copies of it that each lack or get wrong one requirement.
+struct complete {
+  static constexpr std::string_view name = "complete";
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
+  const std::vector<c::rigid_tool>& tools() const;
+  const std::vector<vec2>& reactions() const;
+};
 struct missing_enforce {
   static constexpr std::string_view name = "missing_enforce";
-  void setup(const c::body_view&) {}
+  void setup(const contact_body&, const contact_slaves&) {}
   const std::vector<c::rigid_tool>& tools() const;
+  const std::vector<vec2>& reactions() const;
 };
 struct wrong_result {
   static constexpr std::string_view name = "wrong_result";
-  void setup(const c::body_view&) {}
-  double enforce(double, double, std::vector<rkpm::vec2>&, std::vector<rkpm::vec2>&) { return 0; }
+  void setup(const contact_body&, const contact_slaves&) {}
+  double enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return 0; }
   const std::vector<c::rigid_tool>& tools() const;
+  const std::vector<vec2>& reactions() const;
 };
 struct missing_name {
-  void setup(const c::body_view&) {}
-  c::step_result enforce(double, double, std::vector<rkpm::vec2>&, std::vector<rkpm::vec2>&) { return {}; }
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
   const std::vector<c::rigid_tool>& tools() const;
+  const std::vector<vec2>& reactions() const;
 };
 struct missing_tools {
   static constexpr std::string_view name = "missing_tools";
-  void setup(const c::body_view&) {}
-  c::step_result enforce(double, double, std::vector<rkpm::vec2>&, std::vector<rkpm::vec2>&) { return {}; }
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
+  const std::vector<vec2>& reactions() const;
+};
+struct tools_not_a_range {
+  static constexpr std::string_view name = "tools_not_a_range";
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
+  double tools() const;
+  const std::vector<vec2>& reactions() const;
+};
+struct missing_reactions {
+  static constexpr std::string_view name = "missing_reactions";
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
+  const std::vector<c::rigid_tool>& tools() const;
+};
+struct old_interface {  // enforce without the body: the pointer-keeping interface of before
+  static constexpr std::string_view name = "old_interface";
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
+  const std::vector<c::rigid_tool>& tools() const;
+  const std::vector<vec2>& reactions() const;
 };
 }  // namespace
 
+static_assert(rkpm::Contact<complete>);
 static_assert(!rkpm::Contact<missing_enforce>, "a type without enforce() is not a Contact");
-static_assert(!rkpm::Contact<wrong_result>, "enforce() must return contact::step_result");
+static_assert(!rkpm::Contact<wrong_result>, "enforce() must return contact_result");
 static_assert(!rkpm::Contact<missing_name>);
 static_assert(!rkpm::Contact<missing_tools>);
+static_assert(!rkpm::Contact<tools_not_a_range>);
+static_assert(!rkpm::Contact<missing_reactions>);
+static_assert(!rkpm::Contact<old_interface>);
 
-TEST_CASE("contact concepts hold at compile time") { CHECK(c::none::name == "none"); }
+TEST_CASE("the shipped contact policies report one reaction per tool") {
+  c::none none;
+  CHECK(none.tools().size() == none.reactions().size());
+  c::particle_to_segment<c::enforcement::paper> wall({c::rigid_tool("wall", {{-1, 0}, {1, 0}}, c::side::left)});
+  CHECK(wall.tools().size() == 1);
+  CHECK(wall.reactions().size() == wall.tools().size());
+}

@@ -21,7 +21,7 @@ static_assert(rkpm::Hardening<h::linear>);
 static_assert(rkpm::Hardening<h::power_law>);
 
 static_assert(std::same_as<m::j2_plasticity<h::power_law>::hardening_type, h::power_law>);
-static_assert(m::elastic::name == "elastic" && m::j2_plasticity<h::linear>::name == "j2");
+static_assert(m::elastic::name == "elastic" && m::j2_plasticity<h::linear>::name == "j2+linear");
 static_assert(h::linear::name == "linear" && h::power_law::name == "power");
 
 namespace wrong {

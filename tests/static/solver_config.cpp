@@ -3,11 +3,13 @@
 // the covering set holds 12 distinct Config types. All checks are at compile time; the one
 // run-time case only makes the program a doctest executable and checks name().
 
+#include <set>
+#include <string>
 #include <doctest/doctest.h>
 
 #include <type_traits>
 
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 #include <rkpm/solver/policies.hpp>
 
 namespace hana = boost::hana;
@@ -46,10 +48,10 @@ static_assert(std::is_same_v<d::with_quadrature<quadrature::q4>::with_quadrature
                              d::with_quadrature<quadrature::q9>>);
 static_assert(std::is_same_v<d::with_quadrature<quadrature::q2>, d>);
 // The solver and problem types follow the configuration.
-static_assert(std::is_same_v<explicit_solver<d>::config_type, d>);
+static_assert(std::is_same_v<solver_for<d>, explicit_solver<geometry::plane_strain, d::material_type, contact::none>>);
 static_assert(std::is_same_v<problem_for<d::with_material<material::elastic>>,
                              problem<material::elastic, contact::none>>);
-static_assert(std::is_same_v<explicit_solver<d::with_geometry<geometry::axisymmetric>>::geometry_type,
+static_assert(std::is_same_v<solver_for<d::with_geometry<geometry::axisymmetric>>::geometry_type,
                              geometry::axisymmetric>);
 
 // Policy lists.
@@ -93,7 +95,17 @@ constexpr bool every_row_needed() {
 static_assert(every_row_needed());
 
 TEST_CASE("config names") {
-  CHECK(d::name() == "cubic-linear-q2-plane_strain-j2-none");
+  CHECK(d::name() == "cubic-linear-q2-plane_strain-j2+linear-none");
   CHECK(d::with_kernel<kernel::quartic_spline>::with_quadrature<quadrature::q4>::name() ==
-        "quartic-linear-q4-plane_strain-j2-none");
+        "quartic-linear-q4-plane_strain-j2+linear-none");
+  CHECK(d::with_contact<ptc>::name() == "cubic-linear-q2-plane_strain-j2+linear-penalty+frictionless");
+  // One name per configuration: file names and benchmark labels never collide.
+  std::set<std::string> names;
+  std::size_t count = 0;
+  hana::for_each(policies::all_configs(), [&](auto c) {
+    names.insert(decltype(c)::type::name());
+    ++count;
+  });
+  CHECK(count == 288);
+  CHECK(names.size() == count);
 }

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include <rkpm/contact/body_view.hpp>
+#include <rkpm/concepts/contact.hpp>
 
 namespace rkpm::test {
 
@@ -11,16 +11,17 @@ namespace rkpm::test {
 struct identity_body {
   std::vector<vec2> X;
   std::vector<double> m;
-  contact::body_view view() const {
-    contact::body_view b{&X, &m, {}, {}};
+  contact_body view() const { return {X, m}; }
+  contact_slaves slaves() const {
+    contact_slaves s;
     for (index_t J = 0; J < static_cast<index_t>(X.size()); ++J) {
-      b.slave.push_back(J);
-      b.slave_table.neighbor.push_back(J);
-      b.slave_table.N.push_back(1.0);
-      b.slave_table.grad.push_back(vec2::Zero());
-      b.slave_table.offset.push_back(J + 1);
+      s.particle.push_back(J);
+      s.table.neighbor.push_back(J);
+      s.table.N.push_back(1.0);
+      s.table.grad.push_back(vec2::Zero());
+      s.table.offset.push_back(J + 1);
     }
-    return b;
+    return s;
   }
 };
 

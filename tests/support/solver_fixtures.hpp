@@ -124,17 +124,14 @@ std::vector<mat3> deformation_gradients(const discrete_model& m, const std::vect
 // A solver of configuration Cfg whose coefficients after one step are d_I = u(X_I): the
 // initial velocity is u / dt with a fixed step dt far below the stable one, and the initial
 // acceleration is zero (undeformed body, no body force), so d = dt * (u / dt) to round-off.
-// Returned by pointer: a contact policy keeps pointers to the solver's own vectors, so the
-// solver must not move after construction.
 template <class Cfg>
-std::unique_ptr<explicit_solver<Cfg>> solver_at(problem_for<Cfg> p, std::function<vec2(const vec2&)> u,
-                                                double dt) {
+solver_for<Cfg> solver_at(problem_for<Cfg> p, std::function<vec2(const vec2&)> u, double dt) {
   p.initial_velocity = [u, dt](const vec2& X) -> vec2 { return u(X) / dt; };
   run_options o;
   o.fixed_time_step = dt;
-  o.end_time = 1.0;
-  auto s = std::make_unique<explicit_solver<Cfg>>(std::move(p), o);
-  s->step();
+  o.end_time = dt;  // the one step taken
+  auto s = make_solver<Cfg>(std::move(p), o);
+  s.step();
   return s;
 }
 
@@ -151,11 +148,10 @@ Eigen::MatrixXd assemble_stiffness(const discrete_model& m, const material::elas
   const index_t n = m.particle_count();
   Eigen::MatrixXd K(2 * n, 2 * n);
   std::vector<vec2> x(n, vec2::Zero()), kx(n);
-  std::vector<mat2> sw(m.point_count());
-  std::vector<double> hw(m.point_count());
+  point_stresses stresses(m.point_count());
   for (index_t j = 0; j < 2 * n; ++j) {
     x[j / 2][j % 2] = 1.0;
-    apply_elastic_stiffness<G>(m, c, x, kx, sw, hw);
+    apply_elastic_stiffness<G>(m, c, x, kx, stresses);
     x[j / 2][j % 2] = 0.0;
     for (index_t I = 0; I < n; ++I) K.block<2, 1>(2 * I, j) = kx[I];
   }
@@ -213,7 +209,7 @@ energy_balance check_combination(int steps = 40, double time_step_fraction = 0.0
   run_options o;
   o.end_time = 1.0;
   if (time_step_fraction > 0.0) o.time_step_fraction = time_step_fraction;
-  explicit_solver<Cfg> s(std::move(p), o);
+  auto s = make_solver<Cfg>(std::move(p), o);
   auto momentum = [&] {
     vec2 P = vec2::Zero();
     for (index_t I = 0; I < s.model().particle_count(); ++I) P += s.mass()[I] * s.coefficient_velocities()[I];

@@ -2,7 +2,7 @@
 // The step benchmarks are in steps.cpp; this file holds the set-up costs and main().
 //   BM_model_build<Q>      build_discrete_model: quadrature points, neighbor search, RK shape
 //                          tables at points and particles, transpose, lumped volumes
-//   BM_solver_build<Q>     the above plus the dynamics constructor (masses, contact set-up,
+//   BM_solver_build<Q>     make_solver: the above plus the solver constructor (masses, contact set-up,
 //                          first internal force, stable step by 100 power iterations)
 // Set-up is serial except the OpenMP loops of the first force and the power iteration; it is
 // timed with 1 thread so that it is comparable run to run.
@@ -36,7 +36,7 @@ void BM_solver_build(benchmark::State& state) {
   omp_set_num_threads(1);
   for (auto _ : state) {
     auto s = make_wall_solver<Q>(1);
-    benchmark::DoNotOptimize(s->time_step());
+    benchmark::DoNotOptimize(s.time_step());
   }
 }
 

@@ -38,9 +38,9 @@ template <class Q>
 void BM_step(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   auto s = make_wall_solver<Q>(1);
-  warm_up(*s, 1);
-  for (auto _ : state) s->step();
-  set_counters(state, *s);
+  warm_up(s, 1);
+  for (auto _ : state) s.step();
+  set_counters(state, s);
   state.SetLabel(std::string(Q::name));
 }
 
@@ -48,18 +48,18 @@ void BM_step_resolution(benchmark::State& state) {
   omp_set_num_threads(1);
   const int resolution = static_cast<int>(state.range(0));
   auto s = make_wall_solver<quadrature::q2>(resolution);
-  warm_up(*s, resolution);
-  for (auto _ : state) s->step();
-  set_counters(state, *s);
+  warm_up(s, resolution);
+  for (auto _ : state) s.step();
+  set_counters(state, s);
 }
 
 template <class Q>
 void BM_step_rolling(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   auto s = make_rolling_solver<Q>(1);
-  warm_up(*s, 1);
-  for (auto _ : state) s->step();
-  set_counters(state, *s);
+  warm_up(s, 1);
+  for (auto _ : state) s.step();
+  set_counters(state, s);
   state.SetLabel(std::string(Q::name) + " no contact, u_z = 0 on the face");
 }
 
@@ -70,25 +70,25 @@ template <class Q>
 void BM_contact_enforce(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   auto s = make_wall_solver<Q>(1);
-  warm_up(*s, 1);
-  const index_t n = s->model().particle_count();
-  const double dt = s->time_step(), t_next = s->time() + dt;
+  warm_up(s, 1);
+  const index_t n = s.model().particle_count();
+  const double dt = s.time_step(), t_next = s.time() + dt;
   std::vector<vec2> d0(n), v0(n);
   for (index_t I = 0; I < n; ++I) {
-    v0[I] = s->coefficient_velocities()[I] - 0.5 * dt * s->internal_force()[I] / s->mass()[I];
-    d0[I] = s->coefficients()[I] + dt * v0[I];
+    v0[I] = s.coefficient_velocities()[I] - 0.5 * dt * s.internal_force()[I] / s.mass()[I];
+    d0[I] = s.coefficients()[I] + dt * v0[I];
   }
   std::vector<vec2> d = d0, v = v0;
-  contact::step_result r;
+  contact_result r;
   for (auto _ : state) {
     std::copy(d0.begin(), d0.end(), d.begin());
     std::copy(v0.begin(), v0.end(), v.begin());
     const auto start = std::chrono::steady_clock::now();
-    r = s->contact().enforce(t_next, dt, d, v);
+    r = s.contact().enforce(s.body(), t_next, dt, d, v);
     benchmark::DoNotOptimize(r);
     state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  set_counters(state, *s);
+  set_counters(state, s);
   state.counters["active_contacts"] = static_cast<double>(r.active);
   state.SetLabel(std::string(Q::name));
 }

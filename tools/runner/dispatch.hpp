@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 
 #include <rkpm/solver/discrete_model.hpp>
-#include <rkpm/solver/dynamics.hpp>
+#include <rkpm/solver/make_solver.hpp>
 #include <rkpm/solver/policies.hpp>
 
 #include "case_list.hpp"
@@ -29,18 +29,11 @@ namespace rkpm::runner {
 
 template <class Case, class Config>
 run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
-  using G = typename Case::geometry_type;
-  using M = typename Case::material_type;
   using Ct = typename Config::contact_type;
-  using solver_type = dynamics<G, M, Ct>;
   run_options options;
   options.end_time = Case::end_time(p);
-  const std::function<std::unique_ptr<solver_type>()> make = [&] {
-    auto prob = Case::template build<Ct>(p, r.resolution);
-    auto model = build_discrete_model<typename Config::kernel_type, typename Config::correction_type,
-                                      typename Config::quadrature_type, G>(prob.particles, prob.mesh,
-                                                                           options.max_moment_condition);
-    return std::make_unique<solver_type>(std::move(model), std::move(prob), options);
+  const std::function<solver_for<Config>()> make = [&] {
+    return make_solver<Config>(Case::template build<Ct>(p, r.resolution), options);
   };
   return simulate<Case, Config>(r, p, make);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// simulate<Case>(dynamics, ...): runs one case to its end time and writes its results:
+// simulate<Case>(request, parameters, make): builds the solver with make() and runs one case to its end time and writes its results:
 //   summary.json  policies, sizes, steps, time-step range, timings, energies, key results
 //   history.csv   time, the case's key measures, tool forces, energies (flushed per row)
 //   CASE.pvd + CASE_NNNNNN.vtu  particles with displacement, velocity, stress, eps_p, det F
@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,7 @@ io::point_data snapshot_fields(const Solver& s) {
 
 template <class Case, class Config, class Solver>
 run_outcome simulate(const run_request& request, const typename Case::parameters& params,
-                     const std::function<std::unique_ptr<Solver>()>& make_solver) {
+                     const std::function<Solver()>& make) {
   namespace fs = std::filesystem;
   run_outcome outcome;
   outcome.directory = request.output_directory();
@@ -77,9 +78,9 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     cases::visit_value(f, params, [&](auto value) { parameters[std::string(f.name)] = value; });
 
   const auto t0 = std::chrono::steady_clock::now();
-  std::unique_ptr<Solver> holder;
+  std::optional<Solver> holder;
   try {
-    holder = make_solver();
+    holder.emplace(make());
   } catch (const std::exception& e) {
     summary["status"] = "failed";
     summary["error"] = e.what();

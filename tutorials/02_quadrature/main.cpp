@@ -41,11 +41,11 @@
 #include <omp.h>
 #endif
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
-#include <rkpm/discretization/quadrature_rules.hpp>
+#include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 #include <rkpm/io/csv.hpp>
@@ -53,7 +53,7 @@
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/solver/discrete_model.hpp>
-#include <rkpm/solver/dynamics.hpp>
+#include <rkpm/solver/make_solver.hpp>
 #include <rkpm/solver/stable_time_step.hpp>
 
 #include "cases/taylor_bar.hpp"
@@ -144,13 +144,12 @@ template <class G>
 Eigen::MatrixXd assemble_stiffness(const discrete_model& m) {
   const index_t n = m.particle_count();
   std::vector<vec2> x(n, vec2::Zero()), kx(n);
-  std::vector<mat2> stress_w(m.point_count());
-  std::vector<double> hoop_w(m.point_count());
+  point_stresses stresses(m.point_count());
   Eigen::MatrixXd K(2 * n, 2 * n);
   for (index_t J = 0; J < n; ++J)
     for (int k = 0; k < 2; ++k) {
       x[J][k] = 1.0;
-      apply_elastic_stiffness<G>(m, copper, x, kx, stress_w, hoop_w);
+      apply_elastic_stiffness<G>(m, copper, x, kx, stresses);
       x[J][k] = 0.0;
       for (index_t I = 0; I < n; ++I) K.block<2, 1>(2 * I, 2 * J + k) = kx[I];
     }
@@ -364,15 +363,16 @@ void part2_spectra(const fs::path& out) {
 // ---------------------------------------------------------------------------------------
 // The explicit solver on the Taylor bar (cases/taylor_bar.hpp: 21 x 51 particles,
 // axisymmetric, J2 plasticity with linear hardening, the paper's contact against the wall),
-// built as the runner builds it: the discrete model for the rule, then the dynamics (which
-// does not depend on the rule). We take 100 steps to get into the impact, then time 200 with
+// built as everything builds it, by make_solver (the time loop it returns does not depend on
+// the rule; only the discrete model does). We take 100 steps to get into the impact, then time 200 with
 // std::chrono (wall clock) and std::clock (CPU time of the process), on one thread so that the
 // two agree on an idle machine and the CPU time stays meaningful on a busy one. This is
 // indicative only: one measurement each. `tools/rkpm bench` runs the Google Benchmark version
 // with repetitions and thread counts.
 using bar_case = cases::taylor_bar;
 using wall = contact::particle_to_segment<contact::enforcement::paper, contact::friction::frictionless>;
-using bar_solver = dynamics<bar_case::geometry_type, bar_case::material_type, wall>;
+template <class Q>
+using bar_method = config<kernel_type, correction_type, Q, bar_case::geometry_type, bar_case::material_type, wall>;
 
 struct step_timing {
   std::string rule;
@@ -389,15 +389,13 @@ step_timing time_steps() {
   try {
     run_options options;
     options.end_time = bar_case::end_time({});
-    auto p = bar_case::build<wall>({}, 1);
-    auto model = build_discrete_model<kernel_type, correction_type, Q, bar_case::geometry_type>(p.particles, p.mesh);
-    t.points = model.point_count();
-    auto s = std::make_unique<bar_solver>(std::move(model), std::move(p), options);  // built in place
-    for (int k = 0; k < 100; ++k) s->step();
+    auto s = make_solver<bar_method<Q>>(bar_case::build<wall>({}, 1), options);
+    t.points = s.model().point_count();
+    for (int k = 0; k < 100; ++k) s.step();
     const int steps = 200;
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
-    for (int k = 0; k < steps; ++k) s->step();
+    for (int k = 0; k < steps; ++k) s.step();
     t.cpu_ms_per_step = 1e3 * double(std::clock() - cpu_start) / CLOCKS_PER_SEC / steps;
     t.ms_per_step = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / steps;
   } catch (const rkpm::error& e) {

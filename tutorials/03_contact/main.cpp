@@ -40,7 +40,7 @@
 #include <rkpm/io/gnuplot.hpp>
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 namespace fs = std::filesystem;
 using namespace rkpm;
@@ -109,7 +109,7 @@ void drop(const policy& pol, const fs::path& out) {
                      .body_force = vec2(0.0, -9.81)};
   run_options o;
   o.end_time = 0.02;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
 
   io::csv_writer csv(out / fmt::format("drop_{}.csv", pol.label),
                      {"t", "predicted_penetration_over_h", "lowest_gap_over_h", "active", "kinetic", "internal",
@@ -156,7 +156,7 @@ void slide(const policy& pol, const fs::path& out) {
                      .body_force = vec2(0.0, -g)};
   run_options o;
   o.end_time = 0.13;
-  explicit_solver<cfg> s(std::move(p), o);
+  auto s = make_solver<cfg>(std::move(p), o);
   double M = 0.0;
   for (double m : s.mass()) M += m;
   io::csv_writer csv(out / fmt::format("slide_{}.csv", pol.label),

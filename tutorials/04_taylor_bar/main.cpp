@@ -12,8 +12,8 @@
 // The case itself (geometry, material, wall, particles) is cases/taylor_bar.hpp: a function
 // that turns a struct of parameters into an rkpm::problem for any contact policy. What this
 // program chooses is the *method*: one type, rkpm::config<...>, names the kernel, correction,
-// quadrature, geometry, material and contact policy, and rkpm::explicit_solver<method> is the
-// solver compiled for exactly that combination.
+// quadrature, geometry, material and contact policy, and rkpm::make_solver<method>(problem, options)
+// builds the solver for exactly that combination.
 //
 // Usage: tutorial_04_taylor_bar [output directory] [end time in s]
 //        (defaults: results/04_taylor_bar and the paper's 80e-6 s)
@@ -30,7 +30,7 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/gnuplot.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 #include "cases/taylor_bar.hpp"
 
@@ -72,7 +72,7 @@ outcome run(const taylor_bar::parameters& params, const fs::path& dir) {
   const auto start = std::chrono::steady_clock::now();
   // The solver keeps pointers into itself (the contact sees its particle arrays), so it is
   // built in place and never moved.
-  explicit_solver<Method> solver(taylor_bar::build<contact_t>(params, /*resolution=*/1), options);
+  auto solver = make_solver<Method>(taylor_bar::build<contact_t>(params, /*resolution=*/1), options);
   fmt::print("{}: {} particles, {} quadrature points, first time step {:.3g} ns\n", rule,
              solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e9);
 

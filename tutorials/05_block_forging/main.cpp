@@ -30,7 +30,7 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/gnuplot.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 #include "cases/block_forging.hpp"
 
@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
 
     run_options options;
     options.end_time = block_forging::end_time(params);
-    explicit_solver<method> solver(block_forging::build<contact_t>(params, /*resolution=*/1), options);
+    auto solver = make_solver<method>(block_forging::build<contact_t>(params, /*resolution=*/1), options);
     const double h = params.width_m / (params.particles_per_side - 1.0);
     fmt::print("{} particles, {} quadrature points, first time step {:.3g} us, {:.0f} mm of closure\n",
                solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e6,

@@ -29,7 +29,7 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/gnuplot.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/make_solver.hpp>
 
 #include "cases/wheel_forging.hpp"
 
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
 
     run_options options;
     options.end_time = wheel_forging::end_time(params);  // stroke / speed
-    explicit_solver<method> solver(wheel_forging::build<contact_t>(params, /*resolution=*/1), options);
+    auto solver = make_solver<method>(wheel_forging::build<contact_t>(params, /*resolution=*/1), options);
     fmt::print("{} particles, {} quadrature points, first time step {:.3g} ns, stroke {:.1f} mm\n",
                solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e9,
                params.stroke_m * 1e3);

@@ -1,25 +1,52 @@
 #pragma once
-// Contact: what the explicit solver calls on a contact policy (spec/paper.md section 3,
-// design.md section 4 "Contact"): setup(body) once, enforce(t_next, dt, d, v) every step
-// (correcting d_{n+1} and v_{n+1/2} in place, no heap allocation) and tools() for output.
+// Contact: what the explicit solver calls on a contact policy (docs/method.md section 6):
+//   setup(body, slaves)                once, before the first step;
+//   enforce(body, t_next, dt, d, v)    every step, correcting the predicted d_{n+1} and
+//                                      v_{n+1/2} in place, with no heap allocation;
+//   tools(), reactions()               the rigid tools and the force on each in the last step.
+// The body is passed on every call (a view of the solver's own arrays), so a policy holds no
+// pointer into the solver and the solver can be moved.
 // ContactEnforcement and FrictionLaw are the building blocks of contact::particle_to_segment.
+// Concept headers depend only on core/ and discretization/, never on the policies they describe.
 
 #include <concepts>
+#include <ranges>
+#include <span>
 #include <string_view>
 #include <vector>
 
-#include <rkpm/contact/body_view.hpp>
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
 
+// The body a contact policy acts on, valid for the duration of one call.
+struct contact_body {
+  std::span<const vec2> reference_position;  // X_I, #particles
+  std::span<const double> mass;              // lumped m_I (axisymmetric: 2 pi r included)
+};
+
+// The particles checked against the tools, given once at set-up: slave j is particle
+// particle[j], and row j of table holds N_I(X_particle[j]) for its neighbours I.
+struct contact_slaves {
+  std::vector<index_t> particle;
+  shape_table<2> table;
+};
+
+// What a contact policy reports after each step.
+struct contact_result {
+  double max_penetration = 0;  // largest gap found on the predicted configuration
+  index_t active = 0;          // slave particles in contact with at least one tool
+};
+
 template <class C>
-concept Contact = requires(C& c, const contact::body_view& b, double t, double dt, std::vector<vec2>& d,
-                           std::vector<vec2>& v) {
+concept Contact = std::movable<C> && requires(C& c, const C& cc, const contact_body& b, const contact_slaves& s,
+                                              double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
   { C::name } -> std::convertible_to<std::string_view>;
-  c.setup(b);
-  { c.enforce(t, dt, d, v) } -> std::same_as<contact::step_result>;
-  { c.tools() };
+  c.setup(b, s);
+  { c.enforce(b, t, dt, d, v) } -> std::same_as<contact_result>;
+  { cc.tools() } -> std::ranges::sized_range;
+  { cc.reactions() } -> std::convertible_to<std::span<const vec2>>;
 };
 
 template <class E>

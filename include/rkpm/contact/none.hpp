@@ -1,19 +1,19 @@
 #pragma once
 // contact::none: no tools, no contact; satisfies Contact so that a run without tools uses the
-// same solver (design.md section 3).
+// same solver (docs/method.md section 6).
 
 #include <string_view>
 #include <vector>
 
-#include <rkpm/contact/body_view.hpp>
+#include <rkpm/concepts/contact.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
 
 namespace rkpm::contact {
 
 struct none {
   static constexpr std::string_view name = "none";
-  void setup(const body_view&) {}
-  step_result enforce(double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
+  void setup(const contact_body&, const contact_slaves&) {}
+  contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
   const std::vector<rigid_tool>& tools() const { return tools_; }
   const std::vector<vec2>& reactions() const { return reactions_; }
 

@@ -1,7 +1,7 @@
 #pragma once
 // particle_to_segment<Enforcement, Friction>: the paper's contact subroutine against moving
 // rigid tools (docs/method.md section 6, (P4)-(P7) = (56)-(59)).
-// enforce(t_next, dt, d, v), with d = d_{n+1} predicted and v = v_{n+1/2}, tools at t_next:
+// enforce(body, t_next, dt, d, v), with d = d_{n+1} predicted and v = v_{n+1/2}, tools at t_next:
 //   (i)   slave positions x_J = X_J + sum_I N_I(X_J) d_I and velocities v_J = sum_I N_I(X_J) v_I;
 //         per tool, the master segment each penetrating slave crossed (segment_search.hpp),
 //         found through a grid in the tool frame (segment_grid.hpp);
@@ -14,13 +14,9 @@
 // consistent with d_{n+1} = d_n + dt v_{n+1/2}; it equals the tool velocity for fixed and
 // constant-velocity tools.
 // Reported per step: the reaction on each tool (minus the sum of the contact forces its segments
-// applied), the largest penetration before correction, the number of slave particles in contact
-// and the contact work  sum_I f_I . (v_I before + v_I after) / 2 dt,  v_I the coefficient
-// velocities v_{n+1/2} before and after the correction. This is exactly the change of the
-// half-step kinetic energy sum_I m_I |v_I|^2 / 2 that the contact causes (f_I = m_I dv_I / dt),
-// so the energy balance closes to round-off on the contact's part; pairing f_I with the corrected
-// v_I alone would count twice that for an impact (m V^2 instead of m V^2 / 2 for a particle stopped
-// or launched in one step). Coulomb sliding gives negative work (dissipation).
+// applied), the largest penetration before correction and the number of slave particles in
+// contact. The work of the contact forces is booked by the solver's energy ledger
+// (solver/energy.hpp, impulse_work), the same formula as for the constraints.
 // enforce() does not allocate: setup() sizes every buffer.
 
 #include <algorithm>
@@ -30,7 +26,7 @@
 #include <vector>
 
 #include <rkpm/concepts/contact.hpp>
-#include <rkpm/contact/body_view.hpp>
+#include <rkpm/core/joined_name.hpp>
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/contact/friction.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
@@ -57,8 +53,8 @@ class particle_to_segment {
  public:
   using enforcement_type = Enforcement;
   using friction_type = Friction;
-  static constexpr std::string_view name = Enforcement::name;
-  static constexpr std::string_view friction_name = Friction::name;
+  // "paper+coulomb": enforcement and friction law.
+  static constexpr std::string_view name = joined_name<Enforcement::name, Friction::name>::value;
 
   explicit particle_to_segment(std::vector<rigid_tool> tools, Friction friction = {}, Enforcement enforcement = {})
       : tools_(std::move(tools)), friction_(friction), enforcement_(enforcement) {
@@ -79,21 +75,17 @@ class particle_to_segment {
   const Friction& friction() const { return friction_; }
   const Enforcement& enforcement() const { return enforcement_; }
 
-  // Keeps pointers to the body's positions and masses (they must outlive this object) and copies
-  // the slave list and table.
-  void setup(const body_view& body) {
-    if (!body.reference_position || !body.mass)
-      fail("contact setup: body_view needs reference_position and mass; point them at the solver's vectors");
-    X_ = body.reference_position;
-    m_ = body.mass;
-    const index_t np = static_cast<index_t>(X_->size());
-    if (static_cast<index_t>(m_->size()) != np)
-      fail("contact setup: {} reference positions but {} masses; give one mass per particle", np, m_->size());
+  // Checks the body and the slaves and copies the slave list and table; the body itself is
+  // passed again on every enforce().
+  void setup(const contact_body& body, const contact_slaves& slaves) {
+    const index_t np = static_cast<index_t>(body.reference_position.size());
+    if (static_cast<index_t>(body.mass.size()) != np)
+      fail("contact setup: {} reference positions but {} masses; give one mass per particle", np, body.mass.size());
     for (index_t I = 0; I < np; ++I)
-      if (!((*m_)[I] > 0.0) || !std::isfinite((*m_)[I]))
-        fail("contact setup: particle {} has mass {}; lumped masses must be positive and finite", I, (*m_)[I]);
-    slave_ = body.slave;
-    table_ = body.slave_table;
+      if (!(body.mass[I] > 0.0) || !std::isfinite(body.mass[I]))
+        fail("contact setup: particle {} has mass {}; lumped masses must be positive and finite", I, body.mass[I]);
+    slave_ = slaves.particle;
+    table_ = slaves.table;
     const index_t ns = static_cast<index_t>(slave_.size());
     if (table_.points() != ns)
       fail("contact setup: the slave table has {} rows but there are {} slave particles; build it at the "
@@ -111,20 +103,20 @@ class particle_to_segment {
     for (index_t j = 0; j < ns; ++j) {
       double s = 0.0;
       for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e)
-        s += table_.N[e] * table_.N[e] / (*m_)[table_.neighbor[e]];
+        s += table_.N[e] * table_.N[e] / body.mass[table_.neighbor[e]];
       if (!(s > 0.0))
         fail("contact setup: slave {} (particle {}) has no shape function support; check the slave table", j,
              slave_[j]);
       m_eff_[j] = 1.0 / s;
     }
 
-    check_initial_penetration();
+    check_initial_penetration(body.reference_position);
 
     const index_t nt = static_cast<index_t>(tools_.size());
     x_.assign(ns, vec2::Zero());
     v_.assign(ns, vec2::Zero());
     x_prev_.resize(ns);
-    for (index_t j = 0; j < ns; ++j) x_prev_[j] = (*X_)[slave_[j]];
+    for (index_t j = 0; j < ns; ++j) x_prev_[j] = body.reference_position[slave_[j]];
     u_prev_.resize(nt);
     u_now_.resize(nt);
     v_tool_.resize(nt);
@@ -141,19 +133,20 @@ class particle_to_segment {
     ready_ = true;
   }
 
-  step_result enforce(double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
-    if (!ready_) fail("contact: enforce() called before setup(); the solver must call setup(body) once");
-    const std::size_t np = X_->size();
+  contact_result enforce(const contact_body& body, double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
+    if (!ready_) fail("contact: enforce() called before setup(); the solver must call setup(body, slaves) once");
+    const std::size_t np = body.reference_position.size();
     if (d.size() != np || v.size() != np)
       fail("contact: {} displacements and {} velocities for {} particles", d.size(), v.size(), np);
     if (!(dt > 0.0)) fail("contact: time step {} must be positive", dt);
-    step_result result;
+    contact_result result;
     const index_t ns = static_cast<index_t>(slave_.size());
     const index_t nt = static_cast<index_t>(tools_.size());
-    const std::vector<double>& m = *m_;
+    const std::span<const double> m = body.mass;
+    const std::span<const vec2> X = body.reference_position;
 
     // (i) physical slave positions and velocities on the predicted configuration.
-    for (index_t j = 0; j < ns; ++j) slave_state(j, d, v);
+    for (index_t j = 0; j < ns; ++j) slave_state(X, j, d, v);
     for (index_t k = 0; k < nt; ++k) {
       u_now_[k] = tools_[k].displacement(t);
       v_tool_[k] = (u_now_[k] - tools_[k].displacement(t - dt)) / dt;
@@ -188,7 +181,7 @@ class particle_to_segment {
     for (int sweep = 0; sweep < enforcement_.sweeps && pairs_ > 0; ++sweep) {
       const double omega = sweep == 0 ? 1.0 : enforcement_.relaxation;
       if (sweep > 0)
-        for (index_t q = 0; q < pairs_; ++q) slave_state(pair_[q].slave, d, v);
+        for (index_t q = 0; q < pairs_; ++q) slave_state(X, pair_[q].slave, d, v);
       for (index_t q = 0; q < pairs_; ++q) {
         contact_pair& p = pair_[q];
         const index_t j = p.slave;
@@ -216,10 +209,8 @@ class particle_to_segment {
       for (index_t s = 0; s < touched_count_; ++s) {
         const index_t I = touched_[s];
         const vec2 da = dforce_[I] / m[I];
-        const vec2 v_before = v[I];
         v[I] += dt * da;
         d[I] += dt * dt * da;
-        result.work += 0.5 * dt * dforce_[I].dot(v_before + v[I]);
         dforce_[I].setZero();
       }
     }
@@ -234,7 +225,7 @@ class particle_to_segment {
     }
     // Remember where the slaves ended up, for the crossing test of the next call.
     if (touched_count_ > 0)
-      for (index_t j = 0; j < ns; ++j) x_[j] = (*X_)[slave_[j]] + table_.interpolate(j, d);
+      for (index_t j = 0; j < ns; ++j) x_[j] = X[slave_[j]] + table_.interpolate(j, d);
     touched_count_ = 0;
     std::swap(x_prev_, x_);
     for (index_t k = 0; k < nt; ++k) u_prev_[k] = u_now_[k];
@@ -242,20 +233,19 @@ class particle_to_segment {
   }
 
  private:
-  void slave_state(index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
+  void slave_state(std::span<const vec2> X, index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
     vec2 u = vec2::Zero(), w = vec2::Zero();
     for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {
       const index_t I = table_.neighbor[e];
       u += table_.N[e] * d[I];
       w += table_.N[e] * v[I];
     }
-    x_[j] = (*X_)[slave_[j]] + u;
+    x_[j] = X[slave_[j]] + u;
     v_[j] = w;
   }
 
   // A tool may touch the body at t = 0 but not start inside it.
-  void check_initial_penetration() const {
-    const std::vector<vec2>& X = *X_;
+  void check_initial_penetration(std::span<const vec2> X) const {
     vec2 lo = X[0], hi = X[0];
     for (const vec2& x : X) {
       lo = lo.cwiseMin(x);
@@ -283,8 +273,6 @@ class particle_to_segment {
   Friction friction_;
   Enforcement enforcement_;
 
-  const std::vector<vec2>* X_ = nullptr;
-  const std::vector<double>* m_ = nullptr;
   std::vector<index_t> slave_;
   shape_table<2> table_;
   std::vector<double> m_eff_;

@@ -22,6 +22,7 @@
 
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/joined_name.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/material/hardening.hpp>
@@ -29,6 +30,8 @@
 #include <rkpm/material/radial_return.hpp>
 
 namespace rkpm::material {
+
+inline constexpr std::string_view j2_name = "j2";
 
 struct j2_state {
   mat3 elastic_left_cauchy_green = mat3::Identity();  // b_e, block-structured
@@ -40,7 +43,8 @@ struct j2_state {
 template <Hardening H>
 class j2_plasticity {
  public:
-  static constexpr std::string_view name = "j2";
+  // "j2+linear", "j2+power": the hardening law is part of the name.
+  static constexpr std::string_view name = joined_name<j2_name, H::name>::value;
   using hardening_type = H;
   using state_type = j2_state;
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/concepts/correction.hpp>
 #include <rkpm/concepts/geometry.hpp>
@@ -14,7 +14,7 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/concepts/quadrature.hpp>
 #include <rkpm/contact/none.hpp>
-#include <rkpm/discretization/quadrature_rules.hpp>
+#include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
@@ -48,7 +48,8 @@ struct config {
   template <class X> using with_material = config<K, C, Q, G, X, Ct>;
   template <class X> using with_contact = config<K, C, Q, G, M, X>;
 
-  // "cubic-linear-q2-plane_strain-j2-none": for messages, file names and benchmarks.
+  // "cubic-linear-q2-plane_strain-j2+linear-none": one name per configuration (composed
+  // policies join their parts with '+'), for messages, file names and benchmarks.
   static std::string name() {
     return std::string(K::name) + "-" + std::string(C::name) + "-" + std::string(Q::name) + "-" +
            std::string(G::name) + "-" + std::string(M::name) + "-" + std::string(Ct::name);

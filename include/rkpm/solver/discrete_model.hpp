@@ -1,7 +1,7 @@
 #pragma once
 // discrete_model: everything the time-stepping loop reads, computed once in the reference
 // configuration (docs/method.md sections 2.7 and 9.3). Only this builder depends on the kernel, the
-// correction and the quadrature rule; the loop (solver/dynamics.hpp) does not, so those
+// correction and the quadrature rule; the loop (solver/explicit_solver.hpp) does not, so those
 // policies cost a small instantiation each instead of a copy of the whole solver.
 //   points               quadrature points X_q and weights w_q (2 pi R included)
 //   at_points            N_I(X_q), grad N_I(X_q)
@@ -10,7 +10,7 @@
 //   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, docs/method.md (38))
 
 #include <cmath>
-#include <string_view>
+#include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/quadrature.hpp>
@@ -20,10 +20,6 @@
 
 namespace rkpm {
 
-struct policy_names {
-  std::string_view kernel, correction, quadrature, geometry;
-};
-
 struct discrete_model {
   particle_set<2> particles;
   background_mesh mesh;
@@ -32,7 +28,6 @@ struct discrete_model {
   shape_table_transpose particles_of_points;
   shape_table<2> at_particles;
   std::vector<double> lumped_volume;
-  policy_names names;
 
   index_t particle_count() const { return particles.size(); }
   index_t point_count() const { return points.size(); }
@@ -52,7 +47,6 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
          particle_volume, cell_area);
 
   discrete_model m;
-  m.names = {K::name, C::name, Q::name, G::name};
   m.points = make_quadrature_points<Q, G>(mesh);
   const neighbor_search<2> search(particles);
   const rk_shape_functions<K, C, 2> rk(max_condition);
@@ -73,6 +67,13 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
   m.particles = std::move(particles);
   m.mesh = std::move(mesh);
   return m;
+}
+
+// Lumped masses m_I = rho0 V_I (docs/method.md section 5).
+inline std::vector<double> lumped_masses(const discrete_model& m, double density) {
+  std::vector<double> mass(m.lumped_volume.size());
+  for (std::size_t I = 0; I < mass.size(); ++I) mass[I] = density * m.lumped_volume[I];
+  return mass;
 }
 
 }  // namespace rkpm

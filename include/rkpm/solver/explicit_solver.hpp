@@ -1,44 +1,229 @@
 #pragma once
-// explicit_solver<Config>: the solver type of one configuration. It builds the discrete model
-// with the configuration's kernel, correction and quadrature, then integrates with the
-// dynamics of its geometry, material and contact (solver/dynamics.hpp).
+// explicit_solver<Geometry, Material, Contact>: the explicit large-deformation time integrator
+// on the RK coefficients (docs/method.md section 5). It reads only the precomputed
+// discrete_model, so it does not depend on the kernel, correction or quadrature rule: build
+// one with make_solver<Config> (solver/make_solver.hpp).
 //
-//   using method = rkpm::config<kernel::cubic_spline, correction::linear, quadrature::q2,
-//                               geometry::axisymmetric, material::j2_plasticity<...>, ...>;
-//   rkpm::explicit_solver<method> solver(problem, options);
-//   solver.run(observer, every);
+// One step (velocity form of the central-difference scheme, lumped mass, docs/method.md (5.1)):
+//   v(n+1/2) = v(n) + dt/2 a(n);            d(n+1) = d(n) + dt v(n+1/2)      (prediction)
+//   contact corrects v(n+1/2), d(n+1) on the predicted configuration (section 6)
+//   constraints project v(n+1/2) onto the prescribed physical velocities; d(n+1) follows
+//   f_int(n+1) from the material at every quadrature point (solver/point_materials.hpp)
+//   a(n+1) = (f_ext - f_int) / m;  v(n+1) = v(n+1/2) + dt/2 a(n+1); constraints again.
+// No heap allocation inside step(); the result does not depend on the thread count.
 
-#include <rkpm/solver/config.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ranges>
+#include <vector>
+
+#include <rkpm/concepts/contact.hpp>
+#include <rkpm/concepts/geometry.hpp>
+#include <rkpm/concepts/material.hpp>
+#include <rkpm/solver/body_setup.hpp>
+#include <rkpm/solver/constraints.hpp>
 #include <rkpm/solver/discrete_model.hpp>
-#include <rkpm/solver/dynamics.hpp>
+#include <rkpm/solver/energy.hpp>
+#include <rkpm/solver/fields.hpp>
+#include <rkpm/solver/point_materials.hpp>
+#include <rkpm/solver/problem.hpp>
+#include <rkpm/solver/time_step_controller.hpp>
 
 namespace rkpm {
 
-template <class Config>
-using problem_for = problem<typename Config::material_type, typename Config::contact_type>;
-
-template <class Config>
-class explicit_solver
-    : public dynamics<typename Config::geometry_type, typename Config::material_type, typename Config::contact_type> {
-  using base = dynamics<typename Config::geometry_type, typename Config::material_type, typename Config::contact_type>;
-
+template <Geometry G, Material M, Contact Ct>
+class explicit_solver {
  public:
-  using config_type = Config;
+  using geometry_type = G;
+  using material_type = M;
+  using contact_type = Ct;
+  using state_type = typename M::state_type;
 
-  explicit_solver(problem_for<Config> p, run_options options)
-      : explicit_solver(build_model(p, options), std::move(p), options) {}
+  explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options)
+      : model_(std::move(model)), material_(std::move(prob.material)), contact_(std::move(prob.contact)),
+        options_(options) {
+    options_.validate();
+    material_.constants().validate();
+    const index_t n = model_.particle_count();
+    mass_ = lumped_masses(model_, material_.density());
+    d_.assign(n, vec2::Zero());
+    v_ = a_ = d_prev_ = v_before_ = v_half_prev_ = f_int_ = f_int_prev_ = d_;
+    f_ext_.resize(n);
+    for (index_t I = 0; I < n; ++I) f_ext_[I] = mass_[I] * prob.body_force;
+    points_ = point_materials<G, M>(model_, material_);
+
+    add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
+    constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
+    const contact_slaves slaves = select_slaves(model_, std::move(prob.slave_particles), has_tools());
+    slave_ = slaves.particle;
+    contact_.setup(body(), slaves);
+    if (prob.initial_velocity)
+      for (index_t I = 0; I < n; ++I) v_[I] = prob.initial_velocity(model_.particles.position[I]);
+    constraints_.apply(0.0, v_);
+    v_half_prev_ = v_;
+
+    compute_internal_force();
+    for (index_t I = 0; I < n; ++I) a_[I] = (f_ext_[I] - f_int_[I]) / mass_[I];
+    dt_ = clock_.start(model_, material_.constants(), mass_, points_.deformation_gradients(), options_);
+    check_step_budget();
+    energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
+    energy_.record();
+  }
+
+  // ---- stepping ----------------------------------------------------------------------
+  void step() {
+    const double dt = dt_;
+    step_dt_ = dt;  // errors raised inside the step name the step being taken
+    d_prev_ = d_;
+    const index_t n = model_.particle_count();
+#pragma omp parallel for schedule(static)
+    for (index_t I = 0; I < n; ++I) {
+      v_[I] += 0.5 * dt * a_[I];
+      d_[I] += dt * v_[I];
+    }
+    if (has_tools()) {
+      v_before_ = v_;
+      last_contact_ = contact_.enforce(body(), time_ + dt, dt, d_, v_);
+      energy_.contact += impulse_work(mass_, v_, v_before_, v_half_prev_);
+      max_penetration_ = std::max(max_penetration_, last_contact_.max_penetration);
+    }
+    if (constraints_.size() > 0) {
+      v_before_ = v_;
+      constraints_.apply(time_ + 0.5 * dt, v_);
+      energy_.constraint += impulse_work(mass_, v_, v_before_, v_half_prev_);
+      for (index_t I = 0; I < n; ++I) d_[I] = d_prev_[I] + dt * v_[I];
+    }
+    v_half_prev_ = v_;
+
+    std::swap(f_int_, f_int_prev_);
+    compute_internal_force();
+    add_force_work(energy_, f_int_prev_, f_int_, f_ext_, d_prev_, d_);
+
+#pragma omp parallel for schedule(static)
+    for (index_t I = 0; I < n; ++I) {
+      a_[I] = (f_ext_[I] - f_int_[I]) / mass_[I];
+      v_[I] += 0.5 * dt * a_[I];
+    }
+    if (constraints_.size() > 0) {
+      v_before_ = v_;
+      constraints_.apply(time_ + dt, v_);
+      energy_.constraint += impulse_work(mass_, v_, v_before_, v_half_prev_);
+    }
+    time_ += dt;
+    ++steps_;
+    step_dt_ = 0.0;
+    dt_min_ = std::min(dt_min_, dt);
+    dt_max_ = std::max(dt_max_, dt);
+    energy_.kinetic = kinetic_energy();
+    energy_.record();
+    if (steps_ % options_.time_step_update_interval == 0)
+      dt_ = clock_.update(model_, material_.constants(), mass_, points_.deformation_gradients(),
+                          points_.min_stretch(), options_, time_, steps_);
+  }
+
+  // Steps to options.end_time, calling observe(*this) at the start, every `every` steps
+  // (0: never in between) and at the end. Stops with an error past options.max_steps.
+  template <class Observer>
+  void run(Observer&& observe, index_t every = 0) {
+    observe(*this);
+    const double end = options_.end_time;
+    while (time_ < end * (1.0 - 1e-12)) {
+      if (time_ + dt_ > end) dt_ = end - time_;  // land on the end time exactly
+      if (steps_ >= options_.max_steps)
+        fail("t = {:.6g} s of {:.6g} s after {} steps, the limit max_steps: the stable step has shrunk to "
+             "{:.3g} s (a body crushed or inverting?); raise max_steps if the run is meant to be this long",
+             time_, end, steps_, dt_);
+      step();
+      if (every > 0 && steps_ % every == 0 && time_ < end * (1.0 - 1e-12)) observe(*this);
+    }
+    observe(*this);
+  }
+  void run() {
+    run([](const explicit_solver&) {});
+  }
+
+  // ---- results -----------------------------------------------------------------------
+  double time() const { return time_; }
+  index_t steps() const { return steps_; }
+  double time_step() const { return dt_; }
+  double min_time_step() const { return steps_ ? dt_min_ : dt_; }
+  double max_time_step() const { return steps_ ? dt_max_ : dt_; }
+  double reference_stable_step() const { return clock_.reference_stable_step(); }
+  // Steps to the end time at the current step size (the progress line's estimate).
+  double estimated_steps_left() const { return std::max(0.0, options_.end_time - time_) / dt_; }
+  // Smallest support stretch over the quadrature points at the last force evaluation.
+  double min_stretch() const { return points_.min_stretch(); }
+  const energy_balance& energy() const { return energy_; }
+  const run_options& options() const { return options_; }
+  const discrete_model& model() const { return model_; }
+  const M& material() const { return material_; }
+  const Ct& contact() const { return contact_; }
+  Ct& contact() { return contact_; }
+  const contact_result& last_contact() const { return last_contact_; }
+  double max_penetration() const { return max_penetration_; }
+  const std::vector<double>& mass() const { return mass_; }
+  const std::vector<vec2>& coefficients() const { return d_; }
+  const std::vector<vec2>& coefficient_velocities() const { return v_; }
+  const std::vector<vec2>& internal_force() const { return f_int_; }
+  const std::vector<state_type>& point_states() const { return points_.states(); }
+  const std::vector<double>& point_det_F() const { return points_.det_F(); }
+  const constraint_projector& constraints() const { return constraints_; }
+  const std::vector<index_t>& slave_particles() const { return slave_; }
+  // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
+  contact_body body() const { return {model_.particles.position, mass_}; }
+
+  // Cauchy stress sigma = tau / J at quadrature point q.
+  mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stresses()[q] / points_.det_F()[q]; }
+  // Physical displacements, velocities and current positions x_I = X_I + u(X_I).
+  std::vector<vec2> particle_displacements() const { return values_at_particles(model_, d_); }
+  std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
+  std::vector<vec2> particle_positions() const {
+    std::vector<vec2> x = values_at_particles(model_, d_);
+    for (index_t I = 0; I < model_.particle_count(); ++I) x[I] += model_.particles.position[I];
+    return x;
+  }
+  template <class Value, class PointValue>
+  std::vector<Value> project_to_particles(PointValue&& at_point) const {
+    return rkpm::project_to_particles<Value>(model_, at_point);
+  }
+  double kinetic_energy() const { return rkpm::kinetic_energy(mass_, v_); }
 
  private:
-  // Delegation keeps the order explicit: the model is built from the problem before the
-  // problem is moved into the dynamics.
-  explicit_solver(discrete_model model, problem_for<Config>&& p, run_options options)
-      : base(std::move(model), std::move(p), options) {}
+  bool has_tools() const { return !std::ranges::empty(contact_.tools()); }
 
-  static discrete_model build_model(const problem_for<Config>& p, const run_options& options) {
-    return build_discrete_model<typename Config::kernel_type, typename Config::correction_type,
-                                typename Config::quadrature_type, typename Config::geometry_type>(
-        p.particles, p.mesh, options.max_moment_condition);
+  void compute_internal_force() {
+    points_.internal_force(model_, material_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});
+    energy_.plastic = points_.plastic_work();
   }
+
+  // A run that would need more steps than options.max_steps is refused before it starts.
+  void check_step_budget() const {
+    const double steps = options_.end_time / dt_;
+    if (steps > static_cast<double>(options_.max_steps))
+      fail("the run would take about {:.3g} steps (end time {:.6g} s / stable step {:.3g} s), more than "
+           "max_steps = {}: check the material constants and units (a modulus too large, a density too "
+           "small?) or the particle spacing, or raise max_steps",
+           steps, options_.end_time, dt_, options_.max_steps);
+  }
+
+  discrete_model model_;
+  M material_;
+  Ct contact_;
+  run_options options_;
+  std::vector<double> mass_;
+  std::vector<vec2> d_, v_, a_, d_prev_, v_before_, v_half_prev_, f_int_, f_int_prev_, f_ext_;
+  point_materials<G, M> points_;
+  time_step_controller<G> clock_;
+  constraint_projector constraints_;
+  std::vector<index_t> slave_;
+  energy_balance energy_;
+  contact_result last_contact_;
+  double max_penetration_ = 0.0;
+  double step_dt_ = 0.0;  // the step being taken, 0 between steps
+  double time_ = 0.0, dt_ = 0.0;
+  double dt_min_ = std::numeric_limits<double>::infinity(), dt_max_ = 0.0;
+  index_t steps_ = 0;
 };
 
 }  // namespace rkpm

@@ -16,67 +16,45 @@
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/point_forces.hpp>
 
 namespace rkpm {
 
 // Scratch arrays of the matrix-free stiffness, sized once (no allocation per call).
 struct stiffness_workspace {
   std::vector<vec2> kx;
-  std::vector<mat2> stress_w;
-  std::vector<double> hoop_w;
-  explicit stiffness_workspace(const discrete_model& m)
-      : kx(m.particle_count()), stress_w(m.point_count()), hoop_w(m.point_count()) {}
+  point_stresses stresses;
+  explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()), stresses(m.point_count()) {}
 };
 
 // out = K x about the configuration F (#points; empty: the reference configuration).
 template <Geometry G>
 void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
                              const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out,
-                             std::vector<mat2>& stress_w, std::vector<double>& hoop_w) {
+                             point_stresses& stresses) {
   const double lambda = c.lame_lambda(), mu = c.shear_modulus();
-  const auto& t = m.at_points;
-  const index_t nq = m.point_count();
   const bool reference = F.empty();
-#pragma omp parallel for schedule(static)
-  for (index_t q = 0; q < nq; ++q) {
-    mat2 dH = mat2::Zero();
-    vec2 du = vec2::Zero();
-    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) {
-      dH.noalias() += x[t.neighbor[e]] * t.grad[e].transpose();
-      du += t.N[e] * x[t.neighbor[e]];
-    }
+  assemble_point_forces<G>(m, x, stresses, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
     const vec2& X = m.points.position[q];
     const mat2 Fi = reference ? mat2::Identity() : mat2(F[q].topLeftCorner<2, 2>().inverse());
     const double F33 = reference ? 1.0 : F[q](2, 2);
     const double J = reference ? 1.0 : F[q].determinant();
-    const mat2 L = dH * Fi;
+    const mat2 L = g.H * Fi;
     const mat2 de = 0.5 * (L + L.transpose());
-    const double de33 = (G::out_of_plane_stretch(du, X) - 1.0) / F33;
+    const double de33 = (G::out_of_plane_stretch(g.u, X) - 1.0) / F33;
     const double tr = de.trace() + de33;
     const mat2 ds = lambda * tr * mat2::Identity() + 2.0 * mu * de;
-    stress_w[q] = J * ds * Fi.transpose() * m.points.weight[q];
-    hoop_w[q] = G::is_axisymmetric ? J * (lambda * tr + 2.0 * mu * de33) / F33 * m.points.weight[q] / X[0] : 0.0;
-  }
-  const auto& tt = m.particles_of_points;
-#pragma omp parallel for schedule(static)
-  for (index_t I = 0; I < m.particle_count(); ++I) {
-    vec2 f = vec2::Zero();
-    for (index_t s = tt.offset[I]; s < tt.offset[I + 1]; ++s) {
-      const index_t e = tt.entry[s], q = tt.point[s];
-      f.noalias() += stress_w[q] * t.grad[e];
-      if constexpr (G::is_axisymmetric) f[0] += hoop_w[q] * t.N[e];
-    }
-    out[I] = f;
-  }
+    S = J * ds * Fi.transpose() * m.points.weight[q];
+    hoop = G::is_axisymmetric ? J * (lambda * tr + 2.0 * mu * de33) / F33 * m.points.weight[q] / X[0] : 0.0;
+  });
 }
 
 // Reference configuration: out = K0 x.
 template <Geometry G>
 void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<vec2>& x, std::vector<vec2>& out,
-                             std::vector<mat2>& stress_w, std::vector<double>& hoop_w) {
+                             const std::vector<vec2>& x, std::vector<vec2>& out, point_stresses& stresses) {
   static const std::vector<mat3> reference;
-  apply_elastic_stiffness<G>(m, c, reference, x, out, stress_w, hoop_w);
+  apply_elastic_stiffness<G>(m, c, reference, x, out, stresses);
 }
 
 // A start vector with every frequency present (deterministic, so runs repeat exactly).
@@ -93,7 +71,7 @@ double largest_frequency_squared(const discrete_model& m, const material::elasti
   const index_t n = m.particle_count();
   double omega2 = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    apply_elastic_stiffness<G>(m, c, F, x, w.kx, w.stress_w, w.hoop_w);
+    apply_elastic_stiffness<G>(m, c, F, x, w.kx, w.stresses);
     double xkx = 0.0, xmx = 0.0, norm = 0.0;
     for (index_t I = 0; I < n; ++I) {
       xkx += x[I].dot(w.kx[I]);

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/approximation/rk_shape_functions.hpp>
 #include <rkpm/discretization/neighbor_search.hpp>
 #include <rkpm/discretization/particle_set.hpp>

@@ -13,7 +13,7 @@
 #include <numbers>
 
 #include <rkpm/discretization/quadrature_points.hpp>
-#include <rkpm/discretization/quadrature_rules.hpp>
+#include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/kernel/quartic_spline.hpp>

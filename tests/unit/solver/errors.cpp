@@ -54,7 +54,7 @@ TEST_CASE("run options") {
     return message_of([&] {
       run_options o;
       change(o);
-      explicit_solver<cfg> s(test::grid_problem<cfg>(lo, hi, n), o);
+      auto s = make_solver<cfg>(test::grid_problem<cfg>(lo, hi, n), o);
     });
   };
   CHECK(with([](run_options& o) { o.time_step_fraction = 1.5; }).find("time step fraction") != std::string::npos);
@@ -64,23 +64,23 @@ TEST_CASE("run options") {
 
 TEST_CASE("a forced time step above the stable limit") {
   run_options probe;
-  explicit_solver<cfg> s(test::grid_problem<cfg>(lo, hi, n), probe);
+  auto s = make_solver<cfg>(test::grid_problem<cfg>(lo, hi, n), probe);
   const double stable = s.time_step() / probe.time_step_fraction;
   run_options o;
   o.fixed_time_step = 1.5 * stable;
-  const auto m = message_of([&] { explicit_solver<cfg> t(test::grid_problem<cfg>(lo, hi, n), o); });
+  const auto m = message_of([&] { auto t = make_solver<cfg>(test::grid_problem<cfg>(lo, hi, n), o); });
   CHECK(m.find("exceeds the stable limit") != std::string::npos);
   CHECK(m.find("fixed_time_step") != std::string::npos);  // names the fix
   // Just below the limit is accepted and used as given.
   o.fixed_time_step = 0.9 * stable;
-  explicit_solver<cfg> t(test::grid_problem<cfg>(lo, hi, n), o);
+  auto t = make_solver<cfg>(test::grid_problem<cfg>(lo, hi, n), o);
   CHECK(t.time_step() == o.fixed_time_step);
 }
 
 TEST_CASE("particles inconsistent with the cells") {
   auto p = test::grid_problem<cfg>(lo, hi, n);
   p.mesh = make_grid_mesh(lo, vec2(2e-2, 5e-3), n);  // twice as long as the particle set
-  const auto m = message_of([&] { explicit_solver<cfg> s(std::move(p), run_options{}); });
+  const auto m = message_of([&] { auto s = make_solver<cfg>(std::move(p), run_options{}); });
   CHECK(m.find("cells") != std::string::npos);
   CHECK(m.find("particle") != std::string::npos);
 }
@@ -91,7 +91,7 @@ TEST_CASE("the body inverts: the error gives step, time and point") {
     p.initial_velocity = std::move(v);
     run_options o;
     o.end_time = 1.0;
-    explicit_solver<C> s(std::move(p), o);
+    auto s = make_solver<C>(std::move(p), o);
     const auto m = message_of([&] {
       for (int k = 0; k < 5; ++k) s.step();
     });

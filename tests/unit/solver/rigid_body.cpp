@@ -25,17 +25,17 @@ template <class Cfg>
 void check_zero_stress(const std::function<vec2(const vec2&)>& u) {
   auto s = test::solver_at<Cfg>(test::grid_problem<Cfg>(lo, hi, n, c), u, test::tiny_step(h, c));
   double worst_stress = 0.0, worst_force = 0.0;
-  for (index_t q = 0; q < s->model().point_count(); ++q)
-    worst_stress = std::max(worst_stress, s->point_cauchy_stress(q).cwiseAbs().maxCoeff());
-  for (const vec2& f : s->internal_force()) worst_force = std::max(worst_force, f.cwiseAbs().maxCoeff());
+  for (index_t q = 0; q < s.model().point_count(); ++q)
+    worst_stress = std::max(worst_stress, s.point_cauchy_stress(q).cwiseAbs().maxCoeff());
+  for (const vec2& f : s.internal_force()) worst_force = std::max(worst_force, f.cwiseAbs().maxCoeff());
   // Scales: stress E, internal force E h (per metre of depth).
   CHECK(worst_stress / c.youngs_modulus < 1e-11);
   CHECK(worst_force / (c.youngs_modulus * h) < 1e-11);
   // The displacement really is the rigid motion (so the test cannot pass with u = 0).
-  const auto x = s->particle_positions();
+  const auto x = s.particle_positions();
   double worst_position = 0.0;
-  for (index_t I = 0; I < s->model().particle_count(); ++I)
-    worst_position = std::max(worst_position, (x[I] - s->model().particles.position[I] - u(s->model().particles.position[I])).norm());
+  for (index_t I = 0; I < s.model().particle_count(); ++I)
+    worst_position = std::max(worst_position, (x[I] - s.model().particles.position[I] - u(s.model().particles.position[I])).norm());
   CHECK(worst_position < 1e-12);
 }
 
@@ -75,19 +75,19 @@ TEST_CASE("internal forces sum to zero for an arbitrary deformed state") {
     auto s = test::solver_at<Cfg>(test::grid_problem<Cfg>(lo, hi, n, c), u, test::tiny_step(h, c));
     vec2 sum = vec2::Zero();
     double size = 0.0;
-    for (const vec2& f : s->internal_force()) {
+    for (const vec2& f : s.internal_force()) {
       sum += f;
       size += f.norm();
     }
     REQUIRE(size > 1e-3 * c.youngs_modulus * h);
     CHECK(sum.norm() / size < 1e-12);
-    return s->point_states()[0].equivalent_plastic_strain;
+    return s.point_states()[0].equivalent_plastic_strain;
   };
   check.operator()<elastic_cfg>();
   // The J2 run is plastic somewhere, so the check covers the return mapping too.
   auto s = test::solver_at<j2_cfg>(test::grid_problem<j2_cfg>(lo, hi, n, c), u, test::tiny_step(h, c));
   double eps_p = 0.0;
-  for (const auto& st : s->point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
+  for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
   CHECK(eps_p > 0.0);
   check.operator()<j2_cfg>();
 }

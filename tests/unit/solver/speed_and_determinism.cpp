@@ -58,7 +58,7 @@ long allocations_per_steps(problem_for<Cfg> p, int warmup, int steps) {
   run_options o;
   o.end_time = 1.0;
   o.time_step_update_interval = 5;
-  explicit_solver<Cfg> s(std::move(p), o);
+  auto s = make_solver<Cfg>(std::move(p), o);
   for (int k = 0; k < warmup; ++k) s.step();
   allocations = 0;
   counting = true;
@@ -97,7 +97,7 @@ TEST_CASE("results do not depend on the thread count") {
     omp_set_num_threads(threads);
     run_options o;
     o.end_time = 1.0;
-    explicit_solver<axi_cfg> s(impact_problem<axi_cfg>(), o);
+    auto s = make_solver<axi_cfg>(impact_problem<axi_cfg>(), o);
     for (int k = 0; k < 60; ++k) s.step();
     CHECK(s.last_contact().active > 0);
     return std::pair{s.coefficients(), s.energy().internal};

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include <rkpm/approximation/basis.hpp>
+#include <rkpm/correction/polynomial_bases.hpp>
 
 using rkpm::vec;
 using rkpm::correction::linear;

@@ -1,0 +1,36 @@
+#pragma once
+// make_solver<Config>(problem, options): the one way to build a solver. It builds the discrete
+// model with the configuration's kernel, correction and quadrature rule, then the explicit
+// solver of its geometry, material and contact. The solver type depends only on those three,
+// so every kernel/correction/quadrature choice shares one instantiation of the time loop.
+//
+//   using method = rkpm::config<kernel::cubic_spline, correction::linear, quadrature::q2,
+//                               geometry::axisymmetric, material::j2_plasticity<...>, ...>;
+//   auto solver = rkpm::make_solver<method>(problem, options);
+//   solver.run(observer, every);
+
+#include <utility>
+
+#include <rkpm/solver/config.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/explicit_solver.hpp>
+
+namespace rkpm {
+
+template <class Config>
+using problem_for = problem<typename Config::material_type, typename Config::contact_type>;
+
+template <class Config>
+using solver_for =
+    explicit_solver<typename Config::geometry_type, typename Config::material_type, typename Config::contact_type>;
+
+template <class Config>
+solver_for<Config> make_solver(problem_for<Config> p, const run_options& options) {
+  discrete_model model =
+      build_discrete_model<typename Config::kernel_type, typename Config::correction_type,
+                           typename Config::quadrature_type, typename Config::geometry_type>(
+          std::move(p.particles), std::move(p.mesh), options.max_moment_condition);
+  return solver_for<Config>(std::move(model), std::move(p), options);
+}
+
+}  // namespace rkpm

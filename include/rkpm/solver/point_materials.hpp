@@ -1,0 +1,136 @@
+#pragma once
+// point_materials<G, M>: the material at every quadrature point and the internal force it
+// gives (docs/method.md sections 4 and 5). At the coefficients d:
+//   F_q = I + H_q (in-plane block),  F33 from the geometry,  tau_q from the material update,
+//   S_q = tau_q F_q^-T w_q (in-plane),  h_q = tau33_q / F33_q w_q / R_q (axisymmetric),
+// scattered by the force loop (solver/point_forces.hpp) into f_int. It also records what the
+// time-step controller and the energy ledger read: the narrowest support stretch and the
+// plastic work. A point with det F <= 0 or a failed material update stops the run with an
+// error naming the point, its position and the step.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <rkpm/concepts/geometry.hpp>
+#include <rkpm/concepts/material.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/point_forces.hpp>
+
+namespace rkpm {
+
+// Where an error happened, for its message.
+struct step_context {
+  index_t step = 0;
+  double time = 0.0;
+};
+
+template <Geometry G, Material M>
+class point_materials {
+ public:
+  using state_type = typename M::state_type;
+
+  point_materials() = default;
+  point_materials(const discrete_model& m, const M& material)
+      : state_(m.point_count(), material.initial_state()),
+        tau_(m.point_count(), mat3::Zero()),
+        F_(m.point_count(), mat3::Identity()),
+        det_F_(m.point_count(), 1.0),
+        stretch_(m.point_count(), 1.0),
+        failed_(m.point_count(), 0),
+        stresses_(m.point_count()) {
+    support_inverse_.setZero();
+    for (const vec2& a : m.particles.support) support_inverse_ += a;
+    support_inverse_ = (support_inverse_ / static_cast<double>(m.particle_count())).cwiseInverse();
+  }
+
+  // f_int at coefficients d; advances the material states to the new F.
+  void internal_force(const discrete_model& m, const M& material, const std::vector<vec2>& d,
+                      std::vector<vec2>& f_int, step_context where) {
+    assemble_point_forces<G>(m, d, stresses_, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
+      const vec2& X = m.points.position[q];
+      mat3 F = mat3::Identity();
+      F.topLeftCorner<2, 2>() += g.H;
+      F(2, 2) = G::out_of_plane_stretch(g.u, X);
+      const double J = F.determinant();
+      F_[q] = F;
+      det_F_[q] = J;
+      failed_[q] = 0;
+      if (!(J > 0.0) || !std::isfinite(J)) {
+        failed_[q] = 1;
+        return;
+      }
+      try {
+        tau_[q] = material.kirchhoff_stress(F, state_[q]);
+      } catch (const std::exception& ex) {
+        failed_[q] = 2;
+#pragma omp critical(rkpm_material_error)
+        if (error_.empty()) error_ = ex.what();
+        return;
+      }
+      const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
+      S = tau_[q].topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
+      hoop = G::is_axisymmetric ? tau_[q](2, 2) / F(2, 2) * m.points.weight[q] / X[0] : 0.0;
+      stretch_[q] = std::min(support_stretch(Fi), F(2, 2));
+    });
+    // Serial reductions: the same sums whatever the thread count.
+    double narrowest = std::numeric_limits<double>::infinity(), plastic = 0.0;
+    for (index_t q = 0; q < m.point_count(); ++q) {
+      if (failed_[q]) report_failure(m, q, where);
+      narrowest = std::min(narrowest, stretch_[q]);
+      plastic += state_[q].plastic_work * m.points.weight[q];
+    }
+    min_stretch_ = narrowest;
+    plastic_work_ = plastic;
+  }
+
+  // Smallest support stretch over the points at the last evaluation (1 at F = I).
+  double min_stretch() const { return min_stretch_; }
+  // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
+  double plastic_work() const { return plastic_work_; }
+  const std::vector<state_type>& states() const { return state_; }
+  const std::vector<mat3>& deformation_gradients() const { return F_; }
+  const std::vector<double>& det_F() const { return det_F_; }
+  const std::vector<mat3>& kirchhoff_stresses() const { return tau_; }
+
+ private:
+  [[noreturn]] void report_failure(const discrete_model& m, index_t q, step_context where) {
+    const vec2& X = m.points.position[q];
+    if (failed_[q] == 2) {
+      std::string message;
+      std::swap(message, error_);
+      fail("step {}, t = {:.6g} s: the material update failed at quadrature point {} (X = {:.6g}, {:.6g}): {}",
+           where.step, where.time, q, X[0], X[1], message);
+    }
+    fail("step {}, t = {:.6g} s: det F = {:.6g} at quadrature point {} (X = {:.6g}, {:.6g}): the body "
+         "has inverted or the solution has blown up; reduce the time step fraction, refine the "
+         "particles or check the boundary conditions. Output written so far is kept",
+         where.step, where.time, det_F_[q], q, X[0], X[1]);
+  }
+
+  // How much the support has narrowed, as the highest frequency sees it: current gradients
+  // are grad_x N = F^-T grad_X N with |grad_X N| ~ 1/a_k per direction, so the largest
+  // current gradient scale is the largest singular value of F^-T diag(1/a). Relative to the
+  // reference (1/min a_k) this is 1 at F = I and follows the thinnest direction of the
+  // deformed support, not merely the smallest stretch (the Taylor bar's supports are 4:1).
+  double support_stretch(const mat2& F_inverse) const {
+    const mat2 B = F_inverse.transpose() * support_inverse_.asDiagonal();
+    const double s = B.squaredNorm(), det = B.determinant();
+    const double largest = std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
+    return support_inverse_.maxCoeff() / largest;
+  }
+
+  std::vector<state_type> state_;
+  std::vector<mat3> tau_, F_;
+  std::vector<double> det_F_, stretch_;
+  std::vector<char> failed_;  // 1: det F <= 0, 2: material update threw
+  std::string error_;
+  point_stresses stresses_;
+  vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
+  double min_stretch_ = 1.0, plastic_work_ = 0.0;
+};
+
+}  // namespace rkpm
