@@ -11,6 +11,8 @@ endif()
 
 add_test(NAME tools.runner.bad_options
          COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} bad-options $<TARGET_FILE:rkpm_run> ${rkpm_runner_work})
+add_test(NAME tools.runner.step_budget
+         COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} step-budget $<TARGET_FILE:rkpm_run> ${rkpm_runner_work})
 add_test(NAME tools.runner.help COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} help $<TARGET_FILE:rkpm_run>)
 # A 2 us Taylor bar on 21 x 21 particles writes the files the next two tests read.
 add_test(NAME tools.runner.run
@@ -19,6 +21,6 @@ add_test(NAME tools.runner.outputs COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_c
 add_test(NAME tools.runner.vtk COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} vtk ${rkpm_runner_work}/taylor_bar)
 set_tests_properties(tools.runner.run PROPERTIES FIXTURES_SETUP rkpm_runner_output)
 set_tests_properties(tools.runner.outputs tools.runner.vtk PROPERTIES FIXTURES_REQUIRED rkpm_runner_output)
-set_tests_properties(tools.runner.bad_options tools.runner.help tools.runner.run tools.runner.outputs tools.runner.vtk
+set_tests_properties(tools.runner.bad_options tools.runner.step_budget tools.runner.help tools.runner.run tools.runner.outputs tools.runner.vtk
                      PROPERTIES TIMEOUT 120 LABELS "tools/runner"
                                 ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")

@@ -1,5 +1,5 @@
 #pragma once
-// The solver the benchmarks time: the Taylor bar of docs/method.md section 8 (axisymmetric,
+// The solver the benchmarks time: the Taylor bar of docs/method.md section 10.1 (axisymmetric,
 // J2 plasticity with linear hardening, the paper's contact enforcement against the rigid wall),
 // built by make_solver as everything else builds it. Also a contact-free twin whose impact
 // face rolls on the plane z = 0 (u_z = 0 there), which deforms almost as the frictionless wall

@@ -32,6 +32,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
   using Ct = typename Config::contact_type;
   run_options options;
   options.end_time = Case::end_time(p);
+  options.max_steps = r.max_steps;
   const std::function<solver_for<Config>()> make = [&] {
     return make_solver<Config>(Case::template build<Ct>(p, r.resolution), options);
   };

@@ -70,6 +70,10 @@ void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
       ->type_name("SECONDS")
       ->check(positive_seconds);
   sub->add_option("--threads", r.threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  sub->add_option("--max-steps", r.max_steps,
+                  "refuse a run estimated to need more steps (a wrong constant, not a long run)")
+      ->check(CLI::Range(1L, 1'000'000'000'000L))
+      ->capture_default_str();
   sub->add_option("--out", r.out_dir, "output directory (default results/CASE-QUADRATURE)");
   sub->add_option("--set", sets, "override a case parameter, SI units (`CASE --help` lists them); repeatable")
       ->check(parameter_setting<Case>())

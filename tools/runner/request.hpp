@@ -21,6 +21,7 @@ struct run_request {
   int resolution = 1;
   std::optional<double> end_time;  // s; overrides the case's
   int threads = 0;                 // 0: OpenMP's default
+  long max_steps = 50'000'000;     // run_options::max_steps: longer runs are refused before they start
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;
   bool quiet = false;              // no progress line

@@ -3,7 +3,7 @@
 //   linear:    [1, z1, z2]
 //   quadratic: [1, z1, z2, z1^2, z1 z2, z2^2]
 // The offset z is scaled by the support, so every entry is of order one and the moment
-// matrix stays well conditioned whatever the units (design.md section 4).
+// matrix stays well conditioned whatever the units (docs/method.md (7)-(8)).
 
 #include <Eigen/Core>
 #include <string_view>

@@ -1,6 +1,6 @@
 #pragma once
 // Quadrature rules on the reference square [-1, 1]^2 of a background cell
-// (spec/paper.md section 2). Each lists (xi, eta, weight); weights sum to 4.
+// (docs/method.md section 3). Each lists (xi, eta, weight); weights sum to 4.
 //   q4  2x2 Gauss, the paper's reference rule
 //   q2  the paper's two-point rule, our definition: the diagonal Gauss pair
 //       (-1/sqrt3, -1/sqrt3), (+1/sqrt3, +1/sqrt3), weight 2 each. Exact for 1, xi, eta,

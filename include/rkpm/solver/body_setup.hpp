@@ -1,6 +1,6 @@
 #pragma once
 // What the solver derives from the problem once, before the first step:
-//   axis_constraints   u_r = 0 on the axis of an axisymmetric body (docs/method.md section 4.2)
+//   axis_constraints   u_r = 0 on the axis of an axisymmetric body (docs/method.md section 5.7)
 //   select_slaves      the contact slaves and their shape-function rows (docs/method.md section 6)
 
 #include <algorithm>

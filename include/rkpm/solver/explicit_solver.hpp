@@ -4,7 +4,7 @@
 // discrete_model, so it does not depend on the kernel, correction or quadrature rule: build
 // one with make_solver<Config> (solver/make_solver.hpp).
 //
-// One step (velocity form of the central-difference scheme, lumped mass, docs/method.md (5.1)):
+// One step (velocity form of the central-difference scheme, lumped mass, docs/method.md (41)-(44)):
 //   v(n+1/2) = v(n) + dt/2 a(n);            d(n+1) = d(n) + dt v(n+1/2)      (prediction)
 //   contact corrects v(n+1/2), d(n+1) on the predicted configuration (section 6)
 //   constraints project v(n+1/2) onto the prescribed physical velocities; d(n+1) follows

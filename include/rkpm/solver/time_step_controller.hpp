@@ -1,5 +1,5 @@
 #pragma once
-// time_step_controller<G>: the step size of the explicit loop (docs/method.md section 5.3).
+// time_step_controller<G>: the step size of the explicit loop (docs/method.md section 5.6).
 // The stable step follows the current configuration: between power iterations it scales
 // with the narrowing of the supports (point_materials::min_stretch); when that has drifted by
 // 10%, or every 500 steps, a short power iteration on the current elastic tangent (warm-started,

@@ -93,6 +93,30 @@ def bad_options(rkpm_run, work):
         check(s.get("case") == "block_forging", f"only the set-up failure may write a summary, got {s.get('case')}")
 
 
+def step_budget(rkpm_run, work):
+    """A run that would need more steps than --max-steps is refused before it starts, in a few
+    seconds, with the estimate and the likely cause; its summary records the failure."""
+    for args, words in [
+        (["taylor_bar", "--set", "youngs_modulus_Pa=1e30", "--end-time", "1e-6"], ["steps", "max_steps", "modulus"]),
+        (["taylor_bar", "--max-steps", "100"], ["steps", "max_steps = 100"]),
+    ]:
+        out = os.path.join(work, "budget")
+        shutil.rmtree(out, ignore_errors=True)
+        r = run([rkpm_run] + args + ["--out", out, "--no-plots", "--quiet"])
+        err = r.stderr.rstrip("\n")
+        label = " ".join(args)
+        check(r.returncode != 0, f"'{label}': exit status {r.returncode}, expected non-zero")
+        check(err.count("\n") == 0 and err.startswith("rkpm_run: "), f"'{label}': expected a one-line error: {err!r}")
+        for word in words:
+            check(word in err, f"'{label}': the error does not say {word!r}: {err!r}")
+        with open(os.path.join(out, "summary.json")) as f:
+            s = strict_json(f)
+        check(s.get("status") == "failed" and "max_steps" in s.get("error", ""), f"'{label}': summary {s}")
+        print(f"ok  {label!r:50} -> {err}")
+    r = run([rkpm_run, "taylor_bar", "--max-steps", "0"])
+    check(r.returncode != 0 and "max-steps" in r.stderr, f"--max-steps 0 accepted: {r.stderr!r}")
+
+
 def help_text(rkpm_run):
     r = run([rkpm_run, "--help"])
     check(r.returncode == 0 and "--quadrature" in r.stdout and "--set" in r.stdout, "rkpm_run --help: usage text")
@@ -297,6 +321,8 @@ def main(argv):
         bad_options(argv[2], argv[3])
     elif mode == "help":
         help_text(argv[2])
+    elif mode == "step-budget":
+        step_budget(argv[2], argv[3])
     elif mode == "run":
         real_run(argv[2], argv[3])
     elif mode == "outputs":

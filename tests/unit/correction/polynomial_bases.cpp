@@ -1,4 +1,4 @@
-// The correction bases H(z) (spec/paper.md (P3)): the complete monomials of degree 1 and 2 in
+// The correction bases H(z) (docs/method.md (7)): the complete monomials of degree 1 and 2 in
 // 1D and 2D, in the documented order, with dH/dz checked against the monomials' closed-form
 // derivatives and against central differences.
 
