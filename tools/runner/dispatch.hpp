@@ -36,7 +36,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
   const std::function<solver_for<Config>()> make = [&] {
     return make_solver<Config>(Case::template build<Ct>(p, r.resolution), options);
   };
-  return simulate<Case, Config>(r, p, make);
+  return simulate<Case, solver_for<Config>>(r, p, method_names::of<Config>(), make);
 }
 
 template <class Case>

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -53,9 +54,20 @@ io::point_data snapshot_fields(const Solver& s) {
   return data;
 }
 
-template <class Case, class Config, class Solver>
+// The policy names of a configuration, as summary.json records them. Passed as values so that
+// simulate is compiled once per solver type (3 per case), not once per configuration (36).
+struct method_names {
+  std::string_view kernel, correction, quadrature, geometry, contact;
+  template <class Config>
+  static method_names of() {
+    return {Config::kernel_type::name, Config::correction_type::name, Config::quadrature_type::name,
+            Config::geometry_type::name, Config::contact_type::enforcement_type::name};
+  }
+};
+
+template <class Case, class Solver>
 run_outcome simulate(const run_request& request, const typename Case::parameters& params,
-                     const std::function<Solver()>& make) {
+                     const method_names& method, const std::function<Solver()>& make) {
   namespace fs = std::filesystem;
   run_outcome outcome;
   outcome.directory = request.output_directory();
@@ -65,11 +77,11 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   json& summary = outcome.summary;
   summary = json::object();
   summary["case"] = Case::name;
-  summary["kernel"] = Config::kernel_type::name;
-  summary["correction"] = Config::correction_type::name;
-  summary["quadrature"] = Config::quadrature_type::name;
-  summary["geometry"] = Config::geometry_type::name;
-  summary["contact"] = Config::contact_type::enforcement_type::name;
+  summary["kernel"] = method.kernel;
+  summary["correction"] = method.correction;
+  summary["quadrature"] = method.quadrature;
+  summary["geometry"] = method.geometry;
+  summary["contact"] = method.contact;
   summary["resolution"] = request.resolution;
   summary["status"] = "setting up";
   json& parameters = summary["parameters"];
