@@ -1,0 +1,1 @@
+// Carries the runner's and tutorials' precompiled header (cmake/rkpm_program_pch.cmake).

@@ -1,0 +1,20 @@
+# One precompiled header for the Release programs that draw figures (the runner rkpm_run and
+# the tutorials): Eigen, fmt, Hana, gnuplot-iostream and the whole library are parsed once
+# instead of once per translation unit. The header is built by a target of its own with the
+# programs' flags and dependencies (a precompiled header is only used when they match).
+# rkpm_use_program_pch(TARGET) makes TARGET reuse it; RKPM_PROGRAM_PCH=OFF turns it off.
+option(RKPM_PROGRAM_PCH "Precompile the headers shared by the runner and the tutorials" ON)
+if(RKPM_PROGRAM_PCH)
+  add_library(rkpm_program_pch OBJECT ${CMAKE_CURRENT_LIST_DIR}/pch.cpp)
+  target_link_libraries(rkpm_program_pch PUBLIC rkpm::rkpm rkpm::gnuplot)
+  target_precompile_headers(rkpm_program_pch PRIVATE
+    <algorithm> <cmath> <filesystem> <functional> <string> <vector>
+    <Eigen/Dense> <fmt/format.h> <boost/hana.hpp>
+    <rkpm/rkpm.hpp> <rkpm/solver/policies.hpp> <rkpm/io/gnuplot.hpp> <rkpm/io/csv.hpp> <rkpm/io/vtk.hpp>)
+endif()
+
+function(rkpm_use_program_pch target)
+  if(RKPM_PROGRAM_PCH)
+    target_precompile_headers(${target} REUSE_FROM rkpm_program_pch)
+  endif()
+endfunction()
