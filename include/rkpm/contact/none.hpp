@@ -7,6 +7,7 @@
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/io/checkpoint.hpp>
 
 namespace rkpm::contact {
 
@@ -16,6 +17,8 @@ struct none {
   contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
   const std::vector<rigid_tool>& tools() const { return tools_; }
   const std::vector<vec2>& reactions() const { return reactions_; }
+  void save(io::checkpoint_writer&) const {}  // no state
+  void load(io::checkpoint_reader&) {}
 
  private:
   std::vector<rigid_tool> tools_;

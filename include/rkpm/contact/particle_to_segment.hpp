@@ -33,6 +33,7 @@
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/segment_search.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/io/checkpoint.hpp>
 
 namespace rkpm::contact {
 
@@ -74,6 +75,17 @@ class particle_to_segment {
   const std::vector<double>& effective_masses() const { return m_eff_; }
   const Friction& friction() const { return friction_; }
   const Enforcement& enforcement() const { return enforcement_; }
+
+  // Checkpoint (io/checkpoint.hpp): what the next enforce() reads from the last one (held
+  // segments, slave and tool positions for the crossing test) and the last step's report.
+  void save(io::checkpoint_writer& w) const {
+    sections(w, *this);
+    w.array("contact.pairs", std::span<const contact_pair>(pair_.data(), static_cast<std::size_t>(pairs_)));
+  }
+  void load(io::checkpoint_reader& r) {
+    sections(r, *this);
+    pairs_ = static_cast<index_t>(r.array("contact.pairs", std::span<contact_pair>(pair_)));
+  }
 
   // Checks the body and the slaves and copies the slave list and table; the body itself is
   // passed again on every enforce().
@@ -233,6 +245,14 @@ class particle_to_segment {
   }
 
  private:
+  template <class Archive, class Self>
+  static void sections(Archive& a, Self& s) {
+    a.array("contact.held", s.held_);
+    a.array("contact.x_prev", s.x_prev_);
+    a.array("contact.u_prev", s.u_prev_);
+    a.array("contact.reaction", s.reaction_);
+  }
+
   void slave_state(std::span<const vec2> X, index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
     vec2 u = vec2::Zero(), w = vec2::Zero();
     for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {

@@ -16,11 +16,13 @@
 #include <cmath>
 #include <limits>
 #include <ranges>
+#include <utility>
 #include <vector>
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/material.hpp>
+#include <rkpm/io/checkpoint.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/constraints.hpp>
 #include <rkpm/solver/discrete_model.hpp>
@@ -143,6 +145,10 @@ class explicit_solver {
     run([](const explicit_solver&) {});
   }
 
+  // Checkpoint sections (io/checkpoint.hpp); solver/checkpoint.hpp writes and reads the files.
+  void save(io::checkpoint_writer& w) const { sections(w, *this); }
+  void load(io::checkpoint_reader& r) { sections(r, *this); }
+
   // ---- results -----------------------------------------------------------------------
   double time() const { return time_; }
   index_t steps() const { return steps_; }
@@ -190,6 +196,20 @@ class explicit_solver {
   double kinetic_energy() const { return rkpm::kinetic_energy(mass_, v_); }
 
  private:
+  // Not saved: scratch of step() (d_prev_, v_before_, f_int_prev_, step_dt_) and the set-up.
+  template <class Archive, class Self>
+  static void sections(Archive& a, Self& s) {
+    for (auto [name, field] : {std::pair{"solver.d", &s.d_}, {"solver.v", &s.v_}, {"solver.a", &s.a_},
+                               {"solver.f_int", &s.f_int_}, {"solver.v_half_prev", &s.v_half_prev_}})
+      a.array(name, *field);
+    a.value("solver.energy", s.energy_), a.value("solver.last_contact", s.last_contact_);
+    for (auto [name, field] : {std::pair{"solver.max_penetration", &s.max_penetration_}, {"solver.time", &s.time_},
+                               {"solver.dt", &s.dt_}, {"solver.dt_min", &s.dt_min_}, {"solver.dt_max", &s.dt_max_}})
+      a.value(name, *field);
+    a.value("solver.steps", s.steps_);
+    a.part(s.points_), a.part(s.clock_), a.part(s.contact_);
+  }
+
   bool has_tools() const { return !std::ranges::empty(contact_.tools()); }
 
   void compute_internal_force() {

@@ -17,6 +17,7 @@
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/io/checkpoint.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_forces.hpp>
 
@@ -96,7 +97,23 @@ class point_materials {
   const std::vector<double>& det_F() const { return det_F_; }
   const std::vector<mat3>& kirchhoff_stresses() const { return tau_; }
 
+  // Checkpoint (io/checkpoint.hpp): the states and what the last force evaluation left.
+  void save(io::checkpoint_writer& w) const { sections(w, *this); }
+  void load(io::checkpoint_reader& r) { sections(r, *this); }
+
  private:
+  static_assert(bitwise_value<state_type>, "material states are written to checkpoints as raw bytes");
+  template <class Archive, class Self>
+  static void sections(Archive& a, Self& s) {
+    a.array("points.state", s.state_);
+    a.array("points.tau", s.tau_);
+    a.array("points.F", s.F_);
+    a.array("points.det_F", s.det_F_);
+    a.array("points.stretch", s.stretch_);
+    a.value("points.min_stretch", s.min_stretch_);
+    a.value("points.plastic_work", s.plastic_work_);
+  }
+
   [[noreturn]] void report_failure(const discrete_model& m, index_t q, step_context where) {
     const vec2& X = m.points.position[q];
     if (failed_[q] == 2) {

@@ -14,6 +14,7 @@
 
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/io/checkpoint.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/problem.hpp>
@@ -59,7 +60,21 @@ class time_step_controller {
   // dt_crit of the reference configuration, 2 / omega_max.
   double reference_stable_step() const { return reference_dt_; }
 
+  // Checkpoint (io/checkpoint.hpp): the power-iteration vectors and the last estimate.
+  void save(io::checkpoint_writer& w) const { sections(w, *this); }
+  void load(io::checkpoint_reader& r) { sections(r, *this); }
+
  private:
+  template <class Archive, class Self>
+  static void sections(Archive& a, Self& s) {
+    a.array("clock.mode", s.mode_);
+    a.array("clock.start", s.start_);
+    a.value("clock.reference_dt", s.reference_dt_);
+    a.value("clock.estimate_dt", s.estimate_dt_);
+    a.value("clock.estimate_stretch", s.estimate_stretch_);
+    a.value("clock.estimate_step", s.estimate_step_);
+  }
+
   double step_size(double min_stretch, const run_options& options, double time, index_t steps) const {
     const double stable = estimate_dt_ * std::min(1.0, min_stretch / estimate_stretch_);
     if (options.fixed_time_step <= 0.0) return options.time_step_fraction * stable;

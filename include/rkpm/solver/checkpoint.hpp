@@ -1,0 +1,59 @@
+#pragma once
+// Exact restart (docs/method.md section 9.5): write_checkpoint stores a solver's whole state
+// between steps; read_checkpoint puts it into a solver built from the same problem and
+// configuration, which then continues bit for bit as the writer would have (at one thread;
+// with more, the loops are thread-count independent to round-off only where they reduce).
+// The format and its checks are io/checkpoint.hpp's; here the solver is identified: the
+// configuration name the caller passes (Config::name()), the particle, quadrature-point, slave
+// and tool counts, and the lumped masses, which differ for another geometry, density or
+// particle placement with the same counts.
+//
+//   rkpm::write_checkpoint(solver, out / rkpm::io::checkpoint_file_name(solver.steps()), Config::name());
+//   auto again = rkpm::make_solver<Config>(problem, options);
+//   rkpm::read_checkpoint(again, path, Config::name());
+
+#include <filesystem>
+#include <ranges>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/io/checkpoint.hpp>
+#include <rkpm/solver/explicit_solver.hpp>
+
+namespace rkpm {
+
+template <Geometry G, Material M, Contact Ct>
+io::checkpoint_identity checkpoint_identity_of(const explicit_solver<G, M, Ct>& s, std::string_view configuration) {
+  return {std::string(configuration), s.model().particle_count(), s.model().point_count(),
+          static_cast<index_t>(s.slave_particles().size()), static_cast<index_t>(std::ranges::size(s.contact().tools()))};
+}
+
+// Writes through a temporary file and a rename: a run killed meanwhile leaves `path` as it was.
+template <Geometry G, Material M, Contact Ct>
+void write_checkpoint(const explicit_solver<G, M, Ct>& s, const std::filesystem::path& path,
+                      std::string_view configuration) {
+  io::checkpoint_writer w(path, checkpoint_identity_of(s, configuration));
+  w.array("solver.mass", s.mass());
+  w.part(s);
+  w.commit();
+}
+
+// Refuses, with a one-line rkpm::error, a file that is not a checkpoint of this solver's build,
+// configuration and problem, or is truncated; the solver is unchanged when it is refused for
+// any of these reasons (a section of another build's layout is found only while loading).
+template <Geometry G, Material M, Contact Ct>
+void read_checkpoint(explicit_solver<G, M, Ct>& s, const std::filesystem::path& path, std::string_view configuration) {
+  io::checkpoint_reader r(path, checkpoint_identity_of(s, configuration));
+  std::vector<double> mass(s.mass().size());
+  r.array("solver.mass", mass);
+  if (mass != s.mass())
+    fail("checkpoint '{}' is of another problem: its particle masses differ from this one's (another geometry, "
+         "density or particle placement)",
+         r.file());
+  r.part(s);
+  r.finish();
+}
+
+}  // namespace rkpm

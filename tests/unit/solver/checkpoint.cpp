@@ -1,0 +1,222 @@
+// Exact restart (solver/checkpoint.hpp, io/checkpoint.hpp, docs/method.md section 9.5): N steps
+// uninterrupted and N/2 steps, a checkpoint, a fresh solver from the same problem that reads it
+// and N/2 more steps give the same coefficients, velocities, point states, energies, time, step
+// count and time step, compared with == (bit for bit, one thread). Two configurations: plane
+// strain J2 pressed into the corner of a moving L-shaped tool with penalty contact and Coulomb
+// friction (penalty leaves particles inside, so the segment that held a particle at the last
+// step decides which face acts: leaving the held segments out of the checkpoint makes this test
+// fail) and axisymmetric J2 with a prescribed velocity (axis and velocity constraints).
+// A checkpoint of another configuration, format version or problem, a truncated file and a file
+// that is not a checkpoint are refused with a message naming the reason; the write leaves no
+// temporary file.
+
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "support/solver_fixtures.hpp"
+
+using namespace rkpm;
+
+namespace {
+
+using ps_contact_cfg =
+    config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
+           material::j2_plasticity<material::hardening::linear>,
+           contact::particle_to_segment<contact::enforcement::penalty, contact::friction::coulomb>>;
+using axi_cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::axisymmetric,
+                       material::j2_plasticity<material::hardening::power_law>, contact::none>;
+
+// A block thrown and pressed (a body force) down and sideways into the corner of an L-shaped
+// tool (floor and wall meet at a vertex concave for the tool, where the block's corner is behind
+// both faces) that moves up and toward it. Penalty stiffness as in test::check_combination.
+problem_for<ps_contact_cfg> striking_block(int nx = 7) {
+  auto p = test::grid_problem<ps_contact_cfg>(vec2(-2e-3, 0.0), vec2(2e-3, 3e-3), Eigen::Vector2i(nx, 5));
+  p.contact = test::make_contact<ps_contact_cfg::contact_type>({contact::rigid_tool(
+      "corner", {vec2(-5e-3, -1e-5), vec2(2e-3 + 1e-5, -1e-5), vec2(2e-3 + 1e-5, 5e-3)}, contact::side::left,
+      contact::tool_motion::constant_velocity(vec2(-5.0, 10.0)))},
+      1e9);
+  p.initial_velocity = [](const vec2& X) { return vec2(30.0 + 2e3 * X[1] * X[1], -20.0 * (1.0 + 0.2 * std::sin(900.0 * X[1]))); };
+  p.body_force = vec2(3e7, -1e8);  // keeps the block pressed into the corner
+  return p;
+}
+
+// A cylinder compressed by its top face moving down at 40 m/s (reached over 1 microsecond).
+problem_for<axi_cfg> compressed_cylinder() {
+  const Eigen::Vector2i n(5, 6);
+  auto p = test::grid_problem<axi_cfg>(vec2(0.0, 0.0), vec2(2e-3, 3e-3), n);
+  for (index_t I = 0; I < static_cast<index_t>(p.particles.position.size()); ++I) {
+    const double y = p.particles.position[I][1];
+    if (y > 3e-3 - 1e-9) p.constraints.push_back({I, 1, [](double t) { return -40.0 * std::min(1.0, t / 1e-6); }});
+    if (y < 1e-9) p.constraints.push_back({I, 1, [](double) { return 0.0; }});
+  }
+  return p;
+}
+
+run_options options() {
+  run_options o;
+  o.end_time = 1.0;
+  o.time_step_update_interval = 3;  // re-estimates on both sides of the checkpoint at step 20
+  return o;
+}
+
+std::filesystem::path scratch_folder(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / fmt::format("rkpm_checkpoint_{}_{}", name, ::getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const rkpm::error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+bool same_state(const material::j2_state& a, const material::j2_state& b) {
+  return a.elastic_left_cauchy_green == b.elastic_left_cauchy_green && a.previous_deformation == b.previous_deformation &&
+         a.equivalent_plastic_strain == b.equivalent_plastic_strain && a.plastic_work == b.plastic_work;
+}
+
+template <class S>
+void check_identical(const S& a, const S& b) {
+  CHECK(a.steps() == b.steps());
+  CHECK(a.time() == b.time());
+  CHECK(a.time_step() == b.time_step());
+  CHECK(a.min_time_step() == b.min_time_step());
+  CHECK(a.max_time_step() == b.max_time_step());
+  CHECK(a.coefficients() == b.coefficients());
+  CHECK(a.coefficient_velocities() == b.coefficient_velocities());
+  CHECK(a.internal_force() == b.internal_force());
+  CHECK(a.point_det_F() == b.point_det_F());
+  bool states = a.point_states().size() == b.point_states().size();
+  for (std::size_t q = 0; states && q < a.point_states().size(); ++q)
+    states = same_state(a.point_states()[q], b.point_states()[q]);
+  CHECK(states);
+  const energy_balance &x = a.energy(), &y = b.energy();
+  CHECK(x.initial_kinetic == y.initial_kinetic);
+  CHECK(x.kinetic == y.kinetic);
+  CHECK(x.internal == y.internal);
+  CHECK(x.plastic == y.plastic);
+  CHECK(x.external == y.external);
+  CHECK(x.contact == y.contact);
+  CHECK(x.constraint == y.constraint);
+  CHECK(x.largest_imbalance == y.largest_imbalance);
+  CHECK(a.max_penetration() == b.max_penetration());
+  CHECK(a.last_contact().active == b.last_contact().active);
+  CHECK(a.contact().reactions() == b.contact().reactions());
+  CHECK(a.min_stretch() == b.min_stretch());
+}
+
+// N steps straight and N/2 + checkpoint + N/2 in a fresh solver; returns the straight run.
+template <class Cfg>
+solver_for<Cfg> check_restart(const std::function<problem_for<Cfg>()>& make, int N) {
+  test::run_serially();
+  const auto dir = scratch_folder("restart");
+  auto straight = make_solver<Cfg>(make(), options());
+  for (int k = 0; k < N; ++k) straight.step();
+
+  auto first = make_solver<Cfg>(make(), options());
+  for (int k = 0; k < N / 2; ++k) first.step();
+  const auto path = dir / io::checkpoint_file_name(first.steps());
+  write_checkpoint(first, path, Cfg::name());
+  CHECK(std::filesystem::exists(path));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+
+  auto second = make_solver<Cfg>(make(), options());
+  read_checkpoint(second, path, Cfg::name());
+  check_identical(first, second);  // the state as read
+  for (int k = N / 2; k < N; ++k) second.step();
+  check_identical(straight, second);
+  std::filesystem::remove_all(dir);
+  return straight;
+}
+
+}  // namespace
+
+TEST_CASE("checkpoint file names sort in step order") {
+  CHECK(io::checkpoint_file_name(1234) == "checkpoint_0000001234.rkpmcp");
+  CHECK(io::checkpoint_file_name(99) < io::checkpoint_file_name(100));
+}
+
+TEST_CASE("plane strain J2 with a moving tool and Coulomb friction restarts bit for bit") {
+  const auto s = check_restart<ps_contact_cfg>([] { return striking_block(); }, 40);
+  // The run exercised what the checkpoint must carry: contact with friction, plasticity.
+  CHECK(s.last_contact().active > 0);
+  bool sliding = false;
+  for (const auto& pair : s.contact().active_pairs()) sliding = sliding || pair.tangential_force.norm() > 0.0;
+  CHECK(sliding);
+  CHECK(s.energy().plastic > 0.0);
+}
+
+TEST_CASE("axisymmetric J2 with prescribed velocities restarts bit for bit") {
+  const auto s = check_restart<axi_cfg>(compressed_cylinder, 40);
+  CHECK(s.energy().constraint != 0.0);
+  CHECK(s.energy().plastic > 0.0);
+}
+
+TEST_CASE("a checkpoint that does not fit is refused with the reason") {
+  test::run_serially();
+  const auto dir = scratch_folder("refused");
+  auto s = make_solver<ps_contact_cfg>(striking_block(), options());
+  for (int k = 0; k < 3; ++k) s.step();
+  const auto path = dir / "good.rkpmcp";
+  write_checkpoint(s, path, ps_contact_cfg::name());
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto write = [&](const std::string& name, const std::string& content) {
+    std::ofstream(dir / name, std::ios::binary) << content;
+    return dir / name;
+  };
+  auto fresh = make_solver<ps_contact_cfg>(striking_block(), options());
+  auto refusal = [&](const std::filesystem::path& p, const std::string& configuration = ps_contact_cfg::name()) {
+    return message_of([&] { read_checkpoint(fresh, p, configuration); });
+  };
+
+  const std::string other = refusal(path, axi_cfg::name());
+  CHECK(other.find("configuration '" + ps_contact_cfg::name() + "'") != std::string::npos);
+  CHECK(other.find("'" + axi_cfg::name() + "'") != std::string::npos);
+
+  CHECK(refusal(write("half.rkpmcp", bytes.substr(0, bytes.size() / 2))).find("is truncated") != std::string::npos);
+  CHECK(refusal(write("cut.rkpmcp", bytes.substr(0, bytes.size() - 1))).find("is truncated") != std::string::npos);
+  CHECK(refusal(write("notes.txt", "t = 1 ms\n")).find("is not an rkpm checkpoint file") != std::string::npos);
+  std::string later = bytes;
+  later[8] = 2;  // the format version follows the 8-byte magic
+  CHECK(refusal(write("v2.rkpmcp", later)).find("format version 2, this build reads version 1") != std::string::npos);
+  CHECK(refusal(dir / "missing.rkpmcp").find("does not exist") != std::string::npos);
+
+  auto wider = make_solver<ps_contact_cfg>(striking_block(8), options());
+  const std::string counts = message_of([&] { read_checkpoint(wider, path, ps_contact_cfg::name()); });
+  CHECK(counts.find("35 particles, this problem has 40") != std::string::npos);
+  MESSAGE(counts);
+
+  // A refused file leaves the solver as it was.
+  CHECK(fresh.steps() == 0);
+  CHECK(fresh.time() == 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a checkpoint replaces the previous one through a temporary file") {
+  test::run_serially();
+  const auto dir = scratch_folder("replace");
+  auto s = make_solver<axi_cfg>(compressed_cylinder(), options());
+  const auto path = dir / "latest.rkpmcp";
+  write_checkpoint(s, path, axi_cfg::name());
+  s.step();
+  write_checkpoint(s, path, axi_cfg::name());
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  CHECK(names == std::vector<std::string>{"latest.rkpmcp"});
+  auto again = make_solver<axi_cfg>(compressed_cylinder(), options());
+  read_checkpoint(again, path, axi_cfg::name());
+  CHECK(again.steps() == 1);
+  std::filesystem::remove_all(dir);
+}
