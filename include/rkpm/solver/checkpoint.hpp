@@ -2,7 +2,7 @@
 // Exact restart (docs/method.md section 9.5): write_checkpoint stores a solver's whole state
 // between steps; read_checkpoint puts it into a solver built from the same problem and
 // configuration, which then continues bit for bit as the writer would have (at one thread;
-// with more, the loops are thread-count independent to round-off only where they reduce).
+// with more, runs themselves agree only to round-off).
 // The format and its checks are io/checkpoint.hpp's; here the solver is identified: the
 // configuration name the caller passes (Config::name()), the particle, quadrature-point, slave
 // and tool counts, and the lumped masses, which differ for another geometry, density or
