@@ -3,7 +3,7 @@
 // between steps; read_checkpoint puts it into a solver built from the same problem and
 // configuration, which then continues bit for bit as the writer would have (at one thread;
 // with more, runs themselves agree only to round-off).
-// The format and its checks are io/checkpoint.hpp's; here the solver is identified: the
+// The format and its checks are io/checkpoint_format.hpp's and io/checkpoint_reader.hpp's; here the solver is identified: the
 // configuration name the caller passes (Config::name()), the particle, quadrature-point, slave
 // and tool counts, and the lumped masses, which differ for another geometry, density or
 // particle placement with the same counts.
@@ -31,10 +31,12 @@ io::checkpoint_identity checkpoint_identity_of(const explicit_solver<G, M, Ct>& 
 }
 
 // Writes through a temporary file and a rename: a run killed meanwhile leaves `path` as it was.
+// `description` is free text kept in the header (io::read_checkpoint_header), e.g. the case and
+// parameters a restart needs to build the same problem again.
 template <Geometry G, Material M, Contact Ct>
 void write_checkpoint(const explicit_solver<G, M, Ct>& s, const std::filesystem::path& path,
-                      std::string_view configuration) {
-  io::checkpoint_writer w(path, checkpoint_identity_of(s, configuration));
+                      std::string_view configuration, std::string_view description = {}) {
+  io::checkpoint_writer w(path, checkpoint_identity_of(s, configuration), description);
   w.array("solver.mass", s.mass());
   w.part(s);
   w.commit();

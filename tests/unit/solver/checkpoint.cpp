@@ -6,9 +6,10 @@
 // friction (penalty leaves particles inside, so the segment that held a particle at the last
 // step decides which face acts: leaving the held segments out of the checkpoint makes this test
 // fail) and axisymmetric J2 with a prescribed velocity (axis and velocity constraints).
-// A checkpoint of another configuration, format version or problem, a truncated file and a file
-// that is not a checkpoint are refused with a message naming the reason; the write leaves no
-// temporary file.
+// A checkpoint of another configuration, format version, problem or section layout, a truncated
+// file and a file that is not a checkpoint are refused with a message naming the reason; the
+// write leaves no temporary file; the header (with the writer's description) is read without a
+// solver, and the latest checkpoint of a folder is found by its name.
 
 #include <doctest/doctest.h>
 
@@ -143,9 +144,33 @@ solver_for<Cfg> check_restart(const std::function<problem_for<Cfg>()>& make, int
 
 }  // namespace
 
-TEST_CASE("checkpoint file names sort in step order") {
+TEST_CASE("checkpoint file names sort in step order; the latest of a folder is found") {
   CHECK(io::checkpoint_file_name(1234) == "checkpoint_0000001234.rkpmcp");
   CHECK(io::checkpoint_file_name(99) < io::checkpoint_file_name(100));
+  const auto dir = scratch_folder("latest");
+  CHECK(!io::latest_checkpoint(dir));
+  for (const std::string name : {io::checkpoint_file_name(99), io::checkpoint_file_name(100),
+                                 io::checkpoint_file_name(101) + ".tmp", std::string("summary.json")})
+    std::ofstream(dir / name) << "x";
+  CHECK(io::latest_checkpoint(dir) == dir / io::checkpoint_file_name(100));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the header (configuration, counts, description) is read without a solver") {
+  test::run_serially();
+  const auto dir = scratch_folder("header");
+  auto s = make_solver<ps_contact_cfg>(striking_block(), options());
+  s.step();
+  const auto path = dir / io::checkpoint_file_name(s.steps());
+  write_checkpoint(s, path, ps_contact_cfg::name(), R"({"case": "striking_block", "friction": 0.2})");
+  const io::checkpoint_header h = io::read_checkpoint_header(path);
+  CHECK(h.identity.configuration == ps_contact_cfg::name());
+  CHECK(h.identity.particles == 35);
+  CHECK(h.identity.points == s.model().point_count());
+  CHECK(h.identity.slaves == static_cast<index_t>(s.slave_particles().size()));
+  CHECK(h.identity.tools == 1);
+  CHECK(h.description == R"({"case": "striking_block", "friction": 0.2})");
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("plane strain J2 with a moving tool and Coulomb friction restarts bit for bit") {
@@ -196,6 +221,10 @@ TEST_CASE("a checkpoint that does not fit is refused with the reason") {
   later[8] = 2;  // the format version follows the 8-byte magic
   CHECK(refusal(write("v2.rkpmcp", later)).find("format version 2, this build reads version 1") != std::string::npos);
   CHECK(refusal(dir / "missing.rkpmcp").find("does not exist") != std::string::npos);
+  std::string renamed = bytes;  // a section another build would write in its place
+  renamed.replace(renamed.find("solver.d"), 8, "solver.q");
+  CHECK(refusal(write("renamed.rkpmcp", renamed)).find("of another build: section 'solver.q' where 'solver.d' was expected") !=
+        std::string::npos);
 
   auto wider = make_solver<ps_contact_cfg>(striking_block(8), options());
   const std::string counts = message_of([&] { read_checkpoint(wider, path, ps_contact_cfg::name()); });
