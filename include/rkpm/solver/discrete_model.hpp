@@ -33,9 +33,8 @@ struct discrete_model {
   index_t point_count() const { return points.size(); }
 };
 
-template <Kernel K, Correction C, Quadrature Q, Geometry G>
-discrete_model build_discrete_model(particle_set<2> particles, background_mesh mesh,
-                                    double max_condition = default_max_moment_condition) {
+// The particles and the cells must describe the same body.
+inline void check_body(const particle_set<2>& particles, const background_mesh& mesh) {
   particles.validate();
   mesh.validate();
   double particle_volume = 0.0;
@@ -45,28 +44,48 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
     fail("particle volumes add up to {:.6g} but the background cells cover {:.6g}: the particle "
          "set and the cells must describe the same body (check units and extents)",
          particle_volume, cell_area);
+}
 
+// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive.
+inline std::vector<double> lumped_volumes(const particle_set<2>& particles, const quadrature_points& points,
+                                          const shape_table<2>& at_points) {
+  std::vector<double> volume(particles.size(), 0.0);
+  for (index_t q = 0; q < points.size(); ++q)
+    for (index_t e = at_points.offset[q]; e < at_points.offset[q + 1]; ++e)
+      volume[at_points.neighbor[e]] += at_points.N[e] * points.weight[q];
+  for (index_t I = 0; I < particles.size(); ++I)
+    if (!(volume[I] > 0.0))
+      fail("particle {} at ({:.6g}, {:.6g}) gets a lumped mass of {:.3g} x density: it is covered by "
+           "no quadrature point or by negative shape-function lobes; refine the background cells, "
+           "enlarge the support or use the linear correction",
+           I, particles.position[I][0], particles.position[I][1], volume[I]);
+  return volume;
+}
+
+// The model on given quadrature points: only this depends on the kernel and the correction,
+// so a program compiles it once per (kernel, correction), whatever rules and geometries it uses.
+template <Kernel K, Correction C>
+discrete_model build_discrete_model_on(particle_set<2> particles, background_mesh mesh, quadrature_points points,
+                                       double max_condition = default_max_moment_condition) {
   discrete_model m;
-  m.points = make_quadrature_points<Q, G>(mesh);
+  m.points = std::move(points);
   const neighbor_search<2> search(particles);
   const rk_shape_functions<K, C, 2> rk(max_condition);
   m.at_points = build_shape_table<K, C, 2>(search, m.points.position, rk);
   m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk);
   m.particles_of_points = transpose(m.at_points, particles.size());
-
-  m.lumped_volume.assign(particles.size(), 0.0);
-  for (index_t q = 0; q < m.points.size(); ++q)
-    for (index_t e = m.at_points.offset[q]; e < m.at_points.offset[q + 1]; ++e)
-      m.lumped_volume[m.at_points.neighbor[e]] += m.at_points.N[e] * m.points.weight[q];
-  for (index_t I = 0; I < particles.size(); ++I)
-    if (!(m.lumped_volume[I] > 0.0))
-      fail("particle {} at ({:.6g}, {:.6g}) gets a lumped mass of {:.3g} x density: it is covered by "
-           "no quadrature point or by negative shape-function lobes; refine the background cells, "
-           "enlarge the support or use the linear correction",
-           I, particles.position[I][0], particles.position[I][1], m.lumped_volume[I]);
+  m.lumped_volume = lumped_volumes(particles, m.points, m.at_points);
   m.particles = std::move(particles);
   m.mesh = std::move(mesh);
   return m;
+}
+
+template <Kernel K, Correction C, Quadrature Q, Geometry G>
+discrete_model build_discrete_model(particle_set<2> particles, background_mesh mesh,
+                                    double max_condition = default_max_moment_condition) {
+  check_body(particles, mesh);
+  quadrature_points points = make_quadrature_points<Q, G>(mesh);
+  return build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
 }
 
 // Lumped masses m_I = rho0 V_I (docs/method.md section 5).
