@@ -102,9 +102,11 @@ class point_materials {
   void load(io::checkpoint_reader& r) { sections(r, *this); }
 
  private:
-  static_assert(bitwise_value<state_type>, "material states are written to checkpoints as raw bytes");
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
+    static_assert(bitwise_value<state_type>,
+                  "checkpoints write material states as raw bytes: make the state an aggregate of at most 8 "
+                  "doubles, integers or fixed-size Eigen matrices (core/bitwise.hpp)");
     a.array("points.state", s.state_);
     a.array("points.tau", s.tau_);
     a.array("points.F", s.F_);
