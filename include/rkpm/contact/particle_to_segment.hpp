@@ -27,6 +27,8 @@
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/joined_name.hpp>
+#include <rkpm/contact/contact_checks.hpp>
+#include <rkpm/contact/contact_pair.hpp>
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/contact/friction.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
@@ -36,18 +38,6 @@
 #include <rkpm/io/checkpoint.hpp>
 
 namespace rkpm::contact {
-
-// One slave particle in contact with one tool during the last step.
-struct contact_pair {
-  index_t slave = 0;      // row j of the body's slave list (particle body.slave[j])
-  index_t tool = 0;       // index into tools()
-  index_t segment = 0;    // master segment of that tool
-  double gap = 0.0;       // penetration before correction
-  vec2 normal = vec2::Zero();
-  double normal_force = 0.0;        // f_n >= 0 along normal
-  vec2 tangential_force = vec2::Zero();
-  vec2 force() const { return normal_force * normal + tangential_force; }  // f_J on the particle
-};
 
 template <ContactEnforcement Enforcement = enforcement::paper, FrictionLaw Friction = friction::frictionless>
 class particle_to_segment {
@@ -90,26 +80,11 @@ class particle_to_segment {
   // Checks the body and the slaves and copies the slave list and table; the body itself is
   // passed again on every enforce().
   void setup(const contact_body& body, const contact_slaves& slaves) {
+    check_contact_inputs(body, slaves);
     const index_t np = static_cast<index_t>(body.reference_position.size());
-    if (static_cast<index_t>(body.mass.size()) != np)
-      fail("contact setup: {} reference positions but {} masses; give one mass per particle", np, body.mass.size());
-    for (index_t I = 0; I < np; ++I)
-      if (!(body.mass[I] > 0.0) || !std::isfinite(body.mass[I]))
-        fail("contact setup: particle {} has mass {}; lumped masses must be positive and finite", I, body.mass[I]);
     slave_ = slaves.particle;
     table_ = slaves.table;
     const index_t ns = static_cast<index_t>(slave_.size());
-    if (table_.points() != ns)
-      fail("contact setup: the slave table has {} rows but there are {} slave particles; build it at the "
-           "slaves' reference positions",
-           table_.points(), ns);
-    if (static_cast<index_t>(table_.N.size()) != table_.entries())
-      fail("contact setup: the slave table has {} neighbors but {} values", table_.entries(), table_.N.size());
-    for (index_t j = 0; j < ns; ++j)
-      if (slave_[j] < 0 || slave_[j] >= np)
-        fail("contact setup: slave {} is particle {}, outside 0..{}", j, slave_[j], np - 1);
-    for (index_t I : table_.neighbor)
-      if (I < 0 || I >= np) fail("contact setup: the slave table names particle {}, outside 0..{}", I, np - 1);
 
     m_eff_.assign(ns, 0.0);
     for (index_t j = 0; j < ns; ++j) {
@@ -122,7 +97,7 @@ class particle_to_segment {
       m_eff_[j] = 1.0 / s;
     }
 
-    check_initial_penetration(body.reference_position);
+    check_tools_outside(tools_, grid_, body.reference_position);
 
     const index_t nt = static_cast<index_t>(tools_.size());
     x_.assign(ns, vec2::Zero());
@@ -262,30 +237,6 @@ class particle_to_segment {
     }
     x_[j] = X[slave_[j]] + u;
     v_[j] = w;
-  }
-
-  // A tool may touch the body at t = 0 but not start inside it.
-  void check_initial_penetration(std::span<const vec2> X) const {
-    vec2 lo = X[0], hi = X[0];
-    for (const vec2& x : X) {
-      lo = lo.cwiseMin(x);
-      hi = hi.cwiseMax(x);
-    }
-    const double tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-300);
-    for (std::size_t k = 0; k < tools_.size(); ++k) {
-      const rigid_tool& tool = tools_[k];
-      const vec2 u0 = tool.displacement(0.0);
-      for (std::size_t I = 0; I < X.size(); ++I) {
-        const vec2 y = X[I] - u0;
-        for (const index_t s : grid_[k].candidates(y)) {
-          double g;
-          if (tool.catches(s, y, g) && g > tolerance)
-            fail("contact setup: tool '{}' starts inside the body: particle {} at ({}, {}) is {} behind its "
-                 "segment {}; move the tool (or its motion at t = 0) so that it at most touches the body",
-                 tool.name(), I, X[I].x(), X[I].y(), g, s);
-        }
-      }
-    }
   }
 
   std::vector<rigid_tool> tools_;
