@@ -141,9 +141,7 @@ class explicit_solver {
     }
     observe(*this);
   }
-  void run() {
-    run([](const explicit_solver&) {});
-  }
+  void run() { run([](const explicit_solver&) {}); }
 
   // Checkpoint sections (io/checkpoint.hpp); solver/checkpoint.hpp writes and reads the files.
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
@@ -202,12 +200,15 @@ class explicit_solver {
     for (auto [name, field] : {std::pair{"solver.d", &s.d_}, {"solver.v", &s.v_}, {"solver.a", &s.a_},
                                {"solver.f_int", &s.f_int_}, {"solver.v_half_prev", &s.v_half_prev_}})
       a.array(name, *field);
-    a.value("solver.energy", s.energy_), a.value("solver.last_contact", s.last_contact_);
+    a.value("solver.energy", s.energy_);
+    a.value("solver.last_contact", s.last_contact_);
     for (auto [name, field] : {std::pair{"solver.max_penetration", &s.max_penetration_}, {"solver.time", &s.time_},
                                {"solver.dt", &s.dt_}, {"solver.dt_min", &s.dt_min_}, {"solver.dt_max", &s.dt_max_}})
       a.value(name, *field);
     a.value("solver.steps", s.steps_);
-    a.part(s.points_), a.part(s.clock_), a.part(s.contact_);
+    a.part(s.points_);  // material states, then the time-step controller and the contact
+    a.part(s.clock_);
+    a.part(s.contact_);
   }
 
   bool has_tools() const { return !std::ranges::empty(contact_.tools()); }
