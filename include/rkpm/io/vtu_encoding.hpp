@@ -1,0 +1,236 @@
+#pragma once
+// How rkpm writes the DataArrays of a VTK XML file (used by io/vtk.hpp; docs/method.md section
+// 9.4): the format options (encoding, compression) and the encoder that writes each array's
+// XML and collects the raw appended block. Arrays as VTK's own vtkXMLWriter writes them
+// (header_type UInt64, native byte order); zlib compression (compressor="vtkZLibDataCompressor",
+// blocks of 32 KiB) when compiled with RKPM_WITH_ZLIB and linked with zlib.
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#ifdef RKPM_WITH_ZLIB
+#include <zlib.h>
+#endif
+
+#include <rkpm/core/error.hpp>
+
+namespace rkpm::io {
+
+enum class vtu_encoding { appended, binary, ascii };
+enum class vtu_compression { none, zlib };
+
+// True if this translation unit can compress (compiled with RKPM_WITH_ZLIB, linked with zlib).
+#ifdef RKPM_WITH_ZLIB
+inline constexpr bool vtu_zlib_available = true;
+#else
+inline constexpr bool vtu_zlib_available = false;
+#endif
+inline constexpr vtu_compression default_vtu_compression =
+    vtu_zlib_available ? vtu_compression::zlib : vtu_compression::none;
+
+// How a .vtu is written; converts from a bare encoding, so write_vtu(path, x, d,
+// vtu_encoding::ascii) still reads as before. Compression applies to appended and binary data.
+struct vtu_format {
+  vtu_encoding encoding = vtu_encoding::appended;
+  vtu_compression compression = default_vtu_compression;
+  int zlib_level = 6;  // 1 (fastest) .. 9 (smallest); zlib's default is 6
+
+  vtu_format() = default;
+  vtu_format(vtu_encoding e, vtu_compression c = default_vtu_compression) : encoding(e), compression(c) {}  // NOLINT
+};
+
+namespace detail {
+
+inline std::string xml_escape(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+inline void append_base64(std::string& out, const unsigned char* bytes, std::size_t n) {
+  static constexpr char table[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::size_t i = 0;
+  for (; i + 3 <= n; i += 3) {
+    const std::uint32_t w = (std::uint32_t{bytes[i]} << 16) | (std::uint32_t{bytes[i + 1]} << 8) | bytes[i + 2];
+    out += table[(w >> 18) & 63];
+    out += table[(w >> 12) & 63];
+    out += table[(w >> 6) & 63];
+    out += table[w & 63];
+  }
+  if (const std::size_t rest = n - i; rest > 0) {
+    std::uint32_t w = std::uint32_t{bytes[i]} << 16;
+    if (rest == 2) w |= std::uint32_t{bytes[i + 1]} << 8;
+    out += table[(w >> 18) & 63];
+    out += table[(w >> 12) & 63];
+    out += rest == 2 ? table[(w >> 6) & 63] : '=';
+    out += '=';
+  }
+}
+
+// Bytes of one binary DataArray as VTK reads them: uncompressed, a UInt64 byte count then the
+// values; compressed, the UInt64 header [#blocks, block size, size of a partial last block (0 if
+// none), compressed size of each block] then the zlib streams of the 32 KiB blocks.
+struct binary_block {
+  std::vector<unsigned char> header, body;
+};
+
+inline constexpr std::size_t vtu_block_size = 32768;
+
+inline void append_u64(std::vector<unsigned char>& out, std::uint64_t v) {
+  unsigned char b[sizeof v];
+  std::memcpy(b, &v, sizeof v);
+  out.insert(out.end(), b, b + sizeof v);
+}
+
+inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, const vtu_format& format,
+                                  std::string_view name) {
+  binary_block block;
+  if (format.compression == vtu_compression::none) {
+    append_u64(block.header, size);
+    block.body.assign(bytes, bytes + size);
+    return block;
+  }
+#ifdef RKPM_WITH_ZLIB
+  const std::size_t blocks = (size + vtu_block_size - 1) / vtu_block_size;
+  append_u64(block.header, blocks);
+  append_u64(block.header, vtu_block_size);
+  append_u64(block.header, size % vtu_block_size);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = b * vtu_block_size, n = std::min(vtu_block_size, size - begin);
+    uLongf compressed = compressBound(static_cast<uLong>(n));
+    const std::size_t at = block.body.size();
+    block.body.resize(at + compressed);
+    const int rc = compress2(block.body.data() + at, &compressed, bytes + begin, static_cast<uLong>(n),
+                             format.zlib_level);
+    if (rc != Z_OK) fail("write_vtu: zlib failed ({}) on array \"{}\"; try vtu_compression::none", rc, name);
+    block.body.resize(at + compressed);
+    append_u64(block.header, compressed);
+  }
+  return block;
+#else
+  fail("write_vtu: array \"{}\": zlib compression asked for, but rkpm was compiled without zlib; "
+       "install zlib (Debian zlib1g-dev), compile with -DRKPM_WITH_ZLIB and link -lz, or use "
+       "vtu_compression::none", name);
+#endif
+}
+
+// Writes the XML of the DataArrays and collects the appended block: one object per file.
+class vtu_arrays {
+ public:
+  vtu_arrays(std::string& xml, const vtu_format& format) : xml_(xml), format_(format) {
+    if (format_.encoding == vtu_encoding::ascii) format_.compression = vtu_compression::none;
+  }
+
+  template <class T>
+  void add(std::string_view type, std::string_view name, int components, std::span<const T> values) {
+    fmt::format_to(std::back_inserter(xml_), "        <DataArray type=\"{}\"", type);
+    if (!name.empty()) fmt::format_to(std::back_inserter(xml_), " Name=\"{}\"", xml_escape(name));
+    if (components > 1) fmt::format_to(std::back_inserter(xml_), " NumberOfComponents=\"{}\"", components);
+    switch (format_.encoding) {
+      case vtu_encoding::ascii:
+        xml_ += " format=\"ascii\">";
+        for (std::size_t i = 0; i < values.size(); ++i) {
+          xml_ += (i % 9 == 0) ? "\n          " : " ";
+          // uint8 would print as a character through fmt's char-like handling; widen it.
+          if constexpr (sizeof(T) == 1)
+            fmt::format_to(std::back_inserter(xml_), "{}", static_cast<int>(values[i]));
+          else
+            fmt::format_to(std::back_inserter(xml_), "{}", values[i]);
+        }
+        xml_ += "\n        </DataArray>\n";
+        return;
+      case vtu_encoding::binary: {
+        const auto block = encode(values, name);
+        xml_ += " format=\"binary\">\n          ";
+        if (format_.compression == vtu_compression::none) {
+          // One base64 stream of count and values, as vtkXMLWriter writes it uncompressed.
+          std::vector<unsigned char> all(block.header);
+          all.insert(all.end(), block.body.begin(), block.body.end());
+          append_base64(xml_, all.data(), all.size());
+        } else {
+          // Compressed: header and blocks are two base64 streams.
+          append_base64(xml_, block.header.data(), block.header.size());
+          append_base64(xml_, block.body.data(), block.body.size());
+        }
+        xml_ += "\n        </DataArray>\n";
+        return;
+      }
+      case vtu_encoding::appended:
+        blocks_.push_back(encode(values, name));
+        xml_ += " format=\"appended\" offset=\"";
+        marks_.push_back(xml_.size());  // the offset is written by finish()
+        xml_ += "\"/>\n";
+        return;
+    }
+  }
+
+  // After the last array and the closing </UnstructuredGrid>: writes the offsets and the raw
+  // <AppendedData> block. The arrays lie in it in reverse order of the XML. Any order is valid
+  // VTK (each array is read at its offset); this one is also read right by meshio 7, whose raw
+  // reader rewrites the offsets in place while looking arrays up by offset in document order,
+  // so that in document order a rewritten offset of an earlier array can equal the raw offset of
+  // a later one and shadow it.
+  void finish() {
+    if (format_.encoding != vtu_encoding::appended) return;
+    std::vector<std::size_t> offset(blocks_.size());
+    std::size_t bytes = 0;
+    for (std::size_t k = blocks_.size(); k-- > 0;) {
+      offset[k] = bytes;
+      bytes += blocks_[k].header.size() + blocks_[k].body.size();
+    }
+    std::string out;
+    out.reserve(xml_.size() + 24 * blocks_.size() + bytes + 64);
+    std::size_t from = 0;
+    for (std::size_t k = 0; k < blocks_.size(); ++k) {
+      out.append(xml_, from, marks_[k] - from);
+      fmt::format_to(std::back_inserter(out), "{}", offset[k]);
+      from = marks_[k];
+    }
+    out.append(xml_, from);
+    // "_" marks offset 0; the newline after the last byte is not data.
+    out += "  <AppendedData encoding=\"raw\">\n   _";
+    for (std::size_t k = blocks_.size(); k-- > 0;) {
+      out.append(reinterpret_cast<const char*>(blocks_[k].header.data()), blocks_[k].header.size());
+      out.append(reinterpret_cast<const char*>(blocks_[k].body.data()), blocks_[k].body.size());
+    }
+    out += "\n  </AppendedData>\n";
+    xml_ = std::move(out);
+  }
+
+  const vtu_format& format() const { return format_; }
+
+ private:
+  template <class T>
+  binary_block encode(std::span<const T> values, std::string_view name) const {
+    return encode_binary(reinterpret_cast<const unsigned char*>(values.data()), values.size_bytes(), format_,
+                         name);
+  }
+
+  std::string& xml_;
+  vtu_format format_;
+  std::vector<binary_block> blocks_;  // appended: each array's bytes, in XML order
+  std::vector<std::size_t> marks_;    // appended: where each array's offset goes in xml_
+};
+
+}  // namespace detail
+
+}  // namespace rkpm::io
