@@ -9,7 +9,9 @@
 
 #include <boost/hana.hpp>
 #include <map>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -23,12 +25,13 @@
 #include "methods.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
+#include "run_record.hpp"
 #include "simulate.hpp"
 
 namespace rkpm::runner {
 
 template <class Case, class Config>
-run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
+run_outcome run_with(const run_request& r, const typename Case::parameters& p, const std::optional<restart_point>& restart) {
   using Ct = typename Config::contact_type;
   run_options options;
   options.end_time = Case::end_time(p);
@@ -36,11 +39,12 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p) {
   const std::function<solver_for<Config>()> make = [&] {
     return make_solver<Config>(Case::template build<Ct>(p, r.resolution), options);
   };
-  return simulate<Case, solver_for<Config>>(r, p, method_names::of<Config>(), make);
+  return simulate<Case, solver_for<Config>>(r, p, method_names::of<Config>(), make, restart);
 }
 
 template <class Case>
-using run_function = run_outcome (*)(const run_request&, const typename Case::parameters&);
+using run_function = run_outcome (*)(const run_request&, const typename Case::parameters&,
+                                     const std::optional<restart_point>&);
 
 // "cubic-linear-q2-paper" -> the run function of that configuration.
 template <class Case>
@@ -60,10 +64,21 @@ std::map<std::string, run_function<Case>> dispatch_table() {
 }
 
 // Runs the case named by the request, with its parameters from --set and --end-time (the
-// parser has checked them); declared in case_list.hpp, instantiated in run_CASE.cpp.
+// parser has checked them), or continues the checkpoint --restart names with the policies,
+// resolution and parameters it was started with; declared in case_list.hpp, instantiated in
+// run_CASE.cpp.
 template <class Case>
-run_outcome run_case(const run_request& r) {
+run_outcome run_case(const run_request& request) {
+  run_request r = request;
   typename Case::parameters p;
+  std::optional<restart_point> restart;
+  if (!r.restart.empty()) {
+    restart = find_restart_point(r.restart);
+    adopt_checkpoint_run(r, restart->description, Case::name);
+    for (const auto& [name, value] : restart->description.at("parameters").items())
+      cases::set_parameter(p, name, value.dump());
+    if (r.out_dir.empty()) r.out_dir = std::filesystem::absolute(restart->file).parent_path().string();
+  }
   for (const auto& [name, value] : r.sets) cases::set_parameter(p, name, value);
   // --end-time becomes the case's own parameter, so that summary.json, the checks of the case
   // (tools that would meet) and the figures (the wheel's tools at the end) all agree with it.
@@ -76,7 +91,7 @@ run_outcome run_case(const run_request& r) {
   const auto table = dispatch_table<Case>();
   const auto it = table.find(r.method_key());
   if (it == table.end()) fail("no compiled configuration for '{}'", r.method_key());
-  return it->second(r, p);
+  return it->second(r, p, restart);
 }
 
 }  // namespace rkpm::runner

@@ -78,6 +78,34 @@ class figure_recorder {
     }
   }
 
+  // Shape times passed so far (each drawn, or skipped when beyond a run that stopped early).
+  std::size_t recorded() const { return next_; }
+
+  // After a restart: the first `count` shapes, from the shape_LABEL.csv files of the folder
+  // `from` the run wrote before (copied into this run's folder when it is another).
+  void restore(const std::filesystem::path& from, std::size_t count) {
+    for (next_ = 0; next_ < count && next_ < times_.size(); ++next_) {
+      std::ifstream in(from / ("shape_" + times_[next_].label + ".csv"));
+      if (!in) continue;
+      shape sh{times_[next_].label, {}, {}};
+      std::string line;
+      std::getline(in, line);  // header
+      polyline current;
+      while (std::getline(in, line)) {
+        if (line.empty()) {
+          sh.cells.push_back(std::move(current));
+          current.clear();
+          continue;
+        }
+        const auto comma = line.find(',');
+        current.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+      }
+      if (!current.empty()) sh.points = std::move(current);
+      if (std::filesystem::absolute(from) != std::filesystem::absolute(dir_)) write_shape_csv(sh);
+      shapes_.push_back(std::move(sh));
+    }
+  }
+
   void plot(const history_table& history) const {
     if constexpr (std::is_same_v<Case, cases::taylor_bar>) {
       shapes_png("fig4_shape.png", "Taylor bar: initial and final section (r, z)", "", true);

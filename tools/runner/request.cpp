@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <algorithm>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -78,13 +79,27 @@ void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
   sub->add_option("--set", sets, "override a case parameter, SI units (`CASE --help` lists them); repeatable")
       ->check(parameter_setting<Case>())
       ->allow_extra_args(false);
+  sub->add_option_function<std::string>(
+         "--checkpoint-interval", [&r](const std::string& t) { r.checkpoint_interval = std::stod(t); },
+         "write checkpoint_STEP.rkpmcp after the first step reaching each multiple of this simulated time, "
+         "and at the end")
+      ->type_name("SECONDS")
+      ->check(positive_seconds);
+  sub->add_option("--restart", r.restart,
+                  "continue a checkpoint (a file, or a run folder's latest) to the end time, with the policies "
+                  "and parameters it was started with; output appends to its folder unless --out is given")
+      ->type_name("PATH");
   sub->add_flag_callback("--no-plots", [&r] { r.plots = false; }, "skip the gnuplot figures");
   sub->add_flag("--quiet", r.quiet, "no progress line");
   sub->footer([] {
     return fmt::format("parameters of {} (--set NAME=VALUE; name, default, unit, meaning):\n{}", Case::name,
                        cases::describe_parameters(typename Case::parameters{}));
   });
-  sub->callback([&r, sub] { r.case_name = sub->get_name(); });
+  sub->callback([&r, sub] {
+    r.case_name = sub->get_name();
+    for (const char* name : {"--quadrature", "--kernel", "--correction", "--contact", "--resolution", "--set"})
+      if (sub->count(name) > 0) r.given.emplace_back(name);
+  });
 }
 
 void add_paper(CLI::App& app, paper_request& p) {
@@ -101,6 +116,34 @@ void add_paper(CLI::App& app, paper_request& p) {
 }
 
 }  // namespace
+
+void adopt_checkpoint_run(run_request& r, const nlohmann::ordered_json& description, std::string_view case_name) {
+  const std::string ran = description.at("case").get<std::string>();
+  if (ran != case_name)
+    fail("--restart {}: the checkpoint is of a {} run, not {}: rkpm_run {} --restart {}", r.restart, ran, case_name,
+         ran, r.restart);
+  auto adopt = [&](const char* option, std::string& value, const char* key) {
+    const std::string theirs = description.at(key).get<std::string>();
+    if (std::ranges::find(r.given, option) != r.given.end() && value != theirs)
+      fail("{} {}: the checkpoint was run with {} {}, and a restart continues the same configuration (drop {})",
+           option, value, option, theirs, option);
+    value = theirs;
+  };
+  adopt("--kernel", r.kernel, "kernel");
+  adopt("--correction", r.correction, "correction");
+  adopt("--quadrature", r.quadrature, "quadrature");
+  adopt("--contact", r.contact, "contact");
+  const int resolution = description.at("resolution").get<int>();
+  if (std::ranges::find(r.given, "--resolution") != r.given.end() && r.resolution != resolution)
+    fail("--resolution {}: the checkpoint was run at resolution {}, and a restart continues the same problem "
+         "(drop --resolution)",
+         r.resolution, resolution);
+  r.resolution = resolution;
+  if (!r.sets.empty())
+    fail("--set {}={}: a restart continues the checkpoint's problem with the parameters it was started with "
+         "(only --end-time may change)",
+         r.sets.front().first, r.sets.front().second);
+}
 
 command_line parse_command_line(int argc, char** argv) {
   command_line cl;

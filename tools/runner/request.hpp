@@ -5,8 +5,11 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "methods.hpp"
 
@@ -26,6 +29,9 @@ struct run_request {
   bool plots = true;
   bool quiet = false;              // no progress line
   std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
+  std::optional<double> checkpoint_interval;  // s of simulated time between checkpoints
+  std::string restart;                        // checkpoint file or run folder to continue
+  std::vector<std::string> given;             // the options given on the command line ("--kernel", ...)
 
   // The key of the dispatch table: "kernel-correction-quadrature-contact".
   std::string method_key() const { return kernel + "-" + correction + "-" + quadrature + "-" + contact; }
@@ -47,6 +53,11 @@ struct command_line {
   run_request run;
   paper_request paper;
 };
+
+// For --restart: takes the policies and resolution from the checkpoint's description (run_record.hpp)
+// and refuses, in one line, another case, a --set, or a policy or resolution option that differs
+// from the checkpoint's.
+void adopt_checkpoint_run(run_request& r, const nlohmann::ordered_json& description, std::string_view case_name);
 
 // Parses argv. Prints the help itself (--help, or the usage when there are no arguments);
 // throws rkpm::error with a one-line message on bad input, before anything runs.

@@ -1,16 +1,20 @@
 #pragma once
-// simulate<Case>(request, parameters, make): builds the solver with make() and runs one case to its end time and writes its results:
+// simulate<Case>(request, parameters, method, make, restart): builds the solver with make(), or
+// continues a checkpoint, runs one case to its end time and writes its results:
 //   summary.json  policies, sizes, steps, time-step range, timings, energies, key results
 //   history.csv   time, the case's key measures, tool forces, energies (flushed per row)
 //   CASE.pvd + CASE_NNNNNN.vtu  particles with displacement, velocity, stress, eps_p, det F
 //   shape_*.csv and PNG figures (figures.hpp, drawn from the shapes and history kept in memory)
+//   checkpoint_NNNNNNNNNN.rkpmcp  with --checkpoint-interval: after the first step reaching each
+//                 multiple of the interval, and at the end (run_observer.hpp, run_record.hpp)
 // A run that fails (NaN, inverted body) keeps what it wrote and records the error in
-// summary.json. The loop itself does no I/O between output times.
+// summary.json; one stopped by the step limit, between steps, also writes a checkpoint to
+// continue from with a higher --max-steps. The loop itself does no I/O between output times.
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,14 +25,13 @@
 #include <omp.h>
 #endif
 
-#include <rkpm/io/csv.hpp>
-#include <rkpm/io/progress.hpp>
-#include <rkpm/io/vtk.hpp>
+#include <rkpm/solver/checkpoint.hpp>
 
-#include "figures.hpp"
 #include "json.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
+#include "run_observer.hpp"
+#include "run_record.hpp"
 
 namespace rkpm::runner {
 
@@ -40,34 +43,41 @@ inline int active_threads() {
 #endif
 }
 
-// Particle fields for the VTK snapshot.
-template <class Solver>
-io::point_data snapshot_fields(const Solver& s) {
-  io::point_data data;
-  data.add("displacement", s.particle_displacements());
-  data.add("velocity", s.particle_velocities());
-  data.add("stress", s.template project_to_particles<mat3>([&](index_t q) { return s.point_cauchy_stress(q); }));
-  data.add("equivalent_plastic_strain", s.template project_to_particles<double>([&](index_t q) {
-    return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
-  }));
-  data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F()[q]; }));
-  return data;
-}
-
-// The policy names of a configuration, as summary.json records them. Passed as values so that
-// simulate is compiled once per solver type (3 per case), not once per configuration (36).
+// The policy names of a configuration, as summary.json records them, and its full name
+// (Config::name(), which checkpoints check). Passed as values so that simulate is compiled once
+// per solver type (3 per case), not once per configuration (36).
 struct method_names {
   std::string_view kernel, correction, quadrature, geometry, contact;
+  std::string configuration;
   template <class Config>
   static method_names of() {
     return {Config::kernel_type::name, Config::correction_type::name, Config::quadrature_type::name,
-            Config::geometry_type::name, Config::contact_type::enforcement_type::name};
+            Config::geometry_type::name, Config::contact_type::enforcement_type::name, Config::name()};
   }
 };
 
+// What identifies a run for a restart: the case, its policies, resolution and parameters
+// (summary.json's first keys, and the description of every checkpoint).
+template <class Case>
+json run_identity(const run_request& request, const typename Case::parameters& params, const method_names& method) {
+  json id = json::object();
+  id["case"] = Case::name;
+  id["kernel"] = method.kernel;
+  id["correction"] = method.correction;
+  id["quadrature"] = method.quadrature;
+  id["geometry"] = method.geometry;
+  id["contact"] = method.contact;
+  id["resolution"] = request.resolution;
+  json& parameters = id["parameters"];
+  parameters = json::object();
+  for (const auto& f : Case::parameters::fields)
+    cases::visit_value(f, params, [&](auto value) { parameters[std::string(f.name)] = value; });
+  return id;
+}
+
 template <class Case, class Solver>
-run_outcome simulate(const run_request& request, const typename Case::parameters& params,
-                     const method_names& method, const std::function<Solver()>& make) {
+run_outcome simulate(const run_request& request, const typename Case::parameters& params, const method_names& method,
+                     const std::function<Solver()>& make, const std::optional<restart_point>& restart = {}) {
   namespace fs = std::filesystem;
   run_outcome outcome;
   outcome.directory = request.output_directory();
@@ -75,24 +85,24 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   fs::create_directories(dir);
 
   json& summary = outcome.summary;
-  summary = json::object();
-  summary["case"] = Case::name;
-  summary["kernel"] = method.kernel;
-  summary["correction"] = method.correction;
-  summary["quadrature"] = method.quadrature;
-  summary["geometry"] = method.geometry;
-  summary["contact"] = method.contact;
-  summary["resolution"] = request.resolution;
+  summary = run_identity<Case>(request, params, method);
   summary["status"] = "setting up";
-  json& parameters = summary["parameters"];
-  parameters = json::object();
-  for (const auto& f : Case::parameters::fields)
-    cases::visit_value(f, params, [&](auto value) { parameters[std::string(f.name)] = value; });
 
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<Solver> holder;
+  run_record record;
   try {
     holder.emplace(make());
+    if (restart) {
+      read_checkpoint(*holder, restart->file, method.configuration);
+      record = record_from_json(restart->description.at("record"));
+      record.restarts.push_back({{"checkpoint", fs::absolute(restart->file).string()},
+                                 {"time_s", holder->time()}, {"step", holder->steps()}});
+      // Snapshots written before live in the checkpoint's folder.
+      const fs::path from = fs::absolute(restart->file).parent_path();
+      if (from != fs::absolute(dir))
+        for (auto& [t, file] : record.snapshots) file = fs::relative(from / file, fs::absolute(dir)).string();
+    }
   } catch (const std::exception& e) {
     summary["status"] = "failed";
     summary["error"] = e.what();
@@ -100,71 +110,42 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     throw;
   }
   Solver& s = *holder;
+  if (restart && s.time() >= s.options().end_time * (1.0 - 1e-12))
+    fail("--restart {}: the checkpoint is at t = {:.6g} s, the end time already; give a later --end-time to "
+         "continue it",
+         restart->file.string(), s.time());
   const double setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double end_time = s.options().end_time;
-  const index_t tools = static_cast<index_t>(s.contact().tools().size());
-
-  // history.csv columns: time, the case's measures, tool forces, energies.
-  std::vector<vec2> mean_force(tools, vec2::Zero()), impulse(tools, vec2::Zero());
-  auto measures = Case::measure(s, params, mean_force);
-  std::vector<std::string> columns{"time_s"};
-  for (const auto& [k, v] : measures) columns.push_back(k);
-  for (const auto& tool : s.contact().tools()) {
-    columns.push_back(tool.name() + "_force_x_N");
-    columns.push_back(tool.name() + "_force_y_N");
+  if (!restart) {
+    record.history_interval = end_time / 400;
+    record.snapshot_interval = end_time / 20;
+    record.setup_s = setup_s;
   }
-  for (const char* c : {"kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"})
-    columns.emplace_back(c);
-  io::csv_writer history(dir / "history.csv", columns);
-  history_table table{columns, {}};  // the same rows, for the figures
-  io::pvd_series vtk(dir / (std::string(Case::name) + ".pvd"));
-  figure_recorder<Case> figures(dir, params);
+  if (request.checkpoint_interval) {
+    record.checkpoint_interval = *request.checkpoint_interval;
+    record.next_checkpoint = (std::floor(s.time() / record.checkpoint_interval) + 1.0) * record.checkpoint_interval;
+  }
 
-  const int history_rows = 400, snapshots = 20;
-  double next_history = 0.0, next_snapshot = 0.0, last_time = 0.0, interval_start = 0.0;
-  io::progress_line progress(false);
-  std::vector<double> row;
-  auto observe = [&](const Solver& s) {
-    const double t = s.time(), dt = t - last_time;
-    last_time = t;
-    for (index_t k = 0; k < tools; ++k) impulse[k] += s.contact().reactions()[k] * dt;
-    const bool last = t >= end_time * (1.0 - 1e-12);
-    if (!request.quiet) progress.update(t, end_time, static_cast<long>(s.steps()));
-    if (t >= next_history || last) {
-      const double span = t - interval_start;
-      for (index_t k = 0; k < tools; ++k) mean_force[k] = span > 0.0 ? vec2(impulse[k] / span) : vec2::Zero();
-      std::fill(impulse.begin(), impulse.end(), vec2::Zero());
-      interval_start = t;
-      measures = Case::measure(s, params, mean_force);
-      row.assign(1, t);
-      for (const auto& [k, v] : measures) row.push_back(v);
-      for (const vec2& f : mean_force) {
-        row.push_back(f[0]);
-        row.push_back(f[1]);
-      }
-      const auto& e = s.energy();
-      for (double v : {e.kinetic, e.internal, e.plastic, e.contact, e.external, e.balance_error()}) row.push_back(v);
-      history.row(row);
-      table.rows.push_back(row);
-      next_history += end_time / history_rows;
-    }
-    if (t >= next_snapshot || last) {
-      vtk.add_snapshot(t, s.particle_positions(), snapshot_fields(s));
-      next_snapshot += end_time / snapshots;
-    }
-    figures.observe(s);
-  };
-
+  run_observer<Case, Solver> observe(dir, params, s, std::move(record), run_identity<Case>(request, params, method),
+                                     method.configuration, request.quiet);
+  if (restart) observe.resume(fs::absolute(restart->file).parent_path());
   summary["status"] = "running";
-  const auto t1 = std::chrono::steady_clock::now();
   std::string error;
   try {
     s.run(observe, 1);
+    if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
   } catch (const std::exception& e) {
     error = e.what();
+    // Stopped between steps (the step limit): the state is whole and can be continued.
+    if (observe.record().checkpoint_interval > 0.0 && s.between_steps()) {
+      try {
+        observe.write_checkpoint_now(s);
+      } catch (const std::exception& e2) {
+        fmt::print(stderr, "rkpm_run: no checkpoint at the failure: {}\n", e2.what());
+      }
+    }
   }
-  progress.finish();
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  observe.finish();
 
   summary["status"] = error.empty() ? "completed" : "failed";
   if (!error.empty()) summary["error"] = error;
@@ -175,8 +156,10 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   summary["dt_max_s"] = s.max_time_step();
   summary["end_time_s"] = s.time();
   summary["threads"] = active_threads();
-  summary["wall_s"] = wall_s;
-  summary["setup_s"] = setup_s;
+  summary["wall_s"] = observe.wall_s();
+  summary["setup_s"] = observe.record().setup_s;
+  if (!observe.record().restarts.empty()) summary["restarts"] = observe.record().restarts;
+  if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();
   json& energy = summary["energy"];
   energy = json::object();
   const auto& e = s.energy();
@@ -188,16 +171,21 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   energy["balance_error"] = e.balance_error();
   json& results = summary["results"];  // the case's measures at the end of the run
   results = json::object();
-  for (const auto& [k, v] : measures) results[k] = v;
+  for (const auto& [k, v] : observe.last_measures()) results[k] = v;
   write_json(dir / "summary.json", summary);
   if (request.plots) {
     try {
-      figures.plot(table);
+      observe.figures().plot(observe.table());
     } catch (const std::exception& ex) {
       fmt::print(stderr, "rkpm_run: figures skipped: {}\n", ex.what());
     }
   }
-  if (!error.empty()) fail("{} (what was written so far is in {})", error, outcome.directory);
+  if (!error.empty()) {
+    const std::string hint = observe.last_checkpoint().empty()
+                                 ? std::string()
+                                 : fmt::format("; continue with --restart {}", observe.last_checkpoint().string());
+    fail("{} (what was written so far is in {}{})", error, outcome.directory, hint);
+  }
   outcome.completed = true;
   return outcome;
 }

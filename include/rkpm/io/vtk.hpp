@@ -149,7 +149,12 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
 // any number of snapshots leaves a valid .pvd listing exactly those snapshots.
 class pvd_series {
  public:
-  explicit pvd_series(std::filesystem::path pvd_path) : path_(std::move(pvd_path)) { write(); }
+  // `entries`: snapshots already in the series (time, file relative to the .pvd), e.g. those of
+  // the run a restart continues.
+  explicit pvd_series(std::filesystem::path pvd_path, std::vector<std::pair<double, std::string>> entries = {})
+      : path_(std::move(pvd_path)), entries_(std::move(entries)) {
+    write();
+  }
 
   void add(double time, const std::string& vtu_filename_relative) {
     entries_.emplace_back(time, vtu_filename_relative);

@@ -142,10 +142,11 @@ class explicit_solver {
     observe(*this);
   }
   void run() { run([](const explicit_solver&) {}); }
-
-  // Checkpoint sections (io/checkpoint.hpp); solver/checkpoint.hpp writes and reads the files.
+  // Checkpoint sections (io/checkpoint.hpp; solver/checkpoint.hpp writes and reads the files),
+  // whole only between steps: between_steps() is false after an error thrown inside step().
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) { sections(r, *this); }
+  bool between_steps() const { return step_dt_ == 0.0; }
 
   // ---- results -----------------------------------------------------------------------
   double time() const { return time_; }

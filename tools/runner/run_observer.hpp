@@ -1,0 +1,171 @@
+#pragma once
+// run_observer<Case, Solver>: what rkpm_run does after every step (simulate.hpp calls it through
+// explicit_solver::run): the progress line, a history.csv row at every history interval (the
+// case's measures, the tool forces averaged over the interval, the energies), a VTK snapshot at
+// every snapshot interval, the figure shapes, and a checkpoint after the first step that
+// reaches each multiple of the checkpoint interval. Its whole state is a run_record, which the
+// checkpoints carry, so a restarted run continues the same outputs (run_record.hpp).
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/io/checkpoint.hpp>
+#include <rkpm/io/csv.hpp>
+#include <rkpm/io/progress.hpp>
+#include <rkpm/io/vtk.hpp>
+#include <rkpm/solver/checkpoint.hpp>
+
+#include "figures.hpp"
+#include "json.hpp"
+#include "run_record.hpp"
+
+namespace rkpm::runner {
+
+// Particle fields for the VTK snapshot.
+template <class Solver>
+io::point_data snapshot_fields(const Solver& s) {
+  io::point_data data;
+  data.add("displacement", s.particle_displacements());
+  data.add("velocity", s.particle_velocities());
+  data.add("stress", s.template project_to_particles<mat3>([&](index_t q) { return s.point_cauchy_stress(q); }));
+  data.add("equivalent_plastic_strain", s.template project_to_particles<double>([&](index_t q) {
+    return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
+  }));
+  data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F()[q]; }));
+  return data;
+}
+
+template <class Case, class Solver>
+class run_observer {
+ public:
+  using measures = std::vector<std::pair<std::string, double>>;
+
+  // Writes into `dir`: history.csv (the record's rows so far, then one per interval), CASE.pvd
+  // (the record's snapshots, then new ones) and the figure shapes. `identity` is the runner's
+  // description of the run (case, policies, parameters), kept in every checkpoint with the
+  // record; `configuration` is the solver's configuration name (Config::name()).
+  run_observer(const std::filesystem::path& dir, const typename Case::parameters& params, const Solver& s,
+               run_record record, json identity, std::string configuration, bool quiet)
+      : dir_(dir), params_(params), record_(std::move(record)), identity_(std::move(identity)),
+        configuration_(std::move(configuration)), quiet_(quiet),
+        tools_(static_cast<index_t>(s.contact().tools().size())),
+        mean_force_(tools_, vec2::Zero()),
+        measures_(Case::measure(s, params, mean_force_)),
+        history_(dir / "history.csv", column_names(s)),
+        vtk_(dir / (std::string(Case::name) + ".pvd"), record_.snapshots),
+        figures_(dir, params),
+        segment_start_(std::chrono::steady_clock::now()) {
+    record_.impulse.resize(tools_, vec2::Zero());
+    for (const auto& row : record_.history_rows) history_.row(row);
+  }
+
+  // Called at the start, after every step and at the end of the run.
+  void operator()(const Solver& s) {
+    if (std::exchange(skip_next_, false)) return;
+    const double t = s.time(), dt = t - record_.last_time, end_time = s.options().end_time;
+    record_.last_time = t;
+    for (index_t k = 0; k < tools_; ++k) record_.impulse[k] += s.contact().reactions()[k] * dt;
+    const bool last = t >= end_time * (1.0 - 1e-12);
+    if (!quiet_) progress_.update(t, end_time, static_cast<long>(s.steps()));
+    if (t >= record_.next_history || last) {
+      add_history_row(s, t);
+      record_.next_history += record_.history_interval;
+    }
+    if (t >= record_.next_snapshot || last) {
+      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), snapshot_fields(s));
+      record_.snapshots.emplace_back(t, vtu.filename().string());
+      record_.next_snapshot += record_.snapshot_interval;
+    }
+    figures_.observe(s);
+    record_.shapes = figures_.recorded();
+    if (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint && !last) {
+      while (record_.next_checkpoint <= t) record_.next_checkpoint += record_.checkpoint_interval;
+      write_checkpoint_now(s);
+    }
+  }
+
+  // Writes checkpoint_<step>.rkpmcp for the solver's current state; returns its path.
+  std::filesystem::path write_checkpoint_now(const Solver& s) {
+    record_.wall_s = wall_s();
+    json description = identity_;
+    description["record"] = to_json(record_);
+    const auto path = dir_ / io::checkpoint_file_name(s.steps());
+    rkpm::write_checkpoint(s, path, configuration_, description.dump());
+    last_checkpoint_ = path;
+    return path;
+  }
+
+  // Continues a checkpoint's run: its figure shapes come from the folder they were written to,
+  // and the first call (at the checkpoint's time, already observed before it was written) is
+  // skipped.
+  void resume(const std::filesystem::path& from) {
+    figures_.restore(from, record_.shapes);
+    skip_next_ = true;
+  }
+
+  void finish() { progress_.finish(); }
+  double wall_s() const {
+    return record_.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - segment_start_).count();
+  }
+  const measures& last_measures() const { return measures_; }
+  const run_record& record() const { return record_; }
+  const std::filesystem::path& last_checkpoint() const { return last_checkpoint_; }
+  history_table table() const { return {history_.columns(), record_.history_rows}; }
+  const figure_recorder<Case>& figures() const { return figures_; }
+
+ private:
+  // history.csv columns: time, the case's measures, tool forces, energies.
+  std::vector<std::string> column_names(const Solver& s) const {
+    std::vector<std::string> columns{"time_s"};
+    for (const auto& [k, v] : measures_) columns.push_back(k);
+    for (const auto& tool : s.contact().tools()) {
+      columns.push_back(tool.name() + "_force_x_N");
+      columns.push_back(tool.name() + "_force_y_N");
+    }
+    for (const char* c : {"kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"})
+      columns.emplace_back(c);
+    return columns;
+  }
+
+  // The tool forces are the impulses of the interval over its length.
+  void add_history_row(const Solver& s, double t) {
+    const double span = t - record_.interval_start;
+    for (index_t k = 0; k < tools_; ++k)
+      mean_force_[k] = span > 0.0 ? vec2(record_.impulse[k] / span) : vec2::Zero();
+    std::fill(record_.impulse.begin(), record_.impulse.end(), vec2::Zero());
+    record_.interval_start = t;
+    measures_ = Case::measure(s, params_, mean_force_);
+    std::vector<double> row{t};
+    for (const auto& [k, v] : measures_) row.push_back(v);
+    for (const vec2& f : mean_force_) {
+      row.push_back(f[0]);
+      row.push_back(f[1]);
+    }
+    const auto& e = s.energy();
+    for (double v : {e.kinetic, e.internal, e.plastic, e.contact, e.external, e.balance_error()}) row.push_back(v);
+    history_.row(row);
+    record_.history_rows.push_back(std::move(row));
+  }
+
+  std::filesystem::path dir_;
+  typename Case::parameters params_;
+  run_record record_;
+  json identity_;
+  std::string configuration_;
+  bool quiet_;
+  index_t tools_;
+  std::vector<vec2> mean_force_;
+  measures measures_;
+  io::csv_writer history_;
+  io::pvd_series vtk_;
+  figure_recorder<Case> figures_;
+  io::progress_line progress_{false};
+  std::chrono::steady_clock::time_point segment_start_;
+  std::filesystem::path last_checkpoint_;
+  bool skip_next_ = false;
+};
+
+}  // namespace rkpm::runner

@@ -1,0 +1,99 @@
+#pragma once
+// What rkpm_run keeps in a checkpoint besides the solver's state (solver/checkpoint.hpp), as JSON
+// in the checkpoint's description (io/checkpoint_format.hpp): the case, policies, resolution and
+// parameters the run was started with, and the record of its outputs so far (the history rows,
+// the snapshots, the output clocks, the tool impulses of the open history interval, the wall
+// time). A restart rebuilds the same problem from the first part and continues the outputs
+// from the second, so that its history.csv, snapshots and summary.json are the uninterrupted
+// run's (docs/method.md section 9.5).
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/core/types.hpp>
+#include <rkpm/io/checkpoint.hpp>
+
+#include "json.hpp"
+
+namespace rkpm::runner {
+
+// The observer's state between two steps.
+struct run_record {
+  double history_interval = 0.0, snapshot_interval = 0.0, checkpoint_interval = 0.0;  // s; 0: none
+  double next_history = 0.0, next_snapshot = 0.0, next_checkpoint = 0.0;               // s
+  double last_time = 0.0, interval_start = 0.0;  // the last observed time; start of the open history row
+  std::vector<vec2> impulse;                     // per tool, since interval_start (N s)
+  std::vector<std::vector<double>> history_rows;
+  std::vector<std::pair<double, std::string>> snapshots;  // .pvd entries: time, file relative to the run folder
+  std::size_t shapes = 0;                                 // figure shapes recorded (figures.hpp)
+  double wall_s = 0.0, setup_s = 0.0;                     // over every part of the run so far
+  json restarts = json::array();                          // {checkpoint, time_s, step} per restart
+};
+
+inline json to_json(const run_record& r) {
+  json impulse = json::array();
+  for (const vec2& i : r.impulse) impulse.push_back({i[0], i[1]});
+  return {{"history_interval_s", r.history_interval}, {"snapshot_interval_s", r.snapshot_interval},
+          {"checkpoint_interval_s", r.checkpoint_interval}, {"next_history_s", r.next_history},
+          {"next_snapshot_s", r.next_snapshot}, {"next_checkpoint_s", r.next_checkpoint},
+          {"last_time_s", r.last_time}, {"interval_start_s", r.interval_start},
+          {"impulse_N_s", impulse}, {"history_rows", r.history_rows}, {"snapshots", r.snapshots},
+          {"shapes", r.shapes}, {"wall_s", r.wall_s}, {"setup_s", r.setup_s}, {"restarts", r.restarts}};
+}
+
+inline run_record record_from_json(const json& j) {
+  run_record r;
+  r.history_interval = j.at("history_interval_s").get<double>();
+  r.snapshot_interval = j.at("snapshot_interval_s").get<double>();
+  r.checkpoint_interval = j.at("checkpoint_interval_s").get<double>();
+  r.next_history = j.at("next_history_s").get<double>();
+  r.next_snapshot = j.at("next_snapshot_s").get<double>();
+  r.next_checkpoint = j.at("next_checkpoint_s").get<double>();
+  r.last_time = j.at("last_time_s").get<double>();
+  r.interval_start = j.at("interval_start_s").get<double>();
+  for (const auto& i : j.at("impulse_N_s")) r.impulse.emplace_back(i.at(0).get<double>(), i.at(1).get<double>());
+  r.history_rows = j.at("history_rows").get<std::vector<std::vector<double>>>();
+  r.snapshots = j.at("snapshots").get<std::vector<std::pair<double, std::string>>>();
+  r.shapes = j.at("shapes").get<std::size_t>();
+  r.wall_s = j.at("wall_s").get<double>();
+  r.setup_s = j.at("setup_s").get<double>();
+  r.restarts = j.at("restarts");
+  return r;
+}
+
+// A checkpoint to restart from: the file, and the runner's description in it.
+struct restart_point {
+  std::filesystem::path file;
+  json description;  // case, kernel, correction, quadrature, contact, resolution, parameters, record
+};
+
+// PATH is a checkpoint file or a run folder (its latest checkpoint). Refuses, in one line, a
+// path that is neither, a checkpoint the runner did not write and a truncated file.
+inline restart_point find_restart_point(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  restart_point p;
+  if (fs::is_directory(path)) {
+    const auto latest = io::latest_checkpoint(path);
+    if (!latest)
+      fail("--restart {}: the folder has no checkpoint_*{} file; run with --checkpoint-interval SECONDS to "
+           "write checkpoints",
+           path.string(), io::checkpoint_extension);
+    p.file = *latest;
+  } else if (fs::exists(path)) {
+    p.file = path;
+  } else {
+    fail("--restart {}: no such checkpoint file or run folder", path.string());
+  }
+  const io::checkpoint_header header = io::read_checkpoint_header(p.file);
+  p.description = json::parse(header.description, nullptr, false);
+  if (p.description.is_discarded() || !p.description.is_object() || !p.description.contains("record"))
+    fail("checkpoint '{}' was not written by rkpm_run (its description is not the runner's): restart it "
+         "from the program that wrote it",
+         p.file.string());
+  return p;
+}
+
+}  // namespace rkpm::runner
