@@ -24,3 +24,13 @@ set_tests_properties(tools.runner.outputs tools.runner.vtk PROPERTIES FIXTURES_R
 set_tests_properties(tools.runner.bad_options tools.runner.step_budget tools.runner.help tools.runner.run tools.runner.outputs tools.runner.vtk
                      PROPERTIES TIMEOUT 120 LABELS "tools/runner"
                                 ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
+
+# Checkpoints and restarts (runner/check_restart.py): a restart gives the uninterrupted run's
+# outputs bit for bit, so these run at one thread, where runs are reproducible to the bit.
+set(rkpm_restart_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_restart.py)
+foreach(mode same kill refused)
+  add_test(NAME tools.runner.restart_${mode}
+           COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_restart_check} ${mode} $<TARGET_FILE:rkpm_run> ${rkpm_runner_work}/restart)
+  set_tests_properties(tools.runner.restart_${mode} PROPERTIES TIMEOUT 300 LABELS "tools/runner"
+                       ENVIRONMENT "OMP_NUM_THREADS=1;OMP_WAIT_POLICY=passive")
+endforeach()

@@ -129,7 +129,8 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   run_observer<Case, Solver> observe(dir, params, s, std::move(record), run_identity<Case>(request, params, method),
                                      method.configuration, request.quiet);
   if (restart) observe.resume(fs::absolute(restart->file).parent_path());
-  summary["status"] = "running";
+  summary["status"] = "running";  // what a killed run's folder says
+  write_json(dir / "summary.json", summary);
   std::string error;
   try {
     s.run(observe, 1);
