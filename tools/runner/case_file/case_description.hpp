@@ -1,0 +1,142 @@
+#pragma once
+// case_description: a case file (cases/*.json; the schema is in tools/runner/case_file/README.md) read
+// and checked, as plain typed structs. Lengths, velocities and moduli are SI, as the file
+// gives them. Every struct keeps the JSON pointer it was read from (`at`), so that a check
+// made later (building at a resolution, naming a tool) still points at the line to fix.
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <rkpm/core/types.hpp>
+
+#include "../json.hpp"
+
+namespace rkpm::runner::case_file {
+
+// Policy names exactly as the policies' ::name (tools/runner/methods.hpp lists the choices).
+struct method_choice {
+  std::string kernel, correction, quadrature, contact;
+};
+
+// ---- bodies -----------------------------------------------------------------------------
+struct rectangle_shape {  // a regular grid, as make_grid_particles / make_grid_mesh build it
+  vec2 lower_left = vec2::Zero(), upper_right = vec2::Zero();
+  std::array<int, 2> particles{2, 2};  // along x and y at resolution 1
+};
+struct polygon_shape {  // counter-clockwise, simple; meshed with a target spacing
+  std::vector<vec2> vertices;
+  double spacing = 0.0;  // at resolution 1
+};
+struct mesh_shape {  // a Gmsh file, used as given
+  std::filesystem::path file;  // resolved against the case file's folder
+};
+using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
+
+struct material_description {
+  std::string law;        // "elastic" or "j2"
+  std::string hardening;  // for j2: "linear" or "power" (the hardening laws' ::name)
+  double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
+  double yield_stress = 0.0, hardening_modulus = 0.0;                   // linear
+  double flow_coefficient = 0.0, flow_offset = 0.0, flow_exponent = 0.0;  // power: K (eps0 + eps_p)^n
+};
+
+// Prescribed velocity components (m/s) of the particles on a named edge; empty = free.
+struct constraint_description {
+  std::string edge;
+  std::array<std::optional<double>, 2> velocity;
+  std::string at;
+};
+
+struct body_description {
+  std::string name;
+  body_shape shape;
+  material_description material;
+  vec2 initial_velocity = vec2::Zero();
+  vec2 body_force = vec2::Zero();  // acceleration, m/s^2
+  std::vector<constraint_description> constraints;
+  bool all_slaves = false;  // "slaves": "all" (else "boundary")
+  std::string at;
+};
+
+// ---- tools ------------------------------------------------------------------------------
+struct tool_motion_description {
+  std::string type = "fixed";  // "fixed", "constant_velocity", "velocity_table"
+  vec2 velocity = vec2::Zero();
+  // velocity_table rows: t (s, first 0, increasing), vx, vy (m/s); linear between rows,
+  // constant after the last.
+  std::vector<std::array<double, 3>> table;
+};
+
+struct tool_description {
+  std::string name;
+  std::vector<vec2> polyline;  // at t = 0
+  bool body_on_left = true;
+  tool_motion_description motion;
+  double contact_depth = 0.0;  // 0: half the shortest segment (rigid_tool's default)
+  std::string at;
+};
+
+// ---- histories --------------------------------------------------------------------------
+// The measures recorded over time and at the end (summary.json "results").
+struct extent_history {  // max/min/width of the particles' current x or y
+  std::string body, of;  // of: max_x, min_x, max_y, min_y, width_x, width_y
+  std::string on_edge;   // only particles that started on this edge ("" = all)
+  // Only particles currently strictly beyond these bounds (NaN = no bound).
+  double x_below = NAN, x_above = NAN, y_below = NAN, y_above = NAN;
+};
+struct tool_gap_history {  // (lowest `to` vertex - highest `from` vertex) along component, at time t
+  std::string from, to;
+  int component = 1;
+};
+struct tool_force_history {  // the tool's reaction, averaged over the last output interval
+  std::string tool;
+  int component = 1;
+  bool absolute = false;
+};
+struct tool_displacement_history {
+  std::string tool;
+  int component = 1;
+};
+struct probe_history {  // the particle nearest to a reference point
+  std::string body, quantity;  // quantity: position, displacement, velocity
+  vec2 point = vec2::Zero();
+  int component = 0;
+};
+struct max_plastic_strain_history { std::string body; };
+struct max_penetration_history {};
+struct volume_change_history { std::string body; };  // sum J w / sum w - 1
+
+using history_kind = std::variant<extent_history, tool_gap_history, tool_force_history, tool_displacement_history,
+                                  probe_history, max_plastic_strain_history, max_penetration_history,
+                                  volume_change_history>;
+
+struct history_description {
+  std::string name;
+  history_kind kind;
+  double scale = 1.0;  // the value is multiplied by it (1e3: m -> mm)
+  std::string at;
+};
+
+// ---- the case -----------------------------------------------------------------------------
+struct case_description {
+  std::filesystem::path file;  // for messages and relative paths
+  json document;               // the file with the overrides applied, for summary.json
+  std::string name, description;
+  std::string geometry;        // "plane_strain" or "axisymmetric"
+  method_choice method;
+  double support_factor = 2.0;
+  double end_time = 0.0;
+  std::vector<body_description> bodies;  // exactly one today
+  std::vector<tool_description> tools;
+  double friction = 0.0;
+  std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
+  int snapshots = 20, history_rows = 400;
+  std::vector<history_description> histories;
+};
+
+}  // namespace rkpm::runner::case_file

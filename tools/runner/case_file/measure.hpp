@@ -1,0 +1,133 @@
+#pragma once
+// measure(solver, case, mean_tool_force): the case file's histories evaluated on a solver at
+// its current time, in the file's order, as (name, value) pairs like the typed cases'
+// measure(). The arithmetic is theirs (a maximum over the same particles, a gap as reference
+// gap plus relative displacement, a force as the runner's mean over the last output
+// interval), so that the paper case files give the typed cases' numbers bit for bit.
+//   mean_tool_force  #tools list of the tools' reactions averaged over the last interval (N
+//                    or N/m, as the runner passes them to every case's measure)
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <rkpm/core/types.hpp>
+
+#include "build_problem.hpp"
+#include "case_description.hpp"
+
+namespace rkpm::runner::case_file {
+
+namespace detail {
+
+inline constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
+
+// Index of the tool called `name` among the solver's tools (the file's order).
+template <class Solver>
+std::size_t tool_index(const Solver& s, const std::string& name) {
+  const auto& tools = s.contact().tools();
+  for (std::size_t k = 0; k < tools.size(); ++k)
+    if (tools[k].name() == name) return k;
+  fail("case file: the solver has no tool '{}' (was it built from this case file?)", name);
+}
+
+// Largest, smallest or spread of the current x or y of the particles selected; NaN if none is.
+template <class Solver>
+double extent_of(const Solver& s, const body_description& b, const extent_history& h, const std::vector<vec2>& x) {
+  const auto& X = s.model().particles.position;
+  std::vector<index_t> chosen;
+  if (h.on_edge.empty()) {
+    chosen.resize(x.size());
+    for (std::size_t I = 0; I < x.size(); ++I) chosen[I] = static_cast<index_t>(I);
+  } else {
+    chosen = particles_on_edge(b, X, h.on_edge);
+  }
+  const int k = h.of.back() == 'x' ? 0 : 1;
+  bool any = false;
+  double lo = 0.0, hi = 0.0;
+  for (index_t I : chosen) {
+    const vec2& p = x[I];
+    // NaN bounds compare false, so an absent bound keeps every particle.
+    if (p.x() >= h.x_below || p.x() <= h.x_above || p.y() >= h.y_below || p.y() <= h.y_above) continue;
+    lo = any ? std::min(lo, p[k]) : p[k];
+    hi = any ? std::max(hi, p[k]) : p[k];
+    any = true;
+  }
+  if (!any) return no_value;
+  if (h.of.starts_with("max")) return hi;
+  if (h.of.starts_with("min")) return lo;
+  return hi - lo;
+}
+
+template <class Solver>
+double evaluate(const Solver& s, const case_description& c, const history_kind& kind,
+                const std::vector<vec2>& mean_tool_force, const std::vector<vec2>& x) {
+  return std::visit(
+      [&](const auto& h) -> double {
+        using H = std::decay_t<decltype(h)>;
+        if constexpr (std::is_same_v<H, extent_history>) {
+          return extent_of(s, c.bodies.front(), h, x);
+        } else if constexpr (std::is_same_v<H, tool_gap_history>) {
+          const auto& from = s.contact().tools()[tool_index(s, h.from)];
+          const auto& to = s.contact().tools()[tool_index(s, h.to)];
+          double top = to.reference_vertices().front()[h.component];
+          double bottom = from.reference_vertices().front()[h.component];
+          for (const vec2& v : to.reference_vertices()) top = std::min(top, v[h.component]);
+          for (const vec2& v : from.reference_vertices()) bottom = std::max(bottom, v[h.component]);
+          const double t = s.time();
+          return (top - bottom) + (to.displacement(t)[h.component] - from.displacement(t)[h.component]);
+        } else if constexpr (std::is_same_v<H, tool_force_history>) {
+          const std::size_t k = tool_index(s, h.tool);
+          const double f = k < mean_tool_force.size() ? mean_tool_force[k][h.component] : 0.0;
+          return h.absolute ? std::abs(f) : f;
+        } else if constexpr (std::is_same_v<H, tool_displacement_history>) {
+          return s.contact().tools()[tool_index(s, h.tool)].displacement(s.time())[h.component];
+        } else if constexpr (std::is_same_v<H, probe_history>) {
+          const auto& X = s.model().particles.position;
+          std::size_t nearest = 0;
+          for (std::size_t I = 1; I < X.size(); ++I)
+            if ((X[I] - h.point).squaredNorm() < (X[nearest] - h.point).squaredNorm()) nearest = I;
+          if (h.quantity == "position") return x[nearest][h.component];
+          const auto values = h.quantity == "velocity" ? s.particle_velocities() : s.particle_displacements();
+          return values[nearest][h.component];
+        } else if constexpr (std::is_same_v<H, max_plastic_strain_history>) {
+          double eps_p = 0.0;
+          for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
+          return eps_p;
+        } else if constexpr (std::is_same_v<H, max_penetration_history>) {
+          return s.max_penetration();
+        } else {
+          double v0 = 0.0, v = 0.0;
+          const auto& w = s.model().points.weight;
+          for (std::size_t q = 0; q < w.size(); ++q) {
+            v0 += w[q];
+            v += w[q] * s.point_det_F()[q];
+          }
+          return v / v0 - 1.0;
+        }
+      },
+      kind);
+}
+
+}  // namespace detail
+
+template <class Solver>
+std::vector<std::pair<std::string, double>> measure(const Solver& s, const case_description& c,
+                                                    const std::vector<vec2>& mean_tool_force) {
+  std::vector<std::pair<std::string, double>> out;
+  out.reserve(c.histories.size());
+  const bool positions = std::any_of(c.histories.begin(), c.histories.end(), [](const history_description& h) {
+    return std::holds_alternative<extent_history>(h.kind) || std::holds_alternative<probe_history>(h.kind);
+  });
+  const std::vector<vec2> x = positions ? s.particle_positions() : std::vector<vec2>{};
+  for (const auto& h : c.histories)
+    out.emplace_back(h.name, detail::evaluate(s, c, h.kind, mean_tool_force, x) * h.scale);
+  return out;
+}
+
+}  // namespace rkpm::runner::case_file

@@ -1,0 +1,202 @@
+#pragma once
+// Reading one entry of "bodies": its shape (rectangle, polygon or Gmsh mesh), material,
+// initial velocity, body force, edge constraints and contact slaves. Values are checked one by
+// one here (types, signs, ranges); what needs the whole body (a polygon with no area, an edge
+// name, a tool inside it) is checked in cross_checks.hpp.
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include <rkpm/material/elastic.hpp>
+#include <rkpm/material/hardening.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+
+#include "case_description.hpp"
+#include "json_fields.hpp"
+
+namespace rkpm::runner::case_file {
+
+namespace detail {
+
+inline std::optional<body_shape> read_shape(diagnostics& d, const json& value, const std::string& at,
+                                            const std::filesystem::path& folder) {
+  static constexpr std::array<std::string_view, 3> kinds{"rectangle", "polygon", "mesh"};
+  object_reader shape(d, value, at, {kinds.begin(), kinds.end()});
+  if (!shape.valid()) return std::nullopt;
+  if (value.size() != 1) {
+    d.error(at, fmt::format("give exactly one of {} (found {})", list_choices(kinds), value.size()));
+    return std::nullopt;
+  }
+  const std::string kind = value.begin().key();
+  if (kind == "rectangle") {
+    object_reader r(d, value[kind], shape.at(kind), {"lower_left_m", "upper_right_m", "particles"});
+    const auto lo = r.point("lower_left_m", "[0, 0]");
+    const auto hi = r.point("upper_right_m", "[3.2e-3, 32.4e-3]");
+    rectangle_shape s;
+    if (const json* n = r.required("particles", "[21, 51]")) {
+      const bool pair = n->is_array() && n->size() == 2;
+      const auto nx = pair ? to_integer(d, (*n)[0], child_pointer(r.at("particles"), 0), "21") : std::nullopt;
+      const auto ny = pair ? to_integer(d, (*n)[1], child_pointer(r.at("particles"), 1), "51") : std::nullopt;
+      if (!pair) d.error(r.at("particles"), fmt::format("expected [particles along x, along y], got {}; give e.g. [21, 51]",
+                                                        describe(*n)));
+      for (int k = 0; k < 2; ++k) {
+        const auto c = k == 0 ? nx : ny;
+        if (c && *c < 2)
+          d.error(child_pointer(r.at("particles"), k), fmt::format("{} particles: a grid needs at least 2 per direction", *c));
+        if (c) s.particles[k] = *c;
+      }
+      if (!nx || !ny || *nx < 2 || *ny < 2) return std::nullopt;
+    }
+    if (!lo || !hi) return std::nullopt;
+    s.lower_left = *lo;
+    s.upper_right = *hi;
+    return s;
+  }
+  if (kind == "polygon") {
+    object_reader p(d, value[kind], shape.at(kind), {"vertices_m", "spacing_m"});
+    const json* v = p.required("vertices_m", "[[0, 0], [0.1, 0], [0, 0.1]]");
+    const auto vertices = v ? to_points(d, *v, p.at("vertices_m"), 3, "[[0, 0], [0.1, 0], [0, 0.1]]") : std::nullopt;
+    const auto spacing = p.number("spacing_m", "1e-3");
+    if (spacing && !check_positive(d, p.at("spacing_m"), *spacing, "1e-3")) return std::nullopt;
+    if (!vertices || !spacing) return std::nullopt;
+    return polygon_shape{*vertices, *spacing};
+  }
+  object_reader m(d, value[kind], shape.at(kind), {"file"});
+  const auto file = m.text("file", "plate.msh");
+  if (!file) return std::nullopt;
+  const std::filesystem::path path = folder / *file;
+  if (!std::filesystem::is_regular_file(path)) {
+    d.error(m.at("file"), fmt::format("mesh file '{}' does not exist (looked for {}); give a path relative to the "
+                                      "case file's folder", *file, path.string()));
+    return std::nullopt;
+  }
+  return mesh_shape{path};
+}
+
+inline material_description read_material(diagnostics& d, const json& value, const std::string& at) {
+  using linear = material::hardening::linear;
+  using power = material::hardening::power_law;
+  const std::array<std::string_view, 2> laws{material::elastic::name, material::j2_name};
+  const std::array<std::string_view, 2> hardenings{linear::name, power::name};
+  // The fields allowed depend on the law and hardening named, so look at those first.
+  const auto peek = [&](const char* key) {
+    return value.is_object() && value.contains(key) && value[key].is_string() ? value[key].get<std::string>() : "";
+  };
+  const std::string law = peek("law"), hardening = peek("hardening");
+  // An unknown law may still be J2 misspelt: accept its fields rather than report each.
+  const bool j2 = law != material::elastic::name;
+  const bool unknown_hardening = hardening != linear::name && hardening != power::name && !hardening.empty();
+  const bool is_linear = j2 && (hardening.empty() || hardening == linear::name || unknown_hardening);
+  const bool is_power = j2 && (hardening == power::name || unknown_hardening);
+  std::vector<std::string_view> known{"law", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3"};
+  if (j2) known.push_back("hardening");
+  if (is_linear) known.insert(known.end(), {"yield_stress_Pa", "hardening_modulus_Pa"});
+  if (is_power) known.insert(known.end(), {"flow_coefficient_Pa", "flow_offset", "flow_exponent"});
+  object_reader r(d, value, at, known);
+  material_description m;
+  if (!r.valid()) return m;
+  m.law = r.choice("law", laws, "material law").value_or("");
+  if (const auto E = r.number("youngs_modulus_Pa", "117e9")) {
+    m.youngs_modulus = *E;
+    check_positive(d, r.at("youngs_modulus_Pa"), *E, "117e9 (copper)");
+  }
+  if (const auto nu = r.number("poisson_ratio", "0.35")) {
+    m.poisson_ratio = *nu;
+    if (!(*nu > -1.0 && *nu < 0.5))
+      d.error(r.at("poisson_ratio"), fmt::format("{:g} is outside the open range (-1, 0.5); give e.g. 0.35 (0.5, "
+                                                 "incompressible, needs a mixed formulation)", *nu));
+  }
+  if (const auto rho = r.number("density_kg_m3", "8930")) {
+    m.density = *rho;
+    check_positive(d, r.at("density_kg_m3"), *rho, "8930 (copper)");
+  }
+  if (m.law != material::j2_name) return m;
+  m.hardening = r.choice("hardening", hardenings, "hardening law", linear::name).value_or("");
+  if (unknown_hardening) return m;
+  if (is_linear) {
+    if (const auto y = r.number("yield_stress_Pa", "400e6")) {
+      m.yield_stress = *y;
+      check_positive(d, r.at("yield_stress_Pa"), *y, "400e6");
+    }
+    if (const auto h = r.number("hardening_modulus_Pa", "100e6")) {
+      m.hardening_modulus = *h;
+      check_non_negative(d, r.at("hardening_modulus_Pa"), *h, "100e6 (softening is not supported)");
+    }
+  } else {
+    if (const auto k = r.number("flow_coefficient_Pa", "576.79e6")) {
+      m.flow_coefficient = *k;
+      check_positive(d, r.at("flow_coefficient_Pa"), *k, "576.79e6");
+    }
+    if (const auto e0 = r.number("flow_offset", "0.01658")) {
+      m.flow_offset = *e0;
+      check_positive(d, r.at("flow_offset"), *e0, "0.01658 (with 0 the initial yield stress is 0)");
+    }
+    if (const auto n = r.number("flow_exponent", "0.3593")) {
+      m.flow_exponent = *n;
+      check_non_negative(d, r.at("flow_exponent"), *n, "0.3593");
+    }
+  }
+  return m;
+}
+
+inline std::optional<constraint_description> read_constraint(diagnostics& d, const json& value, const std::string& at) {
+  object_reader r(d, value, at, {"edge", "velocity_m_s"});
+  const auto edge = r.text("edge", "left");
+  const json* v = r.required("velocity_m_s", "[0, null]");
+  if (!edge || !v) return std::nullopt;
+  constraint_description c{*edge, {}, at};
+  const std::string vat = r.at("velocity_m_s");
+  if (!v->is_array() || v->size() != 2) {
+    d.error(vat, fmt::format("expected [vx, vy] with null for a free component, got {}; give e.g. [0, null]",
+                             describe(*v)));
+    return std::nullopt;
+  }
+  for (int k = 0; k < 2; ++k)
+    if (!(*v)[k].is_null()) {
+      const auto x = to_number(d, (*v)[k], child_pointer(vat, k), "0 (held) or null (free)");
+      if (!x) return std::nullopt;
+      c.velocity[k] = *x;
+    }
+  if (!c.velocity[0] && !c.velocity[1]) {
+    d.error(vat, "both components are null, so this constrains nothing; give a velocity for one of them or "
+                 "remove the constraint");
+    return std::nullopt;
+  }
+  return c;
+}
+
+}  // namespace detail
+
+inline body_description read_body(diagnostics& d, const json& value, const std::string& at,
+                                   const std::filesystem::path& folder) {
+  object_reader r(d, value, at, {"name", "shape", "material", "initial_velocity_m_s", "body_force_m_s2",
+                                 "constraints", "slaves"});
+  body_description b;
+  b.at = at;
+  if (!r.valid()) return b;
+  b.name = r.text("name", "bar").value_or("");
+  if (const json* s = r.required("shape", "{\"rectangle\": {...}}"))
+    if (auto shape = detail::read_shape(d, *s, r.at("shape"), folder)) b.shape = std::move(*shape);
+  if (const json* m = r.required("material", "{\"law\": \"j2\", ...}")) b.material = detail::read_material(d, *m, r.at("material"));
+  b.initial_velocity = r.point_or("initial_velocity_m_s", vec2::Zero());
+  b.body_force = r.point_or("body_force_m_s2", vec2::Zero());
+  if (const json* cs = r.find("constraints")) {
+    if (!cs->is_array())
+      d.error(r.at("constraints"), fmt::format("expected a list of constraints, got {}; give e.g. "
+                                               "[{{\"edge\": \"left\", \"velocity_m_s\": [0, null]}}]", describe(*cs)));
+    else
+      for (std::size_t i = 0; i < cs->size(); ++i)
+        if (auto c = detail::read_constraint(d, (*cs)[i], child_pointer(r.at("constraints"), i))) b.constraints.push_back(*c);
+  }
+  const std::array<std::string_view, 2> slaves{"boundary", "all"};
+  b.all_slaves = r.choice("slaves", slaves, "slave choice", "boundary").value_or("boundary") == "all";
+  return b;
+}
+
+}  // namespace rkpm::runner::case_file
