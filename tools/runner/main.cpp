@@ -11,6 +11,7 @@
 #include <rkpm/core/error.hpp>
 
 #include "case_list.hpp"
+#include "interrupt.hpp"
 #include "paper.hpp"
 #include "request.hpp"
 
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
 #ifdef _OPENMP
     if (r.threads > 0) omp_set_num_threads(r.threads);
 #endif
+    stop_between_steps_on_interrupt();
     const run_outcome out = run_named_case(r);
     const auto& s = out.summary;
     fmt::print("{} ({}-{}-{}-{}): {} steps in {:.2f} s (set-up {:.2f} s), energy balance error {:.2e}\n",

@@ -19,6 +19,7 @@
 #include <rkpm/solver/checkpoint.hpp>
 
 #include "figures.hpp"
+#include "interrupt.hpp"
 #include "json.hpp"
 #include "run_record.hpp"
 
@@ -85,10 +86,14 @@ class run_observer {
       while (record_.next_checkpoint <= t) record_.next_checkpoint += record_.checkpoint_interval;
       write_checkpoint_now(s);
     }
+    if (const int signal_number = pending_interrupt().load(); signal_number != 0 && !last)
+      fail("interrupted by signal {} at t = {:.6g} s, step {}", signal_number, t, s.steps());
   }
 
-  // Writes checkpoint_<step>.rkpmcp for the solver's current state; returns its path.
+  // Writes checkpoint_<step>.rkpmcp for the solver's current state (once per step); returns its path.
   std::filesystem::path write_checkpoint_now(const Solver& s) {
+    if (!last_checkpoint_.empty() && last_checkpoint_.filename() == io::checkpoint_file_name(s.steps()))
+      return last_checkpoint_;
     record_.wall_s = wall_s();
     json description = identity_;
     description["record"] = to_json(record_);

@@ -8,8 +8,8 @@
 //   checkpoint_NNNNNNNNNN.rkpmcp  with --checkpoint-interval: after the first step reaching each
 //                 multiple of the interval, and at the end (run_observer.hpp, run_record.hpp)
 // A run that fails (NaN, inverted body) keeps what it wrote and records the error in
-// summary.json; one stopped by the step limit, between steps, also writes a checkpoint to
-// continue from with a higher --max-steps. The loop itself does no I/O between output times.
+// summary.json; one stopped between steps (by the step limit, or by Ctrl-C or SIGTERM, see
+// interrupt.hpp) also writes a checkpoint to continue from. The loop itself does no I/O between output times.
 
 #include <chrono>
 #include <cmath>
@@ -137,8 +137,8 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
   } catch (const std::exception& e) {
     error = e.what();
-    // Stopped between steps (the step limit): the state is whole and can be continued.
-    if (observe.record().checkpoint_interval > 0.0 && s.between_steps()) {
+    // Stopped between steps (the step limit, Ctrl-C): the state is whole and can be continued.
+    if (s.between_steps() && (observe.record().checkpoint_interval > 0.0 || pending_interrupt().load() != 0)) {
       try {
         observe.write_checkpoint_now(s);
       } catch (const std::exception& e2) {

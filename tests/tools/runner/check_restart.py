@@ -6,7 +6,8 @@
                                                snapshot bit for bit: Taylor bar (axisymmetric, frictionless
                                                wall) and block forging (plane strain, moving tools, friction)
     check_restart.py kill RKPM_RUN WORK_DIR   a run killed with SIGKILL after a checkpoint continues from its
-                                               folder (--restart FOLDER) to the uninterrupted run's outputs
+                                               folder (--restart FOLDER) to the uninterrupted run's outputs;
+                                               one stopped by Ctrl-C (SIGINT) checkpoints its last step
     check_restart.py refused RKPM_RUN WORK_DIR restarts that cannot continue are refused in one line
 
 The reference is always the same program's uninterrupted run of the same request: a restart must
@@ -116,6 +117,25 @@ def kill(rkpm_run, work):
     same_run(reference, killed, case, "killed and restarted in place")
     check(checkpoints(killed) == checkpoints(reference), "the restarted folder's checkpoints are not the reference's")
     print(f"ok  killed after {ck[-1] if ck else 'none'}, continued in place to the same results")
+
+    # Ctrl-C stops between two steps with a checkpoint of the last step, and says how to continue.
+    interrupted = os.path.join(work, "interrupted-run")
+    shutil.rmtree(interrupted, ignore_errors=True)
+    p = subprocess.Popen(base + ["--out", interrupted], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    while time.time() < deadline and p.poll() is None and len(
+            checkpoints(interrupted) if os.path.isdir(interrupted) else []) < 1:
+        time.sleep(0.005)
+    p.send_signal(signal.SIGINT)
+    err = p.communicate()[1]
+    s = summary(interrupted)
+    check(p.returncode == 1 and "interrupted by signal 2" in err and "--restart" in err,
+          f"Ctrl-C: exit {p.returncode}, {err!r}")
+    check(s["status"] == "failed" and f"checkpoint_{s['steps']:010d}.rkpmcp" in checkpoints(interrupted),
+          f"Ctrl-C: no checkpoint of the last step {s['steps']}: {checkpoints(interrupted)}")
+    r = run([rkpm_run, case, "--restart", interrupted, "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"the restart of the interrupted run failed: {r.stderr}")
+    same_run(reference, interrupted, case, "interrupted and restarted in place")
+    print(f"ok  Ctrl-C at step {s['steps']}, continued in place to the same results")
 
 
 def refused(rkpm_run, work):
