@@ -36,11 +36,12 @@ inline void check_shape(diagnostics& d, const body_description& b, bool axisymme
   } else if (const auto* p = std::get_if<polygon_shape>(&b.shape)) {
     const std::string vat = child_pointer(child_pointer(at, "polygon"), "vertices_m");
     const double area = signed_area(p->vertices), size = extent(p->vertices);
-    if (!(std::abs(area) > 1e-12 * size * size))
+    const auto crossing = crossing_edges(p->vertices);
+    if (!(std::abs(area) > 1e-12 * size * size) && (!crossing || on_one_line(p->vertices)))
       d.error(vat, "the polygon has no area (its vertices are on one line); give the corners of the body");
-    else if (const auto e = crossing_edges(p->vertices))
+    else if (crossing)
       d.error(vat, fmt::format("the polygon crosses itself: edge_{} meets edge_{}; give the outline in order, "
-                               "without crossings", e->first, e->second));
+                               "without crossings", crossing->first, crossing->second));
     else if (area < 0.0)
       d.error(vat, "the polygon is clockwise; give its vertices counter-clockwise (reverse the list)");
   }
@@ -90,11 +91,12 @@ inline void check_tool_outside(diagnostics& d, const tool_description& t, const 
     }
 }
 
-// Reports `name` unless it is one of `names` (`what`: "tool", "body", ...).
+// Reports `name` unless it is one of `names` (`what`: "tool" or "body").
 inline void check_name(diagnostics& d, const std::string& at, const std::string& name,
                        const std::vector<std::string>& names, std::string_view what) {
   if (std::find(names.begin(), names.end(), name) == names.end())
-    d.error(at, fmt::format("no {} '{}'; {}", what, name, suggest(name, names, fmt::format("the {}s are", what))));
+    d.error(at, fmt::format("no {} '{}'; {}", what, name,
+                            suggest(name, names, what == "body" ? "the bodies are" : "the tools are")));
 }
 
 inline void check_histories(diagnostics& d, const case_description& c, const std::vector<std::string>& bodies,

@@ -38,10 +38,10 @@ inline json parse_case_text(const std::string& text, diagnostics& d) {
     std::set<std::string> keys;
   };
   std::vector<level> stack;
+  // The pointer of the field being read: the containers' keys and indices down to the top one.
   const auto pointer = [&] {
     std::string p;
-    for (std::size_t i = 0; i + 1 < stack.size(); ++i)
-      p = stack[i].array ? child_pointer(p, stack[i].index) : child_pointer(p, stack[i].key);
+    for (const level& l : stack) p = l.array ? child_pointer(p, l.index) : child_pointer(p, l.key);
     return p;
   };
   const auto next_element = [&] {
@@ -54,11 +54,8 @@ inline json parse_case_text(const std::string& text, diagnostics& d) {
     } else if (event == e::key) {
       level& top = stack.back();
       top.key = parsed.get<std::string>();
-      stack.push_back({false, {}, 0, {}});  // so that pointer() includes this key
-      const std::string at = pointer();
-      stack.pop_back();
       if (!top.keys.insert(top.key).second)
-        d.error(at, fmt::format("the field '{}' is given twice in this object; keep one", top.key));
+        d.error(pointer(), fmt::format("the field '{}' is given twice in this object; keep one", top.key));
     } else if (event == e::object_end || event == e::array_end) {
       stack.pop_back();
       next_element();

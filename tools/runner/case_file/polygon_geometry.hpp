@@ -33,6 +33,16 @@ inline double extent(const std::vector<vec2>& v) {
   return (hi - lo).maxCoeff();
 }
 
+// Are all the points on the line through the first and the farthest from it?
+inline bool on_one_line(const std::vector<vec2>& v) {
+  std::size_t far = 0;
+  for (std::size_t k = 1; k < v.size(); ++k)
+    if ((v[k] - v[0]).squaredNorm() > (v[far] - v[0]).squaredNorm()) far = k;
+  const vec2 e = v[far] - v[0];
+  const double tol = 1e-12 * extent(v) * e.norm();
+  return std::all_of(v.begin(), v.end(), [&](const vec2& p) { return std::abs(cross(e, p - v[0])) <= tol; });
+}
+
 inline double distance_to_segment(const vec2& p, const vec2& a, const vec2& b) {
   const vec2 e = b - a;
   const double L2 = e.squaredNorm();

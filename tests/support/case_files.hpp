@@ -1,0 +1,53 @@
+#pragma once
+// Helpers for the case-file tests (tests/unit/case_file/): the repository's paper case files,
+// a scratch folder per test program, and a case document written there and loaded (or the
+// error its loading throws).
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "support/error_message.hpp"
+#include "tools/runner/case_file/load_case_file.hpp"
+
+namespace rkpm::test {
+
+using case_json = runner::json;
+
+// cases/NAME.json of this repository (found from this header's own path).
+inline std::filesystem::path paper_case_file(const std::string& name) {
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "cases" / (name + ".json");
+}
+
+inline case_json paper_case_document(const std::string& name) {
+  std::ifstream in(paper_case_file(name));
+  return case_json::parse(in, nullptr, true, true);
+}
+
+inline std::filesystem::path case_scratch() {
+  const auto dir = std::filesystem::temp_directory_path() / fmt::format("rkpm_case_file_{}", ::getpid());
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// Writes `text` to the scratch folder as `file_name` and returns its path.
+inline std::filesystem::path write_case_text(const std::string& text, const std::string& file_name = "case.json") {
+  const auto path = case_scratch() / file_name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+inline runner::case_file::case_description load_document(const case_json& doc,
+                                                         const runner::case_file::override_list& overrides = {}) {
+  return runner::case_file::load_case_file(write_case_text(doc.dump(2)), overrides);
+}
+
+// The message of the error loading `doc` throws ("" if it loads).
+inline std::string load_error(const case_json& doc, const runner::case_file::override_list& overrides = {}) {
+  return error_message([&] { load_document(doc, overrides); });
+}
+
+}  // namespace rkpm::test
