@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -25,8 +24,6 @@ namespace rkpm::runner::case_file {
 
 namespace detail {
 
-inline constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
-
 // Index of the tool called `name` among the solver's tools (the file's order).
 template <class Solver>
 std::size_t tool_index(const Solver& s, const std::string& name) {
@@ -36,7 +33,8 @@ std::size_t tool_index(const Solver& s, const std::string& name) {
   fail("case file: the solver has no tool '{}' (was it built from this case file?)", name);
 }
 
-// Largest, smallest or spread of the current x or y of the particles selected; NaN if none is.
+// Largest, smallest or spread of the current x or y of the particles selected; 0 if none is
+// (as the typed wheel's rim height before material reaches the recess).
 template <class Solver>
 double extent_of(const Solver& s, const body_description& b, const extent_history& h, const std::vector<vec2>& x) {
   const auto& X = s.model().particles.position;
@@ -58,7 +56,7 @@ double extent_of(const Solver& s, const body_description& b, const extent_histor
     hi = any ? std::max(hi, p[k]) : p[k];
     any = true;
   }
-  if (!any) return no_value;
+  if (!any) return 0.0;
   if (h.of.starts_with("max")) return hi;
   if (h.of.starts_with("min")) return lo;
   return hi - lo;

@@ -2,7 +2,7 @@
 // Reading "histories": the named measures written to history.csv over time and to
 // summary.json at the end. Each entry is {"name": ..., KIND: {...}} with exactly one KIND:
 //   extent              max/min/width of the particles' current x or y, optionally only those
-//                       that started on an edge or that lie beyond bounds now
+//                       that started on an edge or that lie beyond bounds now (0 if none)
 //   tool_gap            lowest vertex of one tool minus highest of another, along x or y
 //   tool_force          a tool's reaction averaged over the last output interval
 //   tool_displacement   a tool's translation since t = 0
