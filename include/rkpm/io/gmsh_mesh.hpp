@@ -1,6 +1,6 @@
 #pragma once
-// gmsh_mesh: bodies meshed by Gmsh (https://gmsh.info; its C++ API, 4.8 or later) as particles and
-// background cells (docs/method.md section 3.1: the particles are the cell nodes).
+// gmsh_mesh: bodies meshed by Gmsh (https://gmsh.info; its C++ API, tested with 4.8.4) as
+// particles and background cells (docs/method.md section 3.1: the particles are the cell nodes).
 //   read_gmsh_body  a .msh file (MSH 4.1 or 2.2, ASCII or binary)
 //   mesh_polygon    a polygon meshed into quadrilaterals of about `spacing`
 // Only this header needs libgmsh, so the library stays header-only: programs that include it
@@ -37,8 +37,8 @@
 namespace rkpm::io {
 
 struct gmsh_body {
-  particle_set<2> particles;  // the mesh nodes, particles_from_mesh(mesh, support_factor)
-  background_mesh mesh;       // #cells quadrilaterals, counter-clockwise
+  particle_set<2> particles;  // #nodes particles, particles_from_mesh(mesh, support_factor): node i is particle i
+  background_mesh mesh;       // #nodes positions, #cells quadrilaterals counter-clockwise
   std::map<std::string, std::vector<index_t>> node_groups;                 // curve name -> sorted node indices
   std::map<std::string, std::vector<std::array<index_t, 2>>> edge_groups;  // curve name -> #segments node pairs
 };
