@@ -9,10 +9,14 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/mesh_particles.hpp>
 #include <rkpm/discretization/neighbor_search.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
 #include <rkpm/quadrature/cell_rules.hpp>
+#include <rkpm/quadrature/shaped_rules.hpp>
+#include <rkpm/quadrature/vci.hpp>
+#include <rkpm/discretization/integration_constraint.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
