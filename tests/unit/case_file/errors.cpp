@@ -106,7 +106,7 @@ TEST_CASE("unknown policy, law and choice names list the choices") {
   doc["bodies"][0]["material"]["law"] = "elastoplastic";
   doc["tools"][0]["body_side"] = "above";
   const std::string e = load_error(doc);
-  CHECK(reports(e, "/method/quadrature", "unknown quadrature 'q3'; did you mean 'q2'? (the choices are: q2, q4, q9)"));
+  CHECK(reports(e, "/method/quadrature", "unknown quadrature 'q3'; did you mean 'q2'? (the choices are: q2, q4, q9"));
   CHECK(reports(e, "/method/kernel", "the choices are: cubic, quartic"));
   CHECK(reports(e, "/geometry", "did you mean 'axisymmetric'?"));
   CHECK(reports(e, "/bodies/0/material/law", "the choices are: elastic, j2"));
@@ -147,7 +147,7 @@ TEST_CASE("bodies without area: degenerate rectangle, flat, crossed or clockwise
   CHECK(reports(load_error(polygon_taylor({{0, 0}, {0, 1e-2}, {1e-2, 0}})), at,
                 "the polygon is clockwise; give its vertices counter-clockwise"));
   CHECK(load_error(polygon_taylor({{0, 0}, {1e-2, 0}, {0, 1e-2}})) == "");
-  CHECK(reports(load_error(polygon_taylor({{-1e-3, 0}, {1e-2, 0}, {0, 1e-2}})), "/bodies/0/shape", "r = -0.001 < 0"));
+  CHECK(reports(load_error(polygon_taylor({{-1e-3, 0}, {1e-2, 0}, {0, 1e-2}})), "/bodies/0/shape", "the body reaches r = -0.001 < 0"));
 }
 
 TEST_CASE("a tool that starts inside the body; touching is allowed") {

@@ -36,6 +36,8 @@ inline std::vector<std::string> edge_names(const body_description& b) {
   std::vector<std::string> names;
   if (const auto* p = std::get_if<polygon_shape>(&b.shape))
     for (std::size_t k = 0; k < p->vertices.size(); ++k) names.push_back(fmt::format("edge_{}", k));
+  if (const auto* m = std::get_if<mesh_shape>(&b.shape))
+    for (const auto& [name, nodes] : m->body.node_groups) names.push_back(name);
   return names;
 }
 
@@ -48,13 +50,20 @@ inline std::optional<std::pair<vec2, vec2>> edge_segment(const body_description&
   return std::nullopt;
 }
 
-// Indices of the particles (reference positions X) on a rectangle or polygon edge, ascending.
-inline std::vector<index_t> particles_on_segment(const std::vector<vec2>& X, const std::pair<vec2, vec2>& edge,
-                                                 double body_size) {
+// Indices of the particles on a named edge, ascending: for a mesh its group's nodes (node i is
+// particle i), otherwise those whose reference position X lies on the edge's segment.
+inline std::vector<index_t> particles_on_edge(const body_description& b, const std::vector<vec2>& X,
+                                              const std::string& edge) {
+  if (const auto* m = std::get_if<mesh_shape>(&b.shape)) {
+    const auto it = m->body.node_groups.find(edge);
+    return it == m->body.node_groups.end() ? std::vector<index_t>{} : it->second;
+  }
+  const auto segment = edge_segment(b, edge);
+  if (!segment) return {};
+  const double tol = 1e-9 * extent(body_outline(b));
   std::vector<index_t> out;
-  const double tol = 1e-9 * body_size;
   for (std::size_t I = 0; I < X.size(); ++I)
-    if (distance_to_segment(X[I], edge.first, edge.second) <= tol) out.push_back(static_cast<index_t>(I));
+    if (distance_to_segment(X[I], segment->first, segment->second) <= tol) out.push_back(static_cast<index_t>(I));
   return out;
 }
 

@@ -2,7 +2,7 @@
 // build_problem<Contact>(case, resolution): the rkpm::problem a case file describes, for any
 // contact policy. Resolution K refines as the typed cases do (cases/parameters.hpp): a
 // rectangle of n particles per direction gets (n - 1) K + 1, a polygon's spacing is divided by
-// K. A rectangle builds exactly the particles and cells of make_grid_particles and
+// K (gmsh_bodies.hpp). A rectangle builds exactly the particles and cells of make_grid_particles and
 // make_grid_mesh, in the same order, so a paper case file reproduces its typed case bit for
 // bit.
 
@@ -24,6 +24,7 @@
 #include "cases/contact_setup.hpp"
 #include "cases/parameters.hpp"
 #include "diagnostics.hpp"
+#include "gmsh_bodies.hpp"
 #include "make_tools.hpp"
 
 namespace rkpm::runner::case_file {
@@ -45,14 +46,6 @@ inline material_type make_material(const material_description& m) {
   return material_type(constants, hardening_law::of(material::hardening::linear{m.yield_stress, m.hardening_modulus}));
 }
 
-// The particles of the body on a named edge (reference positions X), ascending.
-inline std::vector<index_t> particles_on_edge(const body_description& b, const std::vector<vec2>& X,
-                                              const std::string& edge) {
-  const auto segment = edge_segment(b, edge);
-  if (!segment) return {};
-  return particles_on_segment(X, *segment, extent(body_outline(b)));
-}
-
 namespace detail {
 
 inline std::pair<particle_set<2>, background_mesh> discretize(const case_description& c, const body_description& b,
@@ -63,10 +56,9 @@ inline std::pair<particle_set<2>, background_mesh> discretize(const case_descrip
     return {make_grid_particles<2>(r->lower_left, r->upper_right, n, c.support_factor),
             make_grid_mesh(r->lower_left, r->upper_right, n)};
   }
-  fail_at(c, child_pointer(b.at, "shape"),
-          fmt::format("{} bodies are not available in this build (they need the Gmsh reader, "
-                      "rkpm/io/gmsh_mesh.hpp); describe the body as a rectangle",
-                      std::holds_alternative<polygon_shape>(b.shape) ? "polygon" : "mesh"));
+  return gmsh_discretize(c, b, resolution, [&](const std::string& at, const std::string& message) {
+    fail_at(c, at, message);
+  });
 }
 
 // Velocity constraints of the body's edges; a particle shared by two edges (a corner) is

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
+#include <rkpm/io/gmsh_mesh.hpp>
 
 #include "../json.hpp"
 
@@ -34,6 +35,7 @@ struct polygon_shape {  // counter-clockwise, simple; meshed with a target spaci
 };
 struct mesh_shape {  // a Gmsh file, used as given
   std::filesystem::path file;  // resolved against the case file's folder
+  io::gmsh_body body;          // read by load_case_file (its node groups name the edges)
 };
 using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
 

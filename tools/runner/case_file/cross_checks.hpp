@@ -45,10 +45,11 @@ inline void check_shape(diagnostics& d, const body_description& b, bool axisymme
     else if (area < 0.0)
       d.error(vat, "the polygon is clockwise; give its vertices counter-clockwise (reverse the list)");
   }
+  const auto* mesh = std::get_if<mesh_shape>(&b.shape);
   if (axisymmetric)
-    for (const vec2& v : body_outline(b))
+    for (const vec2& v : mesh ? mesh->body.mesh.node : body_outline(b))
       if (v.x() < 0.0) {
-        d.error(at, fmt::format("a corner lies at r = {:g} < 0; an axisymmetric body is the half section r >= 0 "
+        d.error(at, fmt::format("the body reaches r = {:g} < 0; an axisymmetric body is the half section r >= 0 "
                                 "(the axis is x = 0)", v.x()));
         break;
       }
@@ -72,18 +73,23 @@ inline void check_constraints(diagnostics& d, const body_description& b, bool ax
 
 inline void check_tool_outside(diagnostics& d, const tool_description& t, const body_description& b) {
   const auto outline = body_outline(b);
-  if (outline.size() < 3 || t.polyline.size() < 2) return;
-  const double tol = 1e-9 * extent(outline);
+  const auto* mesh = std::get_if<mesh_shape>(&b.shape);
+  const segment_list boundary = mesh ? mesh_boundary(mesh->body.mesh) : polygon_edges(outline);
+  if (boundary.empty() || t.polyline.size() < 2) return;
+  const double tol = 1e-9 * (mesh ? extent(mesh->body.mesh.node) : extent(outline));
+  const auto inside = [&](const vec2& p) {
+    return mesh ? strictly_inside_mesh(p, mesh->body.mesh, boundary, tol) : strictly_inside(p, outline, tol);
+  };
   const std::string at = child_pointer(t.at, "polyline_m");
   for (std::size_t k = 0; k < t.polyline.size(); ++k)
-    if (strictly_inside(t.polyline[k], outline, tol)) {
+    if (inside(t.polyline[k])) {
       d.error(child_pointer(at, k), fmt::format("tool '{}' starts inside body '{}': vertex {} ({:g}, {:g}) is in it; "
                                                 "move the tool so that it at most touches the body",
                                                 t.name, b.name, k, t.polyline[k].x(), t.polyline[k].y()));
       return;
     }
   for (std::size_t k = 0; k + 1 < t.polyline.size(); ++k)
-    if (const auto p = point_inside_along(t.polyline[k], t.polyline[k + 1], outline, tol)) {
+    if (const auto p = point_inside_along(t.polyline[k], t.polyline[k + 1], boundary, tol, inside)) {
       d.error(at, fmt::format("tool '{}' starts inside body '{}': its segment {} (vertices {} to {}) crosses the "
                               "body at ({:g}, {:g}); move the tool so that it at most touches the body",
                               t.name, b.name, k, k, k + 1, p->x(), p->y()));

@@ -6,7 +6,7 @@
 //
 // Phases, each reported in full before the next runs (so that a later check never trips
 // over an earlier mistake): read and parse; overrides; every field on its own (read_case);
-// checks across fields (cross_check).
+// mesh files (gmsh_bodies.hpp); checks across fields (cross_check).
 
 #include <filesystem>
 #include <fstream>
@@ -21,6 +21,7 @@
 #include "case_description.hpp"
 #include "cross_checks.hpp"
 #include "diagnostics.hpp"
+#include "gmsh_bodies.hpp"
 #include "overrides.hpp"
 #include "read_case.hpp"
 
@@ -92,6 +93,8 @@ inline case_description load_case_file(const std::filesystem::path& path, const 
   apply_overrides(document, overrides, d);
   d.throw_if_any();
   case_description c = read_case(d, document, path);
+  d.throw_if_any();
+  read_meshes(d, c);
   d.throw_if_any();
   cross_check(d, c);
   d.throw_if_any();

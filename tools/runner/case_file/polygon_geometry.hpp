@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -93,31 +94,73 @@ inline bool strictly_inside(const vec2& p, const std::vector<vec2>& v, double to
   return inside;
 }
 
-// A point of the segment ab strictly inside the polygon, if there is one. Between two
-// consecutive places where ab meets the boundary, ab is all inside or all outside, so testing
-// the middle of each such piece decides.
-inline std::optional<vec2> point_inside_along(const vec2& a, const vec2& b, const std::vector<vec2>& v, double tol) {
+using segment_list = std::vector<std::pair<vec2, vec2>>;
+
+// The edges of a closed polygon.
+inline segment_list polygon_edges(const std::vector<vec2>& v) {
+  segment_list out;
+  for (std::size_t k = 0; k < v.size(); ++k) out.emplace_back(v[k], v[(k + 1) % v.size()]);
+  return out;
+}
+
+// A point of the segment ab strictly inside a region, if there is one: `boundary` is the
+// region's boundary, inside(p) says whether a point off it is inside. Between two consecutive
+// places where ab meets the boundary, ab is all inside or all outside, so testing the middle of
+// each such piece decides.
+template <class Inside>
+std::optional<vec2> point_inside_along(const vec2& a, const vec2& b, const segment_list& boundary, double tol,
+                                       Inside&& inside) {
   std::vector<double> s{0.0, 1.0};
   const vec2 e = b - a;
   const double L2 = e.squaredNorm();
-  const std::size_t n = v.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const vec2 &c = v[k], &d = v[(k + 1) % n];
+  for (const auto& [c, d] : boundary) {
     const double den = cross(e, d - c);
     if (den != 0.0) {
       const double t = cross(c - a, d - c) / den;  // along ab
       const double u = cross(c - a, e) / den;      // along cd
       if (t > 0.0 && t < 1.0 && u >= -1e-12 && u <= 1 + 1e-12) s.push_back(t);
     }
-    if (L2 > 0.0)  // polygon vertices on ab (also the ends of collinear overlaps)
-      if (distance_to_segment(c, a, b) <= tol) s.push_back(std::clamp((c - a).dot(e) / L2, 0.0, 1.0));
+    if (L2 > 0.0)  // boundary vertices on ab (also the ends of collinear overlaps)
+      for (const vec2& p : {c, d})
+        if (distance_to_segment(p, a, b) <= tol) s.push_back(std::clamp((p - a).dot(e) / L2, 0.0, 1.0));
   }
   std::sort(s.begin(), s.end());
   for (std::size_t k = 0; k + 1 < s.size(); ++k) {
     const vec2 mid = a + 0.5 * (s[k] + s[k + 1]) * e;
-    if (s[k + 1] > s[k] && strictly_inside(mid, v, tol)) return mid;
+    if (s[k + 1] > s[k] && inside(mid)) return mid;
   }
   return std::nullopt;
+}
+
+// The boundary of a region covered by counter-clockwise cells: the cell edges that belong to
+// one cell only.
+template <class Mesh>
+segment_list mesh_boundary(const Mesh& mesh) {
+  std::map<std::pair<std::ptrdiff_t, std::ptrdiff_t>, int> count;
+  for (const auto& c : mesh.cell)
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      auto key = std::minmax(c[k], c[(k + 1) % c.size()]);
+      ++count[{key.first, key.second}];
+    }
+  segment_list out;
+  for (const auto& [edge, n] : count)
+    if (n == 1) out.emplace_back(mesh.node[edge.first], mesh.node[edge.second]);
+  return out;
+}
+
+// Inside (or on) one of the cells and farther than tol from the region's boundary.
+template <class Mesh>
+bool strictly_inside_mesh(const vec2& p, const Mesh& mesh, const segment_list& boundary, double tol) {
+  for (const auto& [c, d] : boundary)
+    if (distance_to_segment(p, c, d) <= tol) return false;
+  for (const auto& cell : mesh.cell) {
+    std::vector<vec2> corners;
+    for (auto n : cell) corners.push_back(mesh.node[n]);
+    if (strictly_inside(p, corners, 0.0)) return true;
+    for (std::size_t k = 0; k < corners.size(); ++k)
+      if (distance_to_segment(p, corners[k], corners[(k + 1) % corners.size()]) <= tol) return true;
+  }
+  return false;
 }
 
 }  // namespace rkpm::runner::case_file
