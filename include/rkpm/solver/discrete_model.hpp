@@ -8,6 +8,10 @@
 //   particles_of_points  transpose of at_points (scatter without atomics)
 //   at_particles         N_J(X_I): physical values at the particles
 //   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, docs/method.md (38))
+//   test_gradient        corrected test-function gradients g_I(X_q), parallel to at_points.grad,
+//                        for a rule with variationally consistent integration (vci<Rule>,
+//                        docs/method.md section 3.5); empty: the test gradients are the trial
+//                        gradients. The deformation gradient always uses at_points.grad.
 
 #include <cmath>
 #include <vector>
@@ -15,6 +19,7 @@
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/quadrature.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/integration_constraint.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
@@ -28,9 +33,12 @@ struct discrete_model {
   shape_table_transpose particles_of_points;
   shape_table<2> at_particles;
   std::vector<double> lumped_volume;
+  std::vector<vec2> test_gradient;
 
   index_t particle_count() const { return particles.size(); }
   index_t point_count() const { return points.size(); }
+  // The gradients the internal force is scattered with (#entries of at_points).
+  const std::vector<vec2>& test_gradients() const { return test_gradient.empty() ? at_points.grad : test_gradient; }
 };
 
 // The particles and the cells must describe the same body.
@@ -85,7 +93,13 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
                                     double max_condition = default_max_moment_condition) {
   check_body(particles, mesh);
   quadrature_points points = make_quadrature_points<Q, G>(mesh);
-  return build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
+  discrete_model m =
+      build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
+  if constexpr (CorrectedRule<Q>)
+    m.test_gradient = vci_test_gradients(
+        m.points, m.at_points, boundary_integrals<K, C, G>(m.particles, m.mesh, Q::edge_points, max_condition),
+        G::is_axisymmetric);
+  return m;
 }
 
 // Lumped masses m_I = rho0 V_I (docs/method.md section 5).

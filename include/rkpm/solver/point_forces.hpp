@@ -5,7 +5,10 @@
 // a point rule that turns (H_q, u_q) into the weighted first Piola stress S_q = P_q w_q and
 // the weighted hoop term h_q = P33_q w_q / R_q, and a scatter to the particles through the
 // transposed table,
-//   f_I = sum_q [S_q grad_X N_I(X_q) + e_r h_q N_I(X_q)].
+//   f_I = sum_q [S_q g_I(X_q) + e_r h_q N_I(X_q)],
+// with the test gradients g_I = grad_X N_I, or the corrected ones of variationally consistent
+// integration (discrete_model::test_gradients(), docs/method.md section 3.5), chosen once per
+// call; the gather always uses the trial gradients grad_X N_I.
 // The internal force (solver/point_materials.hpp) and the matrix-free stiffness of the stable
 // time step (solver/stable_time_step.hpp) both go through it. Both loops are parallel over
 // their outputs, so no atomics are needed and the sums do not depend on the thread count.
@@ -43,6 +46,7 @@ inline point_gradient gather(const shape_table<2>& t, index_t q, const std::vect
 template <Geometry G>
 void scatter(const discrete_model& m, const point_stresses& s, std::vector<vec2>& f) {
   const auto& t = m.at_points;
+  const std::vector<vec2>& grad = m.test_gradients();
   const auto& tt = m.particles_of_points;
   const index_t n = m.particle_count();
 #pragma omp parallel for schedule(static)
@@ -50,7 +54,7 @@ void scatter(const discrete_model& m, const point_stresses& s, std::vector<vec2>
     vec2 sum = vec2::Zero();
     for (index_t k = tt.offset[I]; k < tt.offset[I + 1]; ++k) {
       const index_t e = tt.entry[k], q = tt.point[k];
-      sum.noalias() += s.weighted[q] * t.grad[e];
+      sum.noalias() += s.weighted[q] * grad[e];
       if constexpr (G::is_axisymmetric) sum[0] += s.hoop[q] * t.N[e];
     }
     f[I] = sum;
