@@ -35,12 +35,13 @@ case_json block_with(const case_json& shape, const std::string& edge) {
 
 double total(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
 
-std::filesystem::path rectangle_msh() {
-  const auto msh = test::case_scratch() / "rect.msh";
+// The block [x0, x0 + 0.5] x [0, 0.5] as 11 x 11 nodes, written to the scratch folder.
+std::filesystem::path rectangle_msh(double x0, const std::string& name) {
+  const auto msh = test::case_scratch() / name;
   const std::string command = fmt::format(
-      R"("{}" -2 -format msh41 -setnumber x0 -0.25 -setnumber x1 0.25 -setnumber y0 0 -setnumber y1 0.5 )"
+      R"("{}" -2 -format msh41 -setnumber x0 {} -setnumber x1 {} -setnumber y0 0 -setnumber y1 0.5 )"
       R"(-setnumber nx 11 -setnumber ny 11 "{}/rectangle.geo" -o "{}" > "{}.log" 2>&1)",
-      RKPM_TEST_GMSH_EXECUTABLE, RKPM_TEST_GMSH_DATA_DIR, msh.string(), msh.string());
+      RKPM_TEST_GMSH_EXECUTABLE, x0, x0 + 0.5, RKPM_TEST_GMSH_DATA_DIR, msh.string(), msh.string());
   REQUIRE(std::system(command.c_str()) == 0);
   return msh;
 }
@@ -79,7 +80,7 @@ TEST_CASE("a rectangle given as a polygon is the grid of the same spacing") {
 }
 
 TEST_CASE("a mesh file body: used as given, its physical curves are its edges") {
-  const auto msh = rectangle_msh();
+  const auto msh = rectangle_msh(-0.25, "rect.msh");
   case_json doc = block_with({{"mesh", {{"file", msh.filename().string()}}}}, "bottom");
   const auto c = test::load_document(doc);
   const auto p = runner::case_file::build_problem<contact_t>(c, 1);
@@ -101,6 +102,12 @@ TEST_CASE("a mesh file body: used as given, its physical curves are its edges") 
                                         "segment 0"));
   doc["tools"][1]["polyline_m"] = {{0.65, 0.5}, {0.1, 0.5}, {0.1, 0.3}};
   CHECK(contains(test::load_error(doc), "/tools/1/polyline_m/2: tool 'top_tool' starts inside body 'block': vertex 2"));
+  // Axisymmetric, from r = 0: u_r = 0 on the axis is imposed already.
+  doc["tools"][1]["polyline_m"] = {{0.65, 0.5}, {-0.65, 0.5}};
+  doc["geometry"] = "axisymmetric";
+  doc["bodies"][0]["shape"]["mesh"]["file"] = rectangle_msh(0.0, "rect_axis.msh").filename().string();
+  doc["bodies"][0]["constraints"][0]["edge"] = "left";
+  CHECK(contains(test::load_error(doc), "/bodies/0/constraints/0/velocity_m_s: edge 'left' lies on the axis"));
   test::write_case_text("not a mesh", "junk.msh");
   doc["bodies"][0]["shape"]["mesh"]["file"] = "junk.msh";
   CHECK(contains(test::load_error(doc), "case.json: /bodies/0/shape/mesh/file: cannot read"));

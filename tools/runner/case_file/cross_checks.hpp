@@ -5,6 +5,7 @@
 // its stiffness. Run after read_case found no error, so that every field read is sound.
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -55,6 +56,17 @@ inline void check_shape(diagnostics& d, const body_description& b, bool axisymme
       }
 }
 
+// Does the edge lie on x = 0 (a mesh's: every node of its group)?
+inline bool on_axis(const body_description& b, const std::string& edge) {
+  if (const auto* m = std::get_if<mesh_shape>(&b.shape)) {
+    const auto& nodes = m->body.node_groups.at(edge);
+    const double tol = 1e-9 * extent(m->body.mesh.node);
+    return std::all_of(nodes.begin(), nodes.end(), [&](index_t I) { return std::abs(m->body.mesh.node[I].x()) <= tol; });
+  }
+  const auto seg = edge_segment(b, edge);
+  return seg && seg->first.x() == 0.0 && seg->second.x() == 0.0;
+}
+
 inline void check_constraints(diagnostics& d, const body_description& b, bool axisymmetric) {
   const auto names = edge_names(b);
   for (const auto& c : b.constraints) {
@@ -63,8 +75,7 @@ inline void check_constraints(diagnostics& d, const body_description& b, bool ax
       d.error(at, fmt::format("body '{}' has no edge '{}'; {}", b.name, c.edge, suggest(c.edge, names, "its edges are")));
       continue;
     }
-    const auto seg = edge_segment(b, c.edge);
-    if (axisymmetric && c.velocity[0] && seg && seg->first.x() == 0.0 && seg->second.x() == 0.0)
+    if (axisymmetric && c.velocity[0] && on_axis(b, c.edge))
       d.error(child_pointer(c.at, "velocity_m_s"),
               fmt::format("edge '{}' lies on the axis, where u_r = 0 is imposed already in axisymmetric geometry; "
                           "give null for the x component", c.edge));
