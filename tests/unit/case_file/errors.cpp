@@ -3,6 +3,7 @@
 // Each test breaks the paper's Taylor bar file in one way (or a few, to see them all listed).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "support/case_files.hpp"
@@ -26,7 +27,9 @@ bool reports(const std::string& message, const std::string& pointer, const std::
   return false;
 }
 
-std::size_t lines(const std::string& message) { return message.empty() ? 0 : 1 + std::count(message.begin(), message.end(), '\n'); }
+std::size_t lines(const std::string& message) {
+  return message.empty() ? 0 : 1 + std::count(message.begin(), message.end(), '\n');
+}
 
 case_json polygon_taylor(const case_json& vertices) {
   case_json doc = taylor();
@@ -147,7 +150,8 @@ TEST_CASE("bodies without area: degenerate rectangle, flat, crossed or clockwise
   CHECK(reports(load_error(polygon_taylor({{0, 0}, {0, 1e-2}, {1e-2, 0}})), at,
                 "the polygon is clockwise; give its vertices counter-clockwise"));
   CHECK(load_error(polygon_taylor({{0, 0}, {1e-2, 0}, {0, 1e-2}})) == "");
-  CHECK(reports(load_error(polygon_taylor({{-1e-3, 0}, {1e-2, 0}, {0, 1e-2}})), "/bodies/0/shape", "the body reaches r = -0.001 < 0"));
+  CHECK(reports(load_error(polygon_taylor({{-1e-3, 0}, {1e-2, 0}, {0, 1e-2}})), "/bodies/0/shape",
+                "the body reaches r = -0.001 < 0"));
 }
 
 TEST_CASE("a tool that starts inside the body; touching is allowed") {

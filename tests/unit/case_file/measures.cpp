@@ -65,11 +65,14 @@ TEST_CASE("taylor_bar.json runs as the typed Taylor bar, bit for bit") {
   test::run_serially();
   const double end = 5e-6;
   cases::taylor_bar::parameters params;
-  const auto typed = run<typed_config>(cases::taylor_bar::build<contact_t>(params, 1), end,
-                                       [&](const auto& s, const auto& f) { return cases::taylor_bar::measure(s, params, f); });
+  const auto typed = run<typed_config>(cases::taylor_bar::build<contact_t>(params, 1), end, [&](const auto& s, const auto& f) {
+    return cases::taylor_bar::measure(s, params, f);
+  });
   const auto description = runner::case_file::load_case_file(test::paper_case_file("taylor_bar"));
-  const auto file = run<file_config>(runner::case_file::build_problem<contact_t>(description, 1), end,
-                                     [&](const auto& s, const auto& f) { return runner::case_file::measure(s, description, f); });
+  const auto problem = runner::case_file::build_problem<contact_t>(description, 1);
+  const auto file = run<file_config>(problem, end, [&](const auto& s, const auto& f) {
+    return runner::case_file::measure(s, description, f);
+  });
   REQUIRE(typed.first.size() == file.first.size());
   CHECK(typed.first.size() > 10);
   for (std::size_t r = 0; r < typed.first.size(); ++r) check_identical(typed.first[r], file.first[r]);

@@ -43,12 +43,14 @@ inline std::optional<body_shape> read_shape(diagnostics& d, const json& value, c
       const bool pair = n->is_array() && n->size() == 2;
       const auto nx = pair ? to_integer(d, (*n)[0], child_pointer(r.at("particles"), 0), "21") : std::nullopt;
       const auto ny = pair ? to_integer(d, (*n)[1], child_pointer(r.at("particles"), 1), "51") : std::nullopt;
-      if (!pair) d.error(r.at("particles"), fmt::format("expected [particles along x, along y], got {}; give e.g. [21, 51]",
-                                                        describe(*n)));
+      if (!pair)
+        d.error(r.at("particles"),
+                fmt::format("expected [particles along x, along y], got {}; give e.g. [21, 51]", describe(*n)));
       for (int k = 0; k < 2; ++k) {
         const auto c = k == 0 ? nx : ny;
         if (c && *c < 2)
-          d.error(child_pointer(r.at("particles"), k), fmt::format("{} particles: a grid needs at least 2 per direction", *c));
+          d.error(child_pointer(r.at("particles"), k),
+                  fmt::format("{} particles: a grid needs at least 2 per direction", *c));
         if (c) s.particles[k] = *c;
       }
       if (!nx || !ny || *nx < 2 || *ny < 2) return std::nullopt;
@@ -183,7 +185,8 @@ inline body_description read_body(diagnostics& d, const json& value, const std::
   b.name = r.text("name", "bar").value_or("");
   if (const json* s = r.required("shape", "{\"rectangle\": {...}}"))
     if (auto shape = detail::read_shape(d, *s, r.at("shape"), folder)) b.shape = std::move(*shape);
-  if (const json* m = r.required("material", "{\"law\": \"j2\", ...}")) b.material = detail::read_material(d, *m, r.at("material"));
+  if (const json* m = r.required("material", "{\"law\": \"j2\", ...}"))
+    b.material = detail::read_material(d, *m, r.at("material"));
   b.initial_velocity = r.point_or("initial_velocity_m_s", vec2::Zero());
   b.body_force = r.point_or("body_force_m_s2", vec2::Zero());
   if (const json* cs = r.find("constraints")) {
@@ -192,7 +195,8 @@ inline body_description read_body(diagnostics& d, const json& value, const std::
                                                "[{{\"edge\": \"left\", \"velocity_m_s\": [0, null]}}]", describe(*cs)));
     else
       for (std::size_t i = 0; i < cs->size(); ++i)
-        if (auto c = detail::read_constraint(d, (*cs)[i], child_pointer(r.at("constraints"), i))) b.constraints.push_back(*c);
+        if (auto c = detail::read_constraint(d, (*cs)[i], child_pointer(r.at("constraints"), i)))
+          b.constraints.push_back(*c);
   }
   const std::array<std::string_view, 2> slaves{"boundary", "all"};
   b.all_slaves = r.choice("slaves", slaves, "slave choice", "boundary").value_or("boundary") == "all";
