@@ -27,10 +27,18 @@ inline case_json paper_case_document(const std::string& name) {
   return case_json::parse(in, nullptr, true, true);
 }
 
-inline std::filesystem::path case_scratch() {
-  const auto dir = std::filesystem::temp_directory_path() / fmt::format("rkpm_case_file_{}", ::getpid());
-  std::filesystem::create_directories(dir);
-  return dir;
+// A scratch folder for this program, removed at exit.
+inline const std::filesystem::path& case_scratch() {
+  struct folder {
+    std::filesystem::path path = std::filesystem::temp_directory_path() / fmt::format("rkpm_case_file_{}", ::getpid());
+    folder() { std::filesystem::create_directories(path); }
+    ~folder() {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  };
+  static const folder f;
+  return f.path;
 }
 
 // Writes `text` to the scratch folder as `file_name` and returns its path.
