@@ -74,6 +74,10 @@ run_outcome run_case(const run_request& request) {
   std::optional<restart_point> restart;
   if (!r.restart.empty()) {
     restart = find_restart_point(r.restart);
+    if (restart->description.contains("case_file"))
+      fail("--restart {}: the checkpoint is of the case file {}: rkpm_run {} --restart {}", r.restart,
+           restart->description.at("case_file").get<std::string>(),
+           restart->description.at("case_file").get<std::string>(), r.restart);
     adopt_checkpoint_run(r, restart->description, Case::name);
     for (const auto& [name, value] : restart->description.at("parameters").items())
       cases::set_parameter(p, name, value.dump());

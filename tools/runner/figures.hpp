@@ -19,6 +19,8 @@
 
 #include <rkpm/io/gnuplot.hpp>
 
+#include "case_traits.hpp"
+
 #include "cases/block_forging.hpp"
 #include "cases/taylor_bar.hpp"
 #include "cases/wheel_forging.hpp"
@@ -107,7 +109,12 @@ class figure_recorder {
   }
 
   void plot(const history_table& history) const {
-    if constexpr (std::is_same_v<Case, cases::taylor_bar>) {
+    if constexpr (is_file_case<Case>) {  // the shapes with the tools, and the file's histories over time
+      shapes_png("shape.png", params_.name + ": initial and final section", "", true);
+      for (const auto& h : params_.histories)
+        history_png("history_" + h.name + ".png", params_.name + ": " + h.name, "time (us)", h.name,
+                    history.series("time_s", 1e6, h.name, 1.0));
+    } else if constexpr (std::is_same_v<Case, cases::taylor_bar>) {
       shapes_png("fig4_shape.png", "Taylor bar: initial and final section (r, z)", "", true);
       history_png("fig5_radius.png", "Taylor bar: radius of the impact face", "time (us)", "radius (mm)",
                   history.series("time_s", 1e6, "radius_mm", 1.0));
@@ -131,6 +138,7 @@ class figure_recorder {
     std::string label;
     std::vector<polyline> cells;  // one closed outline per background cell, or
     polyline points;              // the particles, when the cells are not on the particles
+    std::vector<polyline> tools;  // case files: the tools at the shape's time
   };
 
   // The deformed background cells (their nodes are the particles in the paper's cases).
@@ -148,6 +156,12 @@ class figure_recorder {
         sh.cells.push_back(std::move(outline));
       }
     }
+    if constexpr (is_file_case<Case>)
+      for (const auto& tool : s.contact().tools()) {
+        polyline line;
+        for (const vec2& v : tool.vertices(s.time())) line.emplace_back(v[0] * 1e3, v[1] * 1e3);
+        sh.tools.push_back(std::move(line));
+      }
     write_shape_csv(sh);
     shapes_.push_back(std::move(sh));
   }
@@ -183,7 +197,7 @@ class figure_recorder {
                   bool columns) const {
     static constexpr const char* colors[] = {"dark-violet", "web-blue", "dark-orange", "forest-green", "gray40"};
     if (shapes_.empty()) return;
-    const auto tools = tools_at_end(params_);
+    const auto end_tools = tools_at_end(params_);
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     auto extend = [&](const polyline& line) {
       for (const auto& [x, y] : line) {
@@ -210,6 +224,7 @@ class figure_recorder {
                        io::gnuplot_quote(title));
     for (std::size_t k = 0; k < shapes_.size(); ++k) {
       const shape& sh = shapes_[k];
+      const auto& tools = sh.tools.empty() ? end_tools : sh.tools;
       fig << fmt::format("set title {}\nplot '-' using 1:2 with {} lc rgb '{}' notitle",
                          io::gnuplot_quote(sh.label + unit_suffix), sh.cells.empty() ? "points pt 7 ps 0.3" : "lines lw 0.8",
                          colors[k % 5]);

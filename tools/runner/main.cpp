@@ -13,6 +13,7 @@
 #include "case_list.hpp"
 #include "interrupt.hpp"
 #include "paper.hpp"
+#include "run_case_file.hpp"
 #include "request.hpp"
 
 int main(int argc, char** argv) {
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
     if (r.threads > 0) omp_set_num_threads(r.threads);
 #endif
     stop_between_steps_on_interrupt();
-    const run_outcome out = run_named_case(r);
+    const run_outcome out = r.case_file.empty() ? run_named_case(r) : run_case_file(r);
     const auto& s = out.summary;
     fmt::print("{} ({}-{}-{}-{}): {} steps in {:.2f} s (set-up {:.2f} s), energy balance error {:.2e}\n",
                s.at("case").get<std::string>(), s.at("kernel").get<std::string>(),

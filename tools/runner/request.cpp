@@ -48,10 +48,8 @@ CLI::Validator parameter_setting() {
       "NAME=VALUE");
 }
 
-// The options of `rkpm_run CASE`, bound to `r`.
-template <class Case>
-void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
-  CLI::App* sub = app.add_subcommand(std::string(Case::name), std::string(Case::description));
+// The options every run takes (a named case or a case file), bound to `r`.
+void add_run_options(CLI::App* sub, run_request& r) {
   sub->add_option("--quadrature", r.quadrature, "background integration rule")
       ->check(CLI::IsMember(policy_names(quadratures)))
       ->capture_default_str();
@@ -76,9 +74,6 @@ void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
       ->check(CLI::Range(1L, 1'000'000'000'000L))
       ->capture_default_str();
   sub->add_option("--out", r.out_dir, "output directory (default results/CASE-QUADRATURE)");
-  sub->add_option("--set", sets, "override a case parameter, SI units (`CASE --help` lists them); repeatable")
-      ->check(parameter_setting<Case>())
-      ->allow_extra_args(false);
   sub->add_option_function<std::string>(
          "--checkpoint-interval", [&r](const std::string& t) { r.checkpoint_interval = std::stod(t); },
          "write checkpoint_STEP.rkpmcp after the first step reaching each multiple of this simulated time, "
@@ -91,15 +86,51 @@ void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
       ->type_name("PATH");
   sub->add_flag_callback("--no-plots", [&r] { r.plots = false; }, "skip the gnuplot figures");
   sub->add_flag("--quiet", r.quiet, "no progress line");
+}
+
+// The options given on the command line, which a case file or a checkpoint must not override.
+void record_given_options(const CLI::App* sub, run_request& r) {
+  for (const char* name : {"--quadrature", "--kernel", "--correction", "--contact", "--resolution", "--set"})
+    if (sub->count(name) > 0) r.given.emplace_back(name);
+}
+
+// `rkpm_run CASE [options]`.
+template <class Case>
+void add_case(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
+  CLI::App* sub = app.add_subcommand(std::string(Case::name), std::string(Case::description));
+  add_run_options(sub, r);
+  sub->add_option("--set", sets, "override a case parameter, SI units (`CASE --help` lists them); repeatable")
+      ->check(parameter_setting<Case>())
+      ->allow_extra_args(false);
   sub->footer([] {
     return fmt::format("parameters of {} (--set NAME=VALUE; name, default, unit, meaning):\n{}", Case::name,
                        cases::describe_parameters(typename Case::parameters{}));
   });
   sub->callback([&r, sub] {
     r.case_name = sub->get_name();
-    for (const char* name : {"--quadrature", "--kernel", "--correction", "--contact", "--resolution", "--set"})
-      if (sub->count(name) > 0) r.given.emplace_back(name);
+    record_given_options(sub, r);
   });
+}
+
+// `rkpm_run FILE.json [options]` (the parser turns it into `rkpm_run file FILE.json`).
+void add_case_file(CLI::App& app, run_request& r, std::vector<std::string>& sets) {
+  CLI::App* sub = app.add_subcommand("file", "a problem from a JSON case file (rkpm_run FILE.json also works); "
+                                             "tools/runner/case_file/README.md gives the schema");
+  sub->add_option("path", r.case_file, "the case file, e.g. cases/taylor_bar.json")->required()->type_name("FILE.json");
+  add_run_options(sub, r);
+  sub->add_option("--set", sets,
+                  "override a field of the file by its JSON pointer, e.g. /bodies/0/material/yield_stress_Pa=3e8 "
+                  "(the value is JSON, or else text); repeatable")
+      ->check(CLI::Validator(
+          [](std::string& setting) -> std::string {
+            if (!setting.starts_with("/") || setting.find('=') == std::string::npos)
+              return fmt::format("expects /JSON/POINTER=VALUE, got '{}'", setting);
+            return {};
+          },
+          "/POINTER=VALUE"))
+      ->allow_extra_args(false);
+  sub->footer("The policies default to the file's \"method\"; an option given here overrides it.");
+  sub->callback([&r, sub] { record_given_options(sub, r); });
 }
 
 void add_paper(CLI::App& app, paper_request& p) {
@@ -151,6 +182,7 @@ command_line parse_command_line(int argc, char** argv) {
   CLI::App app("rkpm_run: the paper's cases with the policies chosen on the command line", "rkpm_run");
   app.require_subcommand(1);
   hana::for_each(case_types, [&](auto t) { add_case<typename decltype(t)::type>(app, cl.run, sets); });
+  add_case_file(app, cl.run, sets);
   add_paper(app, cl.paper);
   // The options every case takes, also in the top-level help.
   const CLI::App* first_case = app.get_subcommand(std::string(decltype(+hana::front(case_types))::type::name));
@@ -164,8 +196,12 @@ command_line parse_command_line(int argc, char** argv) {
     cl.exit_code = 2;
     return cl;
   }
+  // `rkpm_run FILE.json ...` is `rkpm_run file FILE.json ...`.
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.front().ends_with(".json")) args.insert(args.begin(), "file");
+  std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {
-    app.parse(argc, argv);
+    app.parse(args);
   } catch (const CLI::CallForHelp&) {
     fmt::print("{}", app.help());  // the chosen subcommand's help, if one was given
     return cl;

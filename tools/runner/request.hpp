@@ -17,6 +17,7 @@ namespace rkpm::runner {
 
 struct run_request {
   std::string case_name;
+  std::string case_file;  // rkpm_run FILE.json: the case file (case_name is then its "name")
   std::string quadrature{paper_quadrature::name};
   std::string kernel{paper_kernel::name};
   std::string correction{paper_correction::name};

@@ -18,6 +18,7 @@
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 
+#include "case_traits.hpp"
 #include "figures.hpp"
 #include "interrupt.hpp"
 #include "json.hpp"
@@ -56,7 +57,7 @@ class run_observer {
         mean_force_(tools_, vec2::Zero()),
         measures_(Case::measure(s, params, mean_force_)),
         history_(dir / "history.csv", column_names(s)),
-        vtk_(dir / (std::string(Case::name) + ".pvd"), record_.snapshots),
+        vtk_(dir / (case_name<Case>(params) + ".pvd"), record_.snapshots),
         figures_(dir, params),
         segment_start_(std::chrono::steady_clock::now()) {
     record_.impulse.resize(tools_, vec2::Zero());

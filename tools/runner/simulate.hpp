@@ -27,6 +27,7 @@
 
 #include <rkpm/solver/checkpoint.hpp>
 
+#include "case_traits.hpp"
 #include "json.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
@@ -61,17 +62,15 @@ struct method_names {
 template <class Case>
 json run_identity(const run_request& request, const typename Case::parameters& params, const method_names& method) {
   json id = json::object();
-  id["case"] = Case::name;
+  id["case"] = case_name<Case>(params);
   id["kernel"] = method.kernel;
   id["correction"] = method.correction;
   id["quadrature"] = method.quadrature;
   id["geometry"] = method.geometry;
   id["contact"] = method.contact;
   id["resolution"] = request.resolution;
-  json& parameters = id["parameters"];
-  parameters = json::object();
-  for (const auto& f : Case::parameters::fields)
-    cases::visit_value(f, params, [&](auto value) { parameters[std::string(f.name)] = value; });
+  if constexpr (is_file_case<Case>) id["case_file"] = std::filesystem::absolute(params.file).string();
+  id["parameters"] = case_parameters<Case>(params);
   return id;
 }
 
@@ -117,8 +116,9 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   const double setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double end_time = s.options().end_time;
   if (!restart) {
-    record.history_interval = end_time / 400;
-    record.snapshot_interval = end_time / 20;
+    const auto [rows, snapshots] = output_counts<Case>(params);
+    record.history_interval = end_time / rows;
+    record.snapshot_interval = end_time / snapshots;
     record.setup_s = setup_s;
   }
   if (request.checkpoint_interval) {

@@ -77,6 +77,22 @@ inline json parse_case_text(const std::string& text, diagnostics& d) {
 
 }  // namespace detail
 
+// The same from a document already parsed (a restart's, kept in its checkpoint); `file` names it
+// in messages, and relative mesh paths are resolved against its folder.
+inline case_description load_case_document(json document, const std::filesystem::path& file,
+                                           const override_list& overrides = {}) {
+  diagnostics d(file.string());
+  apply_overrides(document, overrides, d);
+  d.throw_if_any();
+  case_description c = read_case(d, document, file);
+  d.throw_if_any();
+  read_meshes(d, c);
+  d.throw_if_any();
+  cross_check(d, c);
+  d.throw_if_any();
+  return c;
+}
+
 inline case_description load_case_file(const std::filesystem::path& path, const override_list& overrides = {}) {
   diagnostics d(path.string());
   std::ifstream in(path, std::ios::binary);
@@ -90,15 +106,7 @@ inline case_description load_case_file(const std::filesystem::path& path, const 
   text << in.rdbuf();
   json document = detail::parse_case_text(text.str(), d);
   d.throw_if_any();
-  apply_overrides(document, overrides, d);
-  d.throw_if_any();
-  case_description c = read_case(d, document, path);
-  d.throw_if_any();
-  read_meshes(d, c);
-  d.throw_if_any();
-  cross_check(d, c);
-  d.throw_if_any();
-  return c;
+  return load_case_document(std::move(document), path, overrides);
 }
 
 }  // namespace rkpm::runner::case_file

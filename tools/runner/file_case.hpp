@@ -1,0 +1,45 @@
+#pragma once
+// file_case<Geometry>: a case read from a JSON case file (tools/runner/case_file/README.md) in
+// the shape simulate.hpp runs the typed cases in: its parameters are the checked
+// case_description, its name and end time come from the file, build() and measure() are the
+// case-file layer's. One type per geometry, since the geometry is a compile-time policy; the
+// material is case_file::material_type for every file (J2 with its hardening law chosen at run
+// time, elastic as J2 that never yields), so that a file runs with any of its laws without a
+// solver type per law.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/core/types.hpp>
+#include <rkpm/solver/problem.hpp>
+
+#include "case_file/build_problem.hpp"
+#include "case_file/case_description.hpp"
+#include "case_file/measure.hpp"
+#include "case_traits.hpp"
+
+namespace rkpm::runner {
+
+template <class Geometry>
+struct file_case {
+  using parameters = case_file::case_description;
+  using geometry_type = Geometry;
+  using material_type = case_file::material_type;
+
+  static std::string name_of(const parameters& c) { return c.name; }
+  static double end_time(const parameters& c) { return c.end_time; }
+
+  template <class Contact>
+  static problem<material_type, Contact> build(const parameters& c, int resolution) {
+    return case_file::build_problem<Contact>(c, resolution);
+  }
+
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& c,
+                                                             const std::vector<vec2>& mean_tool_force) {
+    return case_file::measure(s, c, mean_tool_force);
+  }
+};
+
+}  // namespace rkpm::runner
