@@ -34,3 +34,14 @@ foreach(mode same kill refused)
   set_tests_properties(tools.runner.restart_${mode} PROPERTIES TIMEOUT 300 LABELS "tools/runner"
                        ENVIRONMENT "OMP_NUM_THREADS=1;OMP_WAIT_POLICY=passive")
 endforeach()
+
+# Case files (runner/check_case_files.py): cases/*.json against the built-in cases, a restart,
+# and bad files. One thread, so that the comparisons can ask for equality.
+set(rkpm_case_file_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_case_files.py)
+foreach(mode paper restart errors)
+  add_test(NAME tools.runner.case_files_${mode}
+           COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_case_file_check} ${mode} $<TARGET_FILE:rkpm_run>
+                   ${PROJECT_SOURCE_DIR}/cases ${rkpm_runner_work}/case_files)
+  set_tests_properties(tools.runner.case_files_${mode} PROPERTIES TIMEOUT 300 LABELS "tools/runner"
+                       ENVIRONMENT "OMP_NUM_THREADS=1;OMP_WAIT_POLICY=passive")
+endforeach()

@@ -1,0 +1,141 @@
+#!/usr/bin/python3
+"""Case files through rkpm_run, run by ctest (tests/tools/runner.cmake).
+
+    check_case_files.py paper RKPM_RUN CASES_DIR WORK_DIR   cases/*.json give the built-in cases' results and
+                                                            history bit for bit (the same problem, built from
+                                                            the file), also with an override on each side
+    check_case_files.py restart RKPM_RUN CASES_DIR WORK_DIR a case-file run restarted from its mid-run
+                                                            checkpoint gives the uninterrupted run's outputs
+    check_case_files.py errors RKPM_RUN CASES_DIR WORK_DIR  a bad file or override stops before any step with
+                                                            the file, the JSON pointer and the fix
+
+The built-in cases (cases/*.hpp) and the case files are two independent descriptions of the same
+problems: one in C++, one in JSON through the generic bodies, tools and histories.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message)
+
+
+def run(cmd):
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def summary(folder):
+    return json.loads(read(os.path.join(folder, "summary.json")))
+
+
+def compare(typed, from_file, label):
+    a, b = summary(typed), summary(from_file)
+    for key in ["results", "energy", "steps", "particles", "quadrature_points", "dt_min_s", "dt_max_s"]:
+        check(a[key] == b[key], f"{label}: '{key}' differs: built-in {a[key]}, case file {b[key]}")
+    check(read(os.path.join(typed, "history.csv")) == read(os.path.join(from_file, "history.csv")),
+          f"{label}: history.csv differs")
+    print(f"ok  {label}: {b['steps']} steps, results {b['results']}")
+
+
+def paper(rkpm_run, cases, work):
+    # (case, end time, built-in override, the same override as a JSON pointer)
+    requests = [
+        ("taylor_bar", "20e-6", None, None),
+        ("block_forging", "0.015", "friction=0.35", "/contact/friction=0.35"),
+        ("wheel_forging", "2e-4", None, None),
+        ("taylor_bar", "10e-6", "yield_stress_Pa=3e8", "/bodies/0/material/yield_stress_Pa=3e8"),
+    ]
+    for case, end, typed_set, file_set in requests:
+        label = f"{case} to {end} s" + (f" with {typed_set}" if typed_set else "")
+        typed, from_file = os.path.join(work, "typed-" + case), os.path.join(work, "file-" + case)
+        for d in (typed, from_file):
+            shutil.rmtree(d, ignore_errors=True)
+        common = ["--end-time", end, "--no-plots", "--quiet"]
+        r1 = run([rkpm_run, case, "--out", typed] + common + (["--set", typed_set] if typed_set else []))
+        r2 = run([rkpm_run, os.path.join(cases, case + ".json"), "--out", from_file] + common +
+                 (["--set", file_set] if file_set else []))
+        check(r1.returncode == 0 and r2.returncode == 0, f"{label}: a run failed: {r1.stderr} {r2.stderr}")
+        if r1.returncode == 0 and r2.returncode == 0:
+            compare(typed, from_file, label)
+    s = summary(os.path.join(work, "file-taylor_bar"))
+    check(s["parameters"]["bodies"][0]["material"]["yield_stress_Pa"] == 3e8 and s["case_file"].endswith(".json"),
+          "summary.json does not record the overridden document and the file")
+
+
+def restart(rkpm_run, cases, work):
+    full, cont = os.path.join(work, "file-full"), os.path.join(work, "file-cont")
+    for d in (full, cont):
+        shutil.rmtree(d, ignore_errors=True)
+    base = [rkpm_run, os.path.join(cases, "block_forging.json"), "--end-time", "0.004", "--no-plots", "--quiet"]
+    r = run(base + ["--checkpoint-interval", "0.002", "--out", full, "--set", "/contact/friction=0.3"])
+    check(r.returncode == 0, f"the case-file run failed: {r.stderr}")
+    ck = sorted(f for f in os.listdir(full) if f.endswith(".rkpmcp"))
+    check(len(ck) == 2, f"expected two checkpoints, found {ck}")
+    r = run([rkpm_run, os.path.join(cases, "block_forging.json"), "--restart", os.path.join(full, ck[0]), "--out", cont,
+             "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"the restart failed: {r.stderr}")
+    compare(full, cont, "block_forging.json restarted from " + ck[0])
+    r = run([rkpm_run, "block_forging", "--restart", os.path.join(full, ck[0]), "--out", cont])
+    check(r.returncode != 0 and "case file" in r.stderr, f"a built-in case took a case file's checkpoint: {r.stderr}")
+
+
+def errors(rkpm_run, cases, work):
+    folder = os.path.join(work, "bad-files")
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    with open(os.path.join(cases, "taylor_bar.json")) as f:
+        good = json.load(f)
+    bad_modulus = json.loads(json.dumps(good))
+    bad_modulus["bodies"][0]["material"]["youngs_modulus_Pa"] = -1
+    misspelt = json.loads(json.dumps(good))
+    misspelt["bodies"][0]["initial_velocity_ms"] = misspelt["bodies"][0].pop("initial_velocity_m_s")
+    inside = json.loads(json.dumps(good))
+    inside["tools"][0]["polyline_m"] = [[-1e-3, 5e-3], [5e-3, 5e-3]]
+    files = {"bad_modulus.json": (bad_modulus, ["/bodies/0/material/youngs_modulus_Pa", "positive"]),
+             "misspelt.json": (misspelt, ["/bodies/0/initial_velocity_ms", "initial_velocity_m_s"]),
+             "inside.json": (inside, ["/tools/0", "inside"])}
+    for name, (doc, words) in files.items():
+        path = os.path.join(folder, name)
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        r = run([rkpm_run, path, "--out", os.path.join(folder, "out"), "--no-plots", "--quiet"])
+        check(r.returncode != 0 and name in r.stderr, f"{name}: exit {r.returncode}, {r.stderr!r}")
+        for w in words:
+            check(w in r.stderr, f"{name}: the error does not say {w!r}: {r.stderr!r}")
+        print(f"ok  {name}: {r.stderr.strip()}")
+    for args, words in [([os.path.join(folder, "nosuch.json")], ["nosuch.json", "no such file"]),
+                        ([os.path.join(cases, "taylor_bar.json"), "--set", "/bodies/0/materiel/density_kg_m3=1"],
+                         ["/bodies/0/materiel", "material"]),
+                        ([os.path.join(cases, "taylor_bar.json"), "--set", "density=1"], ["/POINTER=VALUE"])]:
+        r = run([rkpm_run] + args + ["--out", os.path.join(folder, "out"), "--no-plots", "--quiet"])
+        check(r.returncode != 0, f"{args}: accepted")
+        for w in words:
+            check(w in r.stderr, f"{args}: the error does not say {w!r}: {r.stderr!r}")
+        print(f"ok  {' '.join(args[1:]) or args[0]}: {r.stderr.strip()}")
+    check(not os.path.exists(os.path.join(folder, "out", "history.csv")), "a bad case file started a run")
+
+
+def main(argv):
+    mode, rkpm_run, cases, work = argv[1:5]
+    os.makedirs(work, exist_ok=True)
+    {"paper": paper, "restart": restart, "errors": errors}[mode](rkpm_run, cases, work)
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
