@@ -200,6 +200,30 @@ inline gmsh_body read_gmsh_body(const std::filesystem::path& msh_file, double su
   return detail::body_or_fail(source, support_factor);
 }
 
+// A Gmsh geometry script (.geo, with its physical curves and its quadrilateral recombination)
+// meshed in 2D, every mesh size multiplied by `size_factor` (1/K gives about K times the nodes
+// per direction). The script is Gmsh's to run: a syntax error is reported with Gmsh's message.
+inline gmsh_body mesh_geo_file(const std::filesystem::path& geo_file, double size_factor, double support_factor) {
+  const std::string source = "'" + geo_file.string() + "'";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(geo_file, ec))
+    fail("Gmsh geometry {} does not exist (or is not a file): give a .geo script", source);
+  if (!(size_factor > 0.0) || !std::isfinite(size_factor))
+    fail("mesh_geo_file: size factor {} must be positive and finite", size_factor);
+  detail::gmsh_session session;
+  try {
+    gmsh::open(geo_file.string());
+    double factor = 1.0;
+    gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", factor * size_factor);
+    gmsh::model::mesh::generate(2);
+  } catch (...) {
+    fail("Gmsh could not mesh {} ({}): run gmsh -2 {} to see its messages", source,
+         detail::gmsh_message(std::current_exception()), geo_file.string());
+  }
+  return detail::body_or_fail(source, support_factor);
+}
+
 // The polygon `vertices` (#vertices >= 3, either orientation, edges not crossing) meshed into
 // quadrilaterals of side about `spacing`, with Gmsh's OpenCASCADE kernel (its straight edges
 // place transfinite nodes to the last bit): transfinite (a structured grid) when it is a convex
