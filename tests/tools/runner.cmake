@@ -38,7 +38,7 @@ endforeach()
 # Case files (runner/check_case_files.py): cases/*.json against the built-in cases, a restart,
 # and bad files. One thread, so that the comparisons can ask for equality.
 set(rkpm_case_file_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_case_files.py)
-foreach(mode paper restart errors)
+foreach(mode paper restart errors mesh)
   add_test(NAME tools.runner.case_files_${mode}
            COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_case_file_check} ${mode} $<TARGET_FILE:rkpm_run>
                    ${PROJECT_SOURCE_DIR}/cases ${rkpm_runner_work}/case_files)

@@ -8,6 +8,10 @@
                                                             checkpoint gives the uninterrupted run's outputs
     check_case_files.py errors RKPM_RUN CASES_DIR WORK_DIR  a bad file or override stops before any step with
                                                             the file, the JSON pointer and the fix
+    check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
+                                                            has the geometry's mass (kinetic energy 1/2 rho A v^2),
+                                                            keeps its symmetry line and stays on the wall's side;
+                                                            --resolution 2 meshes it again, about 4x the particles
 
 The built-in cases (cases/*.hpp) and the case files are two independent descriptions of the same
 problems: one in C++, one in JSON through the generic bodies, tools and histories.
@@ -127,10 +131,41 @@ def errors(rkpm_run, cases, work):
     check(not os.path.exists(os.path.join(folder, "out", "history.csv")), "a bad case file started a run")
 
 
+def mesh(rkpm_run, cases, work):
+    import csv
+    import math
+    radius, length, velocity, density = 5e-3, 20e-3, 150.0, 8930.0  # projectile.geo and .json
+    area = radius * length + math.pi * radius ** 2 / 4
+    counts = {}
+    for k in (1, 2):
+        out = os.path.join(work, f"projectile-{k}")
+        shutil.rmtree(out, ignore_errors=True)
+        r = run([rkpm_run, os.path.join(cases, "projectile", "projectile.json"), "--resolution", str(k),
+                 "--end-time", "10e-6", "--out", out, "--no-plots", "--quiet"])
+        check(r.returncode == 0, f"projectile at resolution {k} failed: {r.stderr}")
+        if r.returncode != 0:
+            return
+        s = summary(out)
+        counts[k] = s["particles"]
+        with open(os.path.join(out, "history.csv")) as f:
+            rows = list(csv.DictReader(f))
+        kinetic0 = float(rows[0]["kinetic_J"])
+        expected = 0.5 * density * area * velocity ** 2
+        check(abs(kinetic0 / expected - 1) < 2e-3,
+              f"resolution {k}: initial kinetic energy {kinetic0} J/m, 1/2 rho A v^2 = {expected} J/m")
+        check(s["energy"]["balance_error"] < 1e-2, f"resolution {k}: energy balance error {s['energy']}")
+        res = s["results"]
+        check(res["length_mm"] < 25.0 and res["half_width_mm"] > 5.0 and res["wall_force_N_per_m"] > 0,
+              f"resolution {k}: the projectile did not shorten and spread on the wall: {res}")
+        print(f"ok  projectile at resolution {k}: {s['particles']} particles, kinetic energy {kinetic0:.1f} J/m "
+              f"(1/2 rho A v^2 = {expected:.1f}), results {res}")
+    check(3.0 < counts[2] / counts[1] < 5.0, f"resolution 2 gives {counts[2]} particles, resolution 1 {counts[1]}")
+
+
 def main(argv):
     mode, rkpm_run, cases, work = argv[1:5]
     os.makedirs(work, exist_ok=True)
-    {"paper": paper, "restart": restart, "errors": errors}[mode](rkpm_run, cases, work)
+    {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh}[mode](rkpm_run, cases, work)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1
