@@ -1,4 +1,4 @@
-// The integration constraint (docs/method.md (19b)) and the linear patch test, for the cell
+// The integration constraint (docs/method.md (19a)) and the linear patch test, for the cell
 // rules and their VCI corrections (docs/method.md sections 3.4-3.5).
 // Theory: for every particle I the discrete divergence theorem
 //   sum_q [g_I(X_q) + e_r N_I(X_q) / R_q] w_q = b_I = sum_b N_I(X_b) n_b w_b

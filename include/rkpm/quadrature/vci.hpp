@@ -2,7 +2,7 @@
 // vci<Rule>: a cell rule with variationally consistent integration (Chen, Hillman, Rueter
 // 2013, IJNME 95:387; docs/method.md section 3.5). The points and weights are Rule's; the
 // test-function gradients at them are corrected once, in the reference configuration, so that
-// the integration constraint (docs/method.md (19b)-(19c)) holds exactly for every particle,
+// the integration constraint (docs/method.md (19a)) holds exactly for every particle,
 // which makes the linear patch test pass. The correction itself is computed by
 // discretization/integration_constraint.hpp when build_discrete_model sees a CorrectedRule.
 //   q2_vci  "q2+vci"    the paper's cost with a consistent force
