@@ -1,11 +1,11 @@
 #pragma once
 // The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --contact E`:
 // a table, built with Boost.Hana from the policy lists the command line offers (methods.hpp),
-// from the policies' names to one compiled configuration type per combination. The case fixes
-// geometry and material; Coulomb friction (coefficient 0 is frictionless) serves every case.
-// Only the discrete-model builder depends on kernel, correction and quadrature, so the table's
-// 36 entries per case share three instantiations of the time-stepping loop (one per
-// enforcement).
+// from the kernel, correction and enforcement names to one compiled combination each; the case
+// fixes geometry and material, Coulomb friction (coefficient 0 is frictionless) serves every
+// case, and the quadrature rule is chosen at run time inside (build_model_with_rule), since it
+// changes tables, not types. The table's 12 entries per case share three instantiations of the
+// time-stepping loop (one per enforcement).
 
 #include <boost/hana.hpp>
 #include <map>
@@ -13,8 +13,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/make_solver.hpp>
@@ -30,35 +32,59 @@
 
 namespace rkpm::runner {
 
-template <class Case, class Config>
+// The discrete model with the rule named `rule` (one of `quadratures`, methods.hpp): the rule is
+// chosen at run time, since it changes only the points, the weights and (VCI) the test
+// gradients, not the types of the model or the solver.
+template <class K, class C, class G>
+discrete_model build_model_with_rule(std::string_view rule, particle_set<2> particles, background_mesh mesh,
+                                     double max_condition) {
+  std::optional<discrete_model> model;
+  hana::for_each(quadratures, [&](auto t) {
+    using Q = typename decltype(t)::type;
+    if (!model && rule == Q::name)
+      model.emplace(build_discrete_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition));
+  });
+  if (!model) fail("no quadrature rule '{}'; the rules are {}", rule, fmt::join(policy_names(quadratures), ", "));
+  return std::move(*model);
+}
+
+template <class Case, class K, class C, class E>
 run_outcome run_with(const run_request& r, const typename Case::parameters& p, const std::optional<restart_point>& restart) {
-  using Ct = typename Config::contact_type;
+  using G = typename Case::geometry_type;
+  using M = typename Case::material_type;
+  using Ct = contact::particle_to_segment<E, contact::friction::coulomb>;
+  using Solver = explicit_solver<G, M, Ct>;
   run_options options;
   options.end_time = Case::end_time(p);
   options.max_steps = r.max_steps;
-  const std::function<solver_for<Config>()> make = [&] {
-    return make_solver<Config>(Case::template build<Ct>(p, r.resolution), options);
+  const std::function<Solver()> make = [&] {
+    problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
+    discrete_model model = build_model_with_rule<K, C, G>(r.quadrature, std::move(pr.particles), std::move(pr.mesh),
+                                                          options.max_moment_condition);
+    return Solver(std::move(model), std::move(pr), options);
   };
-  return simulate<Case, solver_for<Config>>(r, p, method_names::of<Config>(), make, restart);
+  // config<...>::name()'s form, with the rule named at run time.
+  const std::string configuration = fmt::format("{}-{}-{}-{}-{}-{}", K::name, C::name, r.quadrature, G::name,
+                                                M::name, Ct::name);
+  return simulate<Case, Solver>(r, p, {K::name, C::name, r.quadrature, G::name, E::name, configuration}, make,
+                                restart);
 }
 
 template <class Case>
 using run_function = run_outcome (*)(const run_request&, const typename Case::parameters&,
                                      const std::optional<restart_point>&);
 
-// "cubic-linear-q2-paper" -> the run function of that configuration.
+// "cubic-linear-paper" (kernel-correction-enforcement) -> the run function of that
+// combination; the quadrature rule is chosen inside, at run time.
 template <class Case>
 std::map<std::string, run_function<Case>> dispatch_table() {
   std::map<std::string, run_function<Case>> table;
-  auto combos = hana::cartesian_product(hana::make_tuple(kernels, corrections, quadratures, enforcements));
+  auto combos = hana::cartesian_product(hana::make_tuple(kernels, corrections, enforcements));
   hana::for_each(combos, [&](auto combo) {
     using K = typename decltype(+combo[hana::size_c<0>])::type;
     using C = typename decltype(+combo[hana::size_c<1>])::type;
-    using Q = typename decltype(+combo[hana::size_c<2>])::type;
-    using E = typename decltype(+combo[hana::size_c<3>])::type;
-    using Ct = contact::particle_to_segment<E, contact::friction::coulomb>;
-    using Config = config<K, C, Q, typename Case::geometry_type, typename Case::material_type, Ct>;
-    table[fmt::format("{}-{}-{}-{}", K::name, C::name, Q::name, E::name)] = &run_with<Case, Config>;
+    using E = typename decltype(+combo[hana::size_c<2>])::type;
+    table[fmt::format("{}-{}-{}", K::name, C::name, E::name)] = &run_with<Case, K, C, E>;
   });
   return table;
 }

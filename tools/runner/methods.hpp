@@ -18,7 +18,9 @@ namespace hana = boost::hana;
 
 inline constexpr auto kernels = policies::kernels;
 inline constexpr auto corrections = policies::corrections;
-inline constexpr auto quadratures = policies::quadratures;
+// The paper's rules and those beyond it (q2_split, q2_tri, the VCI-corrected rules): the runner
+// chooses the rule at run time, so offering them all costs no solver instantiation.
+inline constexpr auto quadratures = hana::concat(policies::quadratures, policies::extended_quadratures);
 inline constexpr auto enforcements = [] {
   constexpr auto has_enforcement =
       hana::is_valid([](auto t) -> hana::type<typename decltype(t)::type::enforcement_type> { return {}; });

@@ -44,17 +44,12 @@ inline int active_threads() {
 #endif
 }
 
-// The policy names of a configuration, as summary.json records them, and its full name
-// (Config::name(), which checkpoints check). Passed as values so that simulate is compiled once
-// per solver type (3 per case), not once per configuration (36).
+// The policy names of a run, as summary.json records them, and its configuration's full name
+// (config<...>::name()'s form, which checkpoints check). Passed as values so that simulate is
+// compiled once per solver type (one per enforcement), not once per combination.
 struct method_names {
   std::string_view kernel, correction, quadrature, geometry, contact;
   std::string configuration;
-  template <class Config>
-  static method_names of() {
-    return {Config::kernel_type::name, Config::correction_type::name, Config::quadrature_type::name,
-            Config::geometry_type::name, Config::contact_type::enforcement_type::name, Config::name()};
-  }
 };
 
 // What identifies a run for a restart: the case, its policies, resolution and parameters
