@@ -25,12 +25,12 @@ run_outcome run_case_file(const run_request& request) {
            d.at("case").get<std::string>(), d.at("case").get<std::string>(), r.restart);
     adopt_checkpoint_run(r, d, d.at("case").get<std::string>());
     // The problem as it was started, whatever the file says now.
-    c = case_file::load_case_document(d.at("parameters"), d.at("case_file").get<std::string>());
+    c = case_file::load_case_document(d.at("parameters"), d.at("case_file").get<std::string>(), {}, r.resolution);
     if (r.out_dir.empty()) r.out_dir = std::filesystem::absolute(restart->file).parent_path().string();
   } else {
     case_file::override_list overrides;
     for (const auto& [pointer, value] : r.sets) overrides.emplace_back(pointer, value);
-    c = case_file::load_case_file(r.case_file, overrides);
+    c = case_file::load_case_file(r.case_file, overrides, r.resolution);
     // The file's policies, unless the command line names others.
     auto given = [&](const char* option) { return std::ranges::find(r.given, option) != r.given.end(); };
     if (!given("--kernel")) r.kernel = c.method.kernel;

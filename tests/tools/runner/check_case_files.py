@@ -155,6 +155,16 @@ def mesh(rkpm_run, cases, work):
               f"resolution {k}: initial kinetic energy {kinetic0} J/m, 1/2 rho A v^2 = {expected} J/m")
         check(s["energy"]["balance_error"] < 1e-2, f"resolution {k}: energy balance error {s['energy']}")
         res = s["results"]
+        # The symmetry line x = 0 (the physical curve "symmetry", held in x) stays at x = 0: read the
+        # last snapshot's points and reference positions with meshio (an independent reader).
+        import meshio
+        last = sorted(f for f in os.listdir(out) if f.endswith(".vtu"))[-1]
+        m = meshio.read(os.path.join(out, last))
+        reference = m.points[:, :2] - m.point_data["displacement"][:, :2]
+        on_line = abs(reference[:, 0]) < 1e-12
+        check(on_line.sum() >= 20 * k and abs(m.points[on_line, 0]).max() < 1e-12 and m.points[:, 0].min() > -1e-9,
+              f"resolution {k}: the symmetry line moved: {on_line.sum()} particles on it, smallest x "
+              f"{m.points[:, 0].min()}")
         check(res["length_mm"] < 25.0 and res["half_width_mm"] > 5.0 and res["wall_force_N_per_m"] > 0,
               f"resolution {k}: the projectile did not shorten and spread on the wall: {res}")
         print(f"ok  projectile at resolution {k}: {s['particles']} particles, kinetic energy {kinetic0:.1f} J/m "

@@ -36,6 +36,7 @@ struct polygon_shape {  // counter-clockwise, simple; meshed with a target spaci
 struct mesh_shape {  // a Gmsh file, used as given
   std::filesystem::path file;  // resolved against the case file's folder
   io::gmsh_body body;          // read by load_case_file (its node groups name the edges)
+  int meshed_at = 1;           // the resolution a .geo script was meshed at (a .msh file: 1)
 };
 using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
 

@@ -78,22 +78,24 @@ inline json parse_case_text(const std::string& text, diagnostics& d) {
 }  // namespace detail
 
 // The same from a document already parsed (a restart's, kept in its checkpoint); `file` names it
-// in messages, and relative mesh paths are resolved against its folder.
+// in messages, and relative mesh paths are resolved against its folder. `resolution`: the one
+// the problem will be built at, for .geo bodies, which are meshed here (gmsh_bodies.hpp).
 inline case_description load_case_document(json document, const std::filesystem::path& file,
-                                           const override_list& overrides = {}) {
+                                           const override_list& overrides = {}, int resolution = 1) {
   diagnostics d(file.string());
   apply_overrides(document, overrides, d);
   d.throw_if_any();
   case_description c = read_case(d, document, file);
   d.throw_if_any();
-  read_meshes(d, c);
+  read_meshes(d, c, resolution);
   d.throw_if_any();
   cross_check(d, c);
   d.throw_if_any();
   return c;
 }
 
-inline case_description load_case_file(const std::filesystem::path& path, const override_list& overrides = {}) {
+inline case_description load_case_file(const std::filesystem::path& path, const override_list& overrides = {},
+                                       int resolution = 1) {
   diagnostics d(path.string());
   std::ifstream in(path, std::ios::binary);
   if (!std::filesystem::is_regular_file(path) || !in) {
@@ -106,7 +108,7 @@ inline case_description load_case_file(const std::filesystem::path& path, const 
   text << in.rdbuf();
   json document = detail::parse_case_text(text.str(), d);
   d.throw_if_any();
-  return load_case_document(std::move(document), path, overrides);
+  return load_case_document(std::move(document), path, overrides, resolution);
 }
 
 }  // namespace rkpm::runner::case_file
