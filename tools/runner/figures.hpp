@@ -218,7 +218,8 @@ class figure_recorder {
     const int n = static_cast<int>(shapes_.size());
     const int width = n == 1 ? 900 : columns ? 450 * n : 900, height = n == 1 ? 700 : columns ? 900 : 330 * n;
     io::gnuplot_figure fig(dir_ / png, {.width = width, .height = height});
-    fig << fmt::format("set size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset grid\n"
+    // clip two: a tool segment with both ends outside the axes (a long wall) is still drawn.
+    fig << fmt::format("set size ratio -1\nset clip two\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset grid\n"
                        "set xrange [{}:{}]\nset yrange [{}:{}]\nset multiplot layout {},{} title {}\n",
                        lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad, columns ? 1 : n, columns ? n : 1,
                        io::gnuplot_quote(title));

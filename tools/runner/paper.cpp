@@ -45,6 +45,19 @@ int run_paper(const paper_request& o) {
       fmt::print("paper: {} {} done, {} steps, {:.1f} s\n", c, q, count(out.summary, "steps"), number(out.summary, "wall_s"));
       summary[fmt::format("{}-{}", c, q)] = out.summary;
     }
+  // Beyond the paper: the same cases with the other integration rules (docs/method.md section 3).
+  for (const auto& c : chosen)
+    for (const auto& q : o.rules) {
+      run_request r;
+      r.case_name = c;
+      r.quadrature = q;
+      r.resolution = o.resolution;
+      r.plots = o.plots;
+      r.out_dir = fmt::format("{}/{}-{}", o.out, c, q);
+      fmt::print("paper: running {} with {} (beyond the paper) ...\n", c, q);
+      std::fflush(stdout);
+      summary[fmt::format("{}-{}", c, q)] = run_named_case(r).summary;
+    }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::string md = "# rkpm: the paper's tables, reproduced\n\n";
@@ -82,6 +95,30 @@ int run_paper(const paper_request& o) {
     std::string res;
     for (const auto& [k, v] : s.at("results").items()) res += fmt::format("{} = {:.4g}; ", k, v.get<double>());
     md += fmt::format("| {} | {} | {} |\n", s.at("case").get<std::string>(), s.at("quadrature").get<std::string>(), res);
+  }
+  if (!o.rules.empty()) {
+    md += "\n## Beyond the paper: other integration rules\n\n";
+    md += "The paper's two readings of its two-point cell that rkpm does not use (`q2_split`, `q2_tri`) and the "
+          "variationally consistent rules (`+vci`), beside Q2 and Q4, from the same run of this command "
+          "(docs/method.md section 3). Time per step is relative to Q2's in this run.\n\n";
+    for (const auto& c : chosen) {
+      md += fmt::format("### {}\n\n| rule | key results | energy balance error | steps | loop (s) | time per step / Q2 |\n"
+                        "|---|---|---|---|---|---|\n", c);
+      const auto& s2 = summary[c + "-q2"];
+      const double q2_per_step = number(s2, "wall_s") / static_cast<double>(count(s2, "steps"));
+      std::vector<std::string> rules{"q2", "q4"};
+      rules.insert(rules.end(), o.rules.begin(), o.rules.end());
+      for (const auto& q : rules) {
+        const auto& s = summary[c + "-" + q];
+        std::string res;
+        for (const auto& [k, v] : s.at("results").items()) res += fmt::format("{} = {:.4g}; ", k, v.get<double>());
+        const double per_step = number(s, "wall_s") / static_cast<double>(count(s, "steps"));
+        md += fmt::format("| {} | {} | {:.2e} | {} | {:.2f} | {:.2f} |\n", q, res,
+                          s.at("energy").at("balance_error").get<double>(), count(s, "steps"), number(s, "wall_s"),
+                          per_step / q2_per_step);
+      }
+      md += "\n";
+    }
   }
   if (summary.count("block_forging-q4"))
     md += "\n![block forging shapes](block_forging-q4/shapes.png) ![tool force](block_forging-q4/tool_force.png)\n";

@@ -143,6 +143,20 @@ void add_paper(CLI::App& app, paper_request& p) {
   sub->add_option("--cases", p.cases, "comma-separated cases to run (default: all)")
       ->delimiter(',')
       ->check(CLI::IsMember(case_names()));
+  sub->add_option_function<std::vector<std::string>>(
+         "--rules",
+         [&p](const std::vector<std::string>& rules) {
+           p.rules = rules;
+           std::erase(p.rules, "none");
+         },
+         "integration rules beyond the paper for the report's last section, comma-separated, or none "
+         "(default q2_split,q2_tri,q2+vci,q4+vci)")
+      ->delimiter(',')
+      ->check(CLI::IsMember([] {
+        auto names = policy_names(quadratures);
+        names.emplace_back("none");
+        return names;
+      }()));
   sub->add_flag_callback("--no-plots", [&p] { p.plots = false; }, "skip the gnuplot figures");
 }
 

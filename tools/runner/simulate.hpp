@@ -79,8 +79,13 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   fs::create_directories(dir);
 
   json& summary = outcome.summary;
-  summary = run_identity<Case>(request, params, method);
+  // The identity's keys, with the status before the (long) parameters.
+  const json identity = run_identity<Case>(request, params, method);
+  summary = json::object();
+  for (const auto& [key, value] : identity.items())
+    if (key != "parameters") summary[key] = value;
   summary["status"] = "setting up";
+  summary["parameters"] = identity.at("parameters");
 
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<Solver> holder;
@@ -116,12 +121,16 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     record.snapshot_interval = end_time / snapshots;
     record.setup_s = setup_s;
   }
-  if (request.checkpoint_interval) {
+  // A new interval (a first run, or a restart asking for another) starts at the next multiple
+  // after now; a restart with the same interval keeps the checkpoint's clock, so that it writes
+  // the uninterrupted run's checkpoints.
+  if (request.checkpoint_interval && *request.checkpoint_interval != record.checkpoint_interval) {
     record.checkpoint_interval = *request.checkpoint_interval;
-    record.next_checkpoint = (std::floor(s.time() / record.checkpoint_interval) + 1.0) * record.checkpoint_interval;
+    record.next_checkpoint = std::floor(s.time() / record.checkpoint_interval) * record.checkpoint_interval;
+    while (record.next_checkpoint <= s.time()) record.next_checkpoint += record.checkpoint_interval;
   }
 
-  run_observer<Case, Solver> observe(dir, params, s, std::move(record), run_identity<Case>(request, params, method),
+  run_observer<Case, Solver> observe(dir, params, s, std::move(record), identity,
                                      method.configuration, request.quiet);
   if (restart) observe.resume(fs::absolute(restart->file).parent_path());
   summary["status"] = "running";  // what a killed run's folder says
