@@ -1,11 +1,10 @@
 #pragma once
 // The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --contact E`:
-// a table, built with Boost.Hana from the policy lists the command line offers (methods.hpp),
-// from the kernel, correction and enforcement names to one compiled combination each; the case
-// fixes geometry and material, Coulomb friction (coefficient 0 is frictionless) serves every
-// case, and the quadrature rule is chosen at run time inside (build_model_with_rule), since it
-// changes tables, not types. The table's 12 entries per case share three instantiations of the
-// time-stepping loop (one per enforcement).
+// the case fixes geometry and material, the enforcement picks one of three compiled solver
+// types from a table built with Boost.Hana (methods.hpp), and kernel, correction and rule are
+// chosen at run time by the model builder (model_builder.hpp), since they change the model's
+// tables, not the solver's type. Coulomb friction (coefficient 0 is frictionless) serves every
+// case.
 
 #include <boost/hana.hpp>
 #include <map>
@@ -25,6 +24,7 @@
 #include "case_list.hpp"
 #include "cases/parameters.hpp"
 #include "methods.hpp"
+#include "model_builder.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
 #include "run_record.hpp"
@@ -32,23 +32,7 @@
 
 namespace rkpm::runner {
 
-// The discrete model with the rule named `rule` (one of `quadratures`, methods.hpp): the rule is
-// chosen at run time, since it changes only the points, the weights and (VCI) the test
-// gradients, not the types of the model or the solver.
-template <class K, class C, class G>
-discrete_model build_model_with_rule(std::string_view rule, particle_set<2> particles, background_mesh mesh,
-                                     double max_condition) {
-  std::optional<discrete_model> model;
-  hana::for_each(quadratures, [&](auto t) {
-    using Q = typename decltype(t)::type;
-    if (!model && rule == Q::name)
-      model.emplace(build_discrete_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition));
-  });
-  if (!model) fail("no quadrature rule '{}'; the rules are {}", rule, fmt::join(policy_names(quadratures), ", "));
-  return std::move(*model);
-}
-
-template <class Case, class K, class C, class E>
+template <class Case, class E>
 run_outcome run_with(const run_request& r, const typename Case::parameters& p, const std::optional<restart_point>& restart) {
   using G = typename Case::geometry_type;
   using M = typename Case::material_type;
@@ -59,32 +43,29 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   options.max_steps = r.max_steps;
   const std::function<Solver()> make = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
-    discrete_model model = build_model_with_rule<K, C, G>(r.quadrature, std::move(pr.particles), std::move(pr.mesh),
-                                                          options.max_moment_condition);
+    discrete_model model = build_model<G>(r.kernel, r.correction, r.quadrature, std::move(pr.particles),
+                                          std::move(pr.mesh), options.max_moment_condition);
     return Solver(std::move(model), std::move(pr), options);
   };
-  // config<...>::name()'s form, with the rule named at run time.
-  const std::string configuration = fmt::format("{}-{}-{}-{}-{}-{}", K::name, C::name, r.quadrature, G::name,
-                                                M::name, Ct::name);
-  return simulate<Case, Solver>(r, p, {K::name, C::name, r.quadrature, G::name, E::name, configuration}, make,
-                                restart);
+  // config<...>::name()'s form, with kernel, correction and rule named at run time.
+  const std::string configuration = fmt::format("{}-{}-{}-{}-{}-{}", r.kernel, r.correction, r.quadrature,
+                                                G::name, M::name, Ct::name);
+  return simulate<Case, Solver>(r, p, {r.kernel, r.correction, r.quadrature, G::name, E::name, configuration},
+                                make, restart);
 }
 
 template <class Case>
 using run_function = run_outcome (*)(const run_request&, const typename Case::parameters&,
                                      const std::optional<restart_point>&);
 
-// "cubic-linear-paper" (kernel-correction-enforcement) -> the run function of that
-// combination; the quadrature rule is chosen inside, at run time.
+// Contact enforcement name -> the run function with that enforcement (the solver's type);
+// kernel, correction and quadrature rule are chosen inside, at run time (model_builder.hpp).
 template <class Case>
 std::map<std::string, run_function<Case>> dispatch_table() {
   std::map<std::string, run_function<Case>> table;
-  auto combos = hana::cartesian_product(hana::make_tuple(kernels, corrections, enforcements));
-  hana::for_each(combos, [&](auto combo) {
-    using K = typename decltype(+combo[hana::size_c<0>])::type;
-    using C = typename decltype(+combo[hana::size_c<1>])::type;
-    using E = typename decltype(+combo[hana::size_c<2>])::type;
-    table[fmt::format("{}-{}-{}", K::name, C::name, E::name)] = &run_with<Case, K, C, E>;
+  hana::for_each(enforcements, [&](auto t) {
+    using E = typename decltype(t)::type;
+    table[std::string(E::name)] = &run_with<Case, E>;
   });
   return table;
 }

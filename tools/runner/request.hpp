@@ -34,8 +34,9 @@ struct run_request {
   std::string restart;                        // checkpoint file or run folder to continue
   std::vector<std::string> given;             // the options given on the command line ("--kernel", ...)
 
-  // The key of the dispatch table: "kernel-correction-contact" (the rule is chosen at run time).
-  std::string method_key() const { return kernel + "-" + correction + "-" + contact; }
+  // The key of the dispatch table: the contact enforcement (kernel, correction and rule are
+  // chosen at run time).
+  const std::string& method_key() const { return contact; }
   std::string output_directory() const { return out_dir.empty() ? "results/" + case_name + "-" + quadrature : out_dir; }
 };
 

@@ -96,3 +96,8 @@ shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
 }
 
 }  // namespace rkpm
+
+// A program that compiles the shipped kernels' and corrections' tables once (see the header).
+#ifdef RKPM_EXTERN_SHAPE_TABLES
+#include <rkpm/discretization/shape_table_instances.hpp>
+#endif
