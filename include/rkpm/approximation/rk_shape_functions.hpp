@@ -36,76 +36,15 @@ class rk_shape_functions {
 
   // Values N (#neighbors) and gradients grad (#neighbors, each a Dim-vector) at x for the
   // given neighbors of x. Throws rkpm::error if the moment matrix cannot be inverted reliably.
-  void evaluate(const vec<Dim>& x, const particle_set<Dim>& particles,
-                const std::vector<index_t>& neighbors, std::vector<double>& N,
-                std::vector<vec<Dim>>& grad) const {
-    const std::size_t n = neighbors.size();
-    N.resize(n);
-    grad.resize(n);
-    if (n == 0)
-      fail("RK shape functions at point ({}): no particle support covers it; "
-           "the point lies outside the particle cloud or the supports are too small",
-           format_point(x));
-
-    vec<Dim> scale = vec<Dim>::Zero();
-    for (index_t I : neighbors) scale += particles.support[I];
-    scale /= static_cast<double>(n);
-
-    moment_matrix M = moment_matrix::Zero();
-    moment_matrix dM[Dim];
-    for (int k = 0; k < Dim; ++k) dM[k].setZero();
-    basis_vector h;
-    basis_gradient dh;
-    for (index_t I : neighbors) {
-      const vec<Dim> dx = x - particles.position[I];
-      const auto w = kernel::window<K, Dim>(dx, particles.support[I]);
-      const double phi = w.value * particles.volume[I];
-      C::template evaluate<Dim>(vec<Dim>(dx.cwiseQuotient(scale)), h, dh);
-      const moment_matrix hh = h * h.transpose();
-      M += hh * phi;
-      for (int k = 0; k < Dim; ++k) {
-        const basis_vector dhk = dh.col(k) / scale[k];
-        dM[k] += (dhk * h.transpose() + h * dhk.transpose()) * phi +
-                 hh * (w.gradient[k] * particles.volume[I]);
-      }
-    }
-
-    check_conditioning(x, M, n);
-    const Eigen::LDLT<moment_matrix> solver(M);
-    basis_vector h0 = basis_vector::Zero();
-    h0[0] = 1.0;
-    const basis_vector b = solver.solve(h0);  // b = M^-1 H(0)
-    basis_vector db[Dim];
-    for (int k = 0; k < Dim; ++k) db[k] = -solver.solve(basis_vector(dM[k] * b));
-
-    for (std::size_t j = 0; j < n; ++j) {
-      const index_t I = neighbors[j];
-      const vec<Dim> dx = x - particles.position[I];
-      const auto w = kernel::window<K, Dim>(dx, particles.support[I]);
-      C::template evaluate<Dim>(vec<Dim>(dx.cwiseQuotient(scale)), h, dh);
-      const double bh = b.dot(h);
-      N[j] = bh * w.value * particles.volume[I];
-      for (int k = 0; k < Dim; ++k) {
-        const double dbh = db[k].dot(h) + b.dot(dh.col(k)) / scale[k];
-        grad[j][k] = (dbh * w.value + bh * w.gradient[k]) * particles.volume[I];
-      }
-    }
-  }
+  // (Defined below the class, not inline, so that a program can compile it once: see
+  // discretization/shape_table_instances.hpp.)
+  void evaluate(const vec<Dim>& x, const particle_set<Dim>& particles, const std::vector<index_t>& neighbors,
+                std::vector<double>& N, std::vector<vec<Dim>>& grad) const;
 
   double max_condition() const { return max_condition_; }
 
  private:
-  void check_conditioning(const vec<Dim>& x, const moment_matrix& M, std::size_t n) const {
-    const Eigen::SelfAdjointEigenSolver<moment_matrix> eig(M, Eigen::EigenvaluesOnly);
-    const double lo = eig.eigenvalues().minCoeff();
-    const double hi = eig.eigenvalues().maxCoeff();
-    const double cond = lo > 0.0 ? hi / lo : std::numeric_limits<double>::infinity();
-    if (!(cond <= max_condition_))
-      fail("RK moment matrix at point ({}) is singular or badly conditioned: {} neighbors, "
-           "condition estimate {:.3g} (limit {:.1g}); the {} basis needs at least {} neighbors "
-           "spread in every direction: enlarge the support factor or refine the particles",
-           format_point(x), n, cond, max_condition_, C::name, basis_size);
-  }
+  void check_conditioning(const vec<Dim>& x, const moment_matrix& M, std::size_t n) const;
   static std::string format_point(const vec<Dim>& x) {
     std::string s;
     for (int k = 0; k < Dim; ++k) s += fmt::format("{}{:.6g}", k ? ", " : "", x[k]);
@@ -114,5 +53,76 @@ class rk_shape_functions {
 
   double max_condition_ = default_max_moment_condition;
 };
+
+template <Kernel K, Correction C, int Dim>
+void rk_shape_functions<K, C, Dim>::evaluate(const vec<Dim>& x, const particle_set<Dim>& particles,
+                                             const std::vector<index_t>& neighbors, std::vector<double>& N,
+                                             std::vector<vec<Dim>>& grad) const {
+  const std::size_t n = neighbors.size();
+  N.resize(n);
+  grad.resize(n);
+  if (n == 0)
+    fail("RK shape functions at point ({}): no particle support covers it; "
+         "the point lies outside the particle cloud or the supports are too small",
+         format_point(x));
+
+  vec<Dim> scale = vec<Dim>::Zero();
+  for (index_t I : neighbors) scale += particles.support[I];
+  scale /= static_cast<double>(n);
+
+  moment_matrix M = moment_matrix::Zero();
+  moment_matrix dM[Dim];
+  for (int k = 0; k < Dim; ++k) dM[k].setZero();
+  basis_vector h;
+  basis_gradient dh;
+  for (index_t I : neighbors) {
+    const vec<Dim> dx = x - particles.position[I];
+    const auto w = kernel::window<K, Dim>(dx, particles.support[I]);
+    const double phi = w.value * particles.volume[I];
+    C::template evaluate<Dim>(vec<Dim>(dx.cwiseQuotient(scale)), h, dh);
+    const moment_matrix hh = h * h.transpose();
+    M += hh * phi;
+    for (int k = 0; k < Dim; ++k) {
+      const basis_vector dhk = dh.col(k) / scale[k];
+      dM[k] += (dhk * h.transpose() + h * dhk.transpose()) * phi +
+               hh * (w.gradient[k] * particles.volume[I]);
+    }
+  }
+
+  check_conditioning(x, M, n);
+  const Eigen::LDLT<moment_matrix> solver(M);
+  basis_vector h0 = basis_vector::Zero();
+  h0[0] = 1.0;
+  const basis_vector b = solver.solve(h0);  // b = M^-1 H(0)
+  basis_vector db[Dim];
+  for (int k = 0; k < Dim; ++k) db[k] = -solver.solve(basis_vector(dM[k] * b));
+
+  for (std::size_t j = 0; j < n; ++j) {
+    const index_t I = neighbors[j];
+    const vec<Dim> dx = x - particles.position[I];
+    const auto w = kernel::window<K, Dim>(dx, particles.support[I]);
+    C::template evaluate<Dim>(vec<Dim>(dx.cwiseQuotient(scale)), h, dh);
+    const double bh = b.dot(h);
+    N[j] = bh * w.value * particles.volume[I];
+    for (int k = 0; k < Dim; ++k) {
+      const double dbh = db[k].dot(h) + b.dot(dh.col(k)) / scale[k];
+      grad[j][k] = (dbh * w.value + bh * w.gradient[k]) * particles.volume[I];
+    }
+  }
+}
+
+template <Kernel K, Correction C, int Dim>
+void rk_shape_functions<K, C, Dim>::check_conditioning(const vec<Dim>& x, const moment_matrix& M,
+                                                       std::size_t n) const {
+  const Eigen::SelfAdjointEigenSolver<moment_matrix> eig(M, Eigen::EigenvaluesOnly);
+  const double lo = eig.eigenvalues().minCoeff();
+  const double hi = eig.eigenvalues().maxCoeff();
+  const double cond = lo > 0.0 ? hi / lo : std::numeric_limits<double>::infinity();
+  if (!(cond <= max_condition_))
+    fail("RK moment matrix at point ({}) is singular or badly conditioned: {} neighbors, "
+         "condition estimate {:.3g} (limit {:.1g}); the {} basis needs at least {} neighbors "
+         "spread in every direction: enlarge the support factor or refine the particles",
+         format_point(x), n, cond, max_condition_, C::name, basis_size);
+}
 
 }  // namespace rkpm

@@ -14,12 +14,16 @@
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/kernel/quartic_spline.hpp>
 
+// With the tables, the shape functions' evaluate() (the moment matrix and its solves), which
+// the tests and tutorials also call directly.
 #if defined(RKPM_INSTANTIATE_SHAPE_TABLES)
 #define RKPM_SHAPE_TABLE_INSTANCE(K, C) \
+  template class rk_shape_functions<K, C, 2>; \
   template shape_table<2> build_shape_table<K, C, 2>(const neighbor_search<2>&, const std::vector<vec<2>>&, \
                                                       const rk_shape_functions<K, C, 2>&);
 #elif defined(RKPM_EXTERN_SHAPE_TABLES)
 #define RKPM_SHAPE_TABLE_INSTANCE(K, C) \
+  extern template class rk_shape_functions<K, C, 2>; \
   extern template shape_table<2> build_shape_table<K, C, 2>(const neighbor_search<2>&, \
                                                              const std::vector<vec<2>>&, \
                                                              const rk_shape_functions<K, C, 2>&);
