@@ -10,7 +10,10 @@ if(RKPM_PROGRAM_PCH)
   target_precompile_headers(rkpm_program_pch PRIVATE
     <algorithm> <cmath> <filesystem> <functional> <string> <vector>
     <Eigen/Dense> <fmt/format.h> <boost/hana.hpp>
-    <rkpm/rkpm.hpp> <rkpm/io/gnuplot.hpp> <rkpm/io/csv.hpp> <rkpm/io/vtk.hpp>)
+    <rkpm/rkpm.hpp> <rkpm/io/gnuplot.hpp> <rkpm/io/csv.hpp> <rkpm/io/vtk.hpp>
+    # nlohmann-json: every runner file includes it (summary.json, checkpoints' records, case
+    # files); parsed once here instead of in each of them.
+    <nlohmann/json.hpp>)
 endif()
 
 function(rkpm_use_program_pch target)
