@@ -16,6 +16,7 @@
 #include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/quadrature/shaped_rules.hpp>
 #include <rkpm/quadrature/vci.hpp>
+#include <rkpm/quadrature/scni.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>

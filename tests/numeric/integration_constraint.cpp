@@ -1,5 +1,10 @@
 // The integration constraint (docs/method.md (19a)) and the linear patch test, for the cell
-// rules and their VCI corrections (docs/method.md sections 3.4-3.5).
+// rules, their VCI corrections and stabilized conforming nodal integration (docs/method.md
+// sections 3.4-3.6). For scni (with and without its stabilization) b_I is integrated on the
+// body's boundary split at the edge midpoints, with the Gauss points of its smoothing cells
+// (make_split_boundary_points): the constraint is a discrete divergence theorem of that rule;
+// the difference from the five-point rule on whole edges (the quadrature error of b_I itself)
+// is printed.
 // Theory: for every particle I the discrete divergence theorem
 //   sum_q [g_I(X_q) + e_r N_I(X_q) / R_q] w_q = b_I = sum_b N_I(X_b) n_b w_b
 // holds to round-off when g_I are the VCI test gradients (q2+vci, q4+vci), whatever the
@@ -64,11 +69,24 @@ struct measured {
   double median = 0.0;  // of |r_I| / scale_I over the particles
 };
 
+// b_I as the rule Q integrates it: five Gauss points per edge (VCI), or the smoothing cells'
+// points on the half edges (scni).
 template <class Q, class G>
-measured constraint_violation(layout l) {
+std::vector<vec2> rule_boundary_integrals(const discrete_model& m) {
+  if constexpr (NodalRule<Q>) {
+    const auto bp = make_split_boundary_points<G>(m.mesh, Q::edge_points);
+    return boundary_integrals(build_shape_table<K, C, 2>(neighbor_search<2>(m.particles), bp.position), bp,
+                              m.particle_count());
+  } else {
+    return boundary_integrals<K, C, G>(m.particles, m.mesh, 5);
+  }
+}
+
+template <class Q, class G>
+measured constraint_violation(layout l, bool five_point_edges = false) {
   auto b = make_body<G>(l);
   const discrete_model m = build_discrete_model<K, C, Q, G>(b.particles, b.mesh);
-  const auto bi = boundary_integrals<K, C, G>(m.particles, m.mesh, 5);
+  const auto bi = five_point_edges ? boundary_integrals<K, C, G>(m.particles, m.mesh, 5) : rule_boundary_integrals<Q, G>(m);
   const auto c = measure_integration_constraint(m.points, m.at_points, m.test_gradients(), bi, G::is_axisymmetric);
   std::vector<double> e;
   for (std::size_t I = 0; I < c.residual.size(); ++I) e.push_back(c.residual[I].cwiseAbs().maxCoeff() / c.scale[I]);
@@ -85,6 +103,13 @@ void check_constraint(layout l) {
   const auto tri = constraint_violation<quadrature::q2_tri, G>(l);
   const auto q2v = constraint_violation<quadrature::q2_vci, G>(l);
   const auto q4v = constraint_violation<quadrature::q4_vci, G>(l);
+  const auto scni = constraint_violation<quadrature::scni<>, G>(l);
+  const auto plain = constraint_violation<quadrature::scni_plain, G>(l);
+  const auto scni5 = constraint_violation<quadrature::scni<>, G>(l, true);
+  MESSAGE(what << ": scni " << scni.worst << ", scni_plain " << plain.worst
+               << "; scni against b_I by 5 points per whole edge " << scni5.worst << " (median " << scni5.median << ")");
+  CHECK(scni.worst < 1e-12);
+  CHECK(plain.worst < 1e-12);
   MESSAGE(what << ": integration-constraint violation max_I |r_I| / scale_I (median): q2 " << q2.worst << " ("
                << q2.median << "), q4 " << q4.worst << " (" << q4.median << "), q2_split " << split.worst << " ("
                << split.median << "), q2_tri " << tri.worst << " (" << tri.median << "), q2+vci " << q2v.worst
@@ -133,7 +158,7 @@ TEST_CASE("boundary points: closed boundary, outward normals, the axis left out"
   }
 }
 
-TEST_CASE("integration constraint: exact with VCI, violated by every cell rule") {
+TEST_CASE("integration constraint: exact with VCI and scni, violated by every cell rule") {
   for (layout l : {layout::grid, layout::jittered, layout::distorted_cells}) {
     check_constraint<geometry::plane_strain>(l);
     check_constraint<geometry::axisymmetric>(l);
@@ -177,7 +202,7 @@ patch_result patch_test() {
   const double Pscale = P.cwiseAbs().maxCoeff();
   patch_result r;
   if (G::is_axisymmetric) r.hoop_mismatch = std::abs(P(0, 0) - tau(2, 2) / F(2, 2)) / Pscale;
-  const auto bi = boundary_integrals<K, C, G>(m.particles, m.mesh, 5);
+  const auto bi = rule_boundary_integrals<Q, G>(m);
   const auto scale = measure_integration_constraint(m.points, m.at_points, m.at_points.grad, bi, G::is_axisymmetric).scale;
   for (index_t I = 0; I < m.particle_count(); ++I) {
     const double e = (s.internal_force()[I] - P * bi[I]).cwiseAbs().maxCoeff() / (Pscale * scale[I]);
@@ -196,6 +221,13 @@ void check_patch() {
   const auto q4v = patch_test<quadrature::q4_vci, G>();
   // q2 on the same particles, measured against the same boundary resultant.
   const auto q2 = patch_test<quadrature::q2, G>();
+  const auto sc = patch_test<quadrature::scni<>, G>();
+  MESSAGE(G::name << ", jittered particles: patch test, scni " << sc.worst << " (interior " << sc.interior << ", "
+                  << sc.interior_count << " particles)");
+  CHECK(sc.interior_count > 0);
+  CHECK(sc.worst < 1e-12);
+  CHECK(sc.interior < 1e-12);
+  if (G::is_axisymmetric) CHECK(sc.hoop_mismatch < 1e-13);
   MESSAGE(G::name << ", jittered particles: patch test max_I |f_I - P b_I| / (|P| scale_I): q2+vci " << q2v.worst
                   << " (interior " << q2v.interior << ", " << q2v.interior_count << " particles), q4+vci " << q4v.worst
                   << " (interior " << q4v.interior << "), q2 " << q2.worst << " (interior " << q2.interior << ")");
@@ -211,7 +243,7 @@ void check_patch() {
 
 }  // namespace
 
-TEST_CASE("linear patch test through the solver: f_int = P b_I with VCI") {
+TEST_CASE("linear patch test through the solver: f_int = P b_I with VCI and scni") {
   test::run_serially();
   check_patch<geometry::plane_strain>();
   check_patch<geometry::axisymmetric>();

@@ -1,5 +1,6 @@
 // The Quadrature concept (include/rkpm/concepts/quadrature.hpp) at compile time: the shipped
-// reference rules, shaped rules and VCI-corrected rules are accepted as what they are, and
+// reference rules, shaped rules, VCI-corrected rules and nodal rules (scni) are accepted as
+// what they are, and
 // types missing what the builder calls, or claiming two kinds at once, are rejected. The run-time
 // case checks the composed names and that config<> and make_quadrature_points take every kind.
 
@@ -15,6 +16,7 @@
 #include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/quadrature/shaped_rules.hpp>
 #include <rkpm/quadrature/vci.hpp>
+#include <rkpm/quadrature/scni.hpp>
 #include <rkpm/solver/config.hpp>
 #include <rkpm/solver/policies.hpp>
 
@@ -65,6 +67,32 @@ struct corrected_switched_off {
   static constexpr bool corrects_test_gradients = false;
 };
 
+struct nodal_switched_off {  // says it does not smooth: nothing would build its gradients
+  static constexpr std::string_view name = "nodal-";
+  static constexpr bool smooths_gradients = false;
+  static constexpr double stabilization = 0.5;
+  static constexpr int edge_points = 3;
+};
+struct nodal_without_stabilization {
+  static constexpr std::string_view name = "nodal?";
+  static constexpr bool smooths_gradients = true;
+  static constexpr int edge_points = 3;
+};
+struct nodal_out_of_range {  // Beta = 2 would amplify the sub-cell differences
+  static constexpr std::string_view name = "nodal2";
+  static constexpr bool smooths_gradients = true;
+  static constexpr double stabilization = 2.0;
+  static constexpr int edge_points = 3;
+};
+struct nodal_and_cell {  // a nodal rule with points per cell as well: ambiguous
+  static constexpr std::string_view name = "nodal+q1";
+  static constexpr int points_per_cell = 1;
+  static constexpr std::array<std::array<double, 3>, 1> rule{{{0.0, 0.0, 4.0}}};
+  static constexpr bool smooths_gradients = true;
+  static constexpr double stabilization = 0.5;
+  static constexpr int edge_points = 3;
+};
+
 }  // namespace
 
 // Shipped rules, each of exactly one kind.
@@ -79,6 +107,9 @@ static_assert(Quadrature<quadrature::q2> && Quadrature<quadrature::q2_split> && 
 static_assert(Quadrature<quadrature::vci<quadrature::q2_split, 3>>);
 static_assert(std::is_same_v<cell_rule_of_t<quadrature::q2_vci>, quadrature::q2>);
 static_assert(std::is_same_v<cell_rule_of_t<quadrature::q2_tri>, quadrature::q2_tri>);
+static_assert(NodalRule<quadrature::scni<>> && NodalRule<quadrature::scni_plain> && Quadrature<quadrature::scni<>>);
+static_assert(!CellRule<quadrature::scni<>> && !CorrectedRule<quadrature::scni<>>);
+static_assert(!NodalRule<quadrature::q2> && !NodalRule<quadrature::q2_vci> && !NodalRule<quadrature::q2_tri>);
 
 // Rejected: what the builder calls is missing, inconsistent or ambiguous.
 static_assert(!Quadrature<no_name>);
@@ -90,14 +121,23 @@ static_assert(!Quadrature<corrected_without_rule>);
 static_assert(!Quadrature<corrected_count_mismatch>);
 static_assert(!Quadrature<corrected_switched_off>);
 static_assert(!Quadrature<int>);
+static_assert(!Quadrature<nodal_switched_off>);
+static_assert(!Quadrature<nodal_without_stabilization>);
+static_assert(!Quadrature<nodal_out_of_range>);
+static_assert(ReferenceCellRule<nodal_and_cell> && !NodalRule<nodal_and_cell>);
+// make_quadrature_points places cell rules only; a nodal rule's points come from its cells.
+template <class Q>
+concept cell_points_for = requires(const background_mesh& m) { make_quadrature_points<Q, geometry::plane_strain>(m); };
+static_assert(cell_points_for<quadrature::q4> && !cell_points_for<quadrature::scni<>>);
 // A corrected rule cannot wrap something that is not a cell rule (vci<Rule> is constrained).
 template <class R>
 concept wraps = requires { typename quadrature::vci<R>; };
 static_assert(!wraps<no_name> && !wraps<both_kinds> && wraps<quadrature::q9>);
 
 // The extended list stays apart from the runner's list.
-static_assert(boost::hana::length(policies::extended_quadratures) == boost::hana::size_c<6>);
+static_assert(boost::hana::length(policies::extended_quadratures) == boost::hana::size_c<7>);
 static_assert(!boost::hana::contains(policies::quadratures, boost::hana::type_c<quadrature::q2_vci>));
+static_assert(boost::hana::contains(policies::extended_quadratures, boost::hana::type_c<quadrature::scni<>>));
 
 TEST_CASE("names of the rules beyond the paper, and config<> takes them") {
   CHECK(quadrature::q2_split::name == "q2_split");
@@ -106,6 +146,9 @@ TEST_CASE("names of the rules beyond the paper, and config<> takes them") {
   CHECK(quadrature::q4_vci::name == "q4+vci");
   CHECK(quadrature::vci<quadrature::q2_split>::name == "q2_split+vci");
   CHECK(quadrature::vci<quadrature::q2_tri>::name == "q2_tri+vci");
+  CHECK(quadrature::scni<>::name == "scni");
+  CHECK(quadrature::scni_plain::name == "scni_plain");
+  CHECK(config<>::with_quadrature<quadrature::scni<>>::name() == "cubic-linear-scni-plane_strain-j2+linear-none");
   CHECK(config<>::with_quadrature<quadrature::q2_vci>::name() == "cubic-linear-q2+vci-plane_strain-j2+linear-none");
   const background_mesh m = make_grid_mesh(vec2(0, 0), vec2(2, 1), Eigen::Vector2i(3, 2));
   CHECK(make_quadrature_points<quadrature::q2_vci, geometry::plane_strain>(m).size() == 4);

@@ -11,8 +11,11 @@
 //   CorrectedRule      a cell rule (`cell_rule`) whose test-function gradients are corrected
 //                      once the shape functions are known (`corrects_test_gradients`): the
 //                      points are the cell rule's; vci<Rule>
-// A type that would be both a reference and a shaped rule is rejected: the builder would not
-// know which points to take.
+//   NodalRule          no rule per cell: one smoothing cell per mesh node, on which the builder
+//                      smooths the gradients (`smooths_gradients`), with a `stabilization` in
+//                      [0, 1] and `edge_points` per boundary segment; scni<Beta>
+// A type that would be both a reference and a shaped rule, or a nodal and a cell rule, is
+// rejected: the builder would not know which points to take.
 
 #include <array>
 #include <concepts>
@@ -59,9 +62,19 @@ concept CorrectedRule = detail::named_rule<Q> && requires {
                         (Q::points_per_cell == Q::cell_rule::points_per_cell);
 
 template <class Q>
-concept Quadrature = CellRule<Q> || CorrectedRule<Q>;
+concept NodalRule = requires {
+  { Q::name } -> std::convertible_to<std::string_view>;
+  { Q::smooths_gradients } -> std::convertible_to<bool>;
+  { Q::stabilization } -> std::convertible_to<double>;
+  { Q::edge_points } -> std::convertible_to<int>;
+} && bool(Q::smooths_gradients) && (Q::stabilization >= 0.0 && Q::stabilization <= 1.0) &&
+                    !CellRule<Q> && !CorrectedRule<Q> && !requires { Q::points_per_cell; };
 
-// The rule that places the points of Q: Q itself, or the cell rule a corrected rule wraps.
+template <class Q>
+concept Quadrature = CellRule<Q> || CorrectedRule<Q> || NodalRule<Q>;
+
+// The rule that places the points of Q: Q itself, or the cell rule a corrected rule wraps
+// (a nodal rule places its points itself: discretization/smoothing_cells.hpp).
 template <Quadrature Q>
 struct cell_rule_of {
   using type = Q;

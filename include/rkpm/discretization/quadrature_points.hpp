@@ -6,7 +6,8 @@
 //             w_q = (area of the point's part) * G::weight_factor(X_q) for a shaped rule
 //             (2 pi R in axisymmetric)
 //   cell      #points the cell each point belongs to
-// A corrected rule (vci<Rule>) takes the points of the rule it wraps.
+// A corrected rule (vci<Rule>) takes the points of the rule it wraps; a nodal rule (scni) has
+// its own builder (discretization/smoothing_cells.hpp).
 
 #include <array>
 #include <vector>
@@ -25,6 +26,7 @@ struct quadrature_points {
 };
 
 template <Quadrature Q, Geometry G>
+  requires(!NodalRule<Q>)
 quadrature_points make_quadrature_points(const background_mesh& mesh) {
   using R = cell_rule_of_t<Q>;
   mesh.validate();

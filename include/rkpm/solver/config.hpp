@@ -17,6 +17,7 @@
 #include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/quadrature/shaped_rules.hpp>
 #include <rkpm/quadrature/vci.hpp>
+#include <rkpm/quadrature/scni.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>

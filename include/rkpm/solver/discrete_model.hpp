@@ -12,6 +12,10 @@
 //                        for a rule with variationally consistent integration (vci<Rule>,
 //                        docs/method.md section 3.5); empty: the test gradients are the trial
 //                        gradients. The deformation gradient always uses at_points.grad.
+// For a nodal rule (scni, docs/method.md section 3.6) the points are those of the smoothing
+// cells and at_points.grad holds the smoothed gradients, trial and test alike (test_gradient
+// stays empty); at_points.N stays the shape functions at the points, for the hoop term, the
+// lumped volumes and the projections.
 
 #include <cmath>
 #include <vector>
@@ -22,6 +26,7 @@
 #include <rkpm/discretization/integration_constraint.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
 #include <rkpm/discretization/shape_table.hpp>
+#include <rkpm/discretization/smoothing_cells.hpp>
 
 namespace rkpm {
 
@@ -88,18 +93,38 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
   return m;
 }
 
+// The model of a nodal rule (scni<Beta, EdgePoints>, docs/method.md section 3.6) with the
+// stabilization beta given at run time (tests sweep it): smoothing cells, their points (one per
+// node for beta = 0, one per part otherwise) and the smoothed gradients.
+template <Kernel K, Correction C, Geometry G>
+discrete_model build_nodal_model(particle_set<2> particles, background_mesh mesh, double beta, int edge_points,
+                                 double max_condition = default_max_moment_condition) {
+  if (!(beta >= 0.0 && beta <= 1.0)) fail("nodal integration: the stabilization {} must lie in [0, 1]", beta);
+  const smoothing_cells cells = make_smoothing_cells(mesh);
+  const nodal_points np = make_nodal_points<G>(cells, beta > 0.0);
+  discrete_model m = build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), np.points, max_condition);
+  smooth_point_gradients<K, C, G>(m.particles, cells, np, beta, edge_points, m.at_points, max_condition);
+  m.particles_of_points = transpose(m.at_points, m.particle_count());
+  return m;
+}
+
 template <Kernel K, Correction C, Quadrature Q, Geometry G>
 discrete_model build_discrete_model(particle_set<2> particles, background_mesh mesh,
                                     double max_condition = default_max_moment_condition) {
   check_body(particles, mesh);
-  quadrature_points points = make_quadrature_points<Q, G>(mesh);
-  discrete_model m =
-      build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
-  if constexpr (CorrectedRule<Q>)
-    m.test_gradient = vci_test_gradients(
-        m.points, m.at_points, boundary_integrals<K, C, G>(m.particles, m.mesh, Q::edge_points, max_condition),
-        G::is_axisymmetric);
-  return m;
+  if constexpr (NodalRule<Q>) {
+    return build_nodal_model<K, C, G>(std::move(particles), std::move(mesh), Q::stabilization, Q::edge_points,
+                                      max_condition);
+  } else {
+    quadrature_points points = make_quadrature_points<Q, G>(mesh);
+    discrete_model m =
+        build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
+    if constexpr (CorrectedRule<Q>)
+      m.test_gradient = vci_test_gradients(
+          m.points, m.at_points, boundary_integrals<K, C, G>(m.particles, m.mesh, Q::edge_points, max_condition),
+          G::is_axisymmetric);
+    return m;
+  }
 }
 
 // Lumped masses m_I = rho0 V_I (docs/method.md section 5).
