@@ -23,6 +23,7 @@
 
 #include "case_list.hpp"
 #include "cases/parameters.hpp"
+#include "memory_estimate.hpp"
 #include "methods.hpp"
 #include "model_builder.hpp"
 #include "outcome.hpp"
@@ -43,6 +44,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   options.max_steps = r.max_steps;
   const std::function<Solver()> make = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
+    warn_if_too_large(pr.particles.size(), pr.mesh.cells(), rule_points_per_cell(r.quadrature));
     discrete_model model = build_model<G>(r.kernel, r.correction, r.quadrature, std::move(pr.particles),
                                           std::move(pr.mesh), options.max_moment_condition);
     return Solver(std::move(model), std::move(pr), options);

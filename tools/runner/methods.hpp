@@ -6,6 +6,7 @@
 // summary.json are the policies' `name`.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <boost/hana.hpp>
@@ -34,6 +35,21 @@ using paper_kernel = kernel::cubic_spline;
 using paper_correction = correction::linear;
 using paper_quadrature = quadrature::q2;
 using paper_enforcement = contact::enforcement::paper;
+
+// Quadrature points per background cell of the rule called `name`, for estimates: a cell
+// rule's count; a nodal rule (one point per particle, or a few with its stabilization) 4.
+inline int rule_points_per_cell(std::string_view name) {
+  int points = 0;
+  hana::for_each(quadratures, [&](auto t) {
+    using Q = typename decltype(t)::type;
+    if (Q::name != name) return;
+    if constexpr (requires { Q::points_per_cell; })
+      points = Q::points_per_cell;
+    else
+      points = 4;
+  });
+  return points;
+}
 
 // The `name` of each policy in a Hana list of types, in list order.
 template <class Types>

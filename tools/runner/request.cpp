@@ -60,8 +60,10 @@ void add_run_options(CLI::App* sub, run_request& r) {
   sub->add_option("--contact", r.contact, "contact enforcement")
       ->check(CLI::IsMember(policy_names(enforcements)))
       ->capture_default_str();
-  sub->add_option("--resolution", r.resolution, "K times the particles per direction (K - 1 more per gap)")
-      ->check(CLI::Range(1, 16))
+  sub->add_option("--resolution", r.resolution,
+                  "K times the particles per direction (K - 1 more per gap); a run that would need more memory "
+                  "than the machine has available is warned about before it is built")
+      ->check(CLI::Range(1, 32))
       ->capture_default_str();
   sub->add_option_function<std::string>(
          "--end-time", [&r](const std::string& t) { r.end_time = std::stod(t); },
