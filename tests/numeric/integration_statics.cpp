@@ -343,3 +343,12 @@ TEST_CASE("uniform expansion: exact with VCI under tractions; the collocated con
     CHECK(q4[k].collocation < q9[k].collocation);
   }
 }
+
+// scni (docs/method.md section 3.6) in the static problems, measured and printed only.
+TEST_CASE("scni: manufactured and Lame errors and rates (measurement)") {
+  test::run_serially();
+  manufactured_errors<quadrature::scni<>>();
+  manufactured_errors<quadrature::scni_plain>();
+  lame_errors<quadrature::scni<>>();
+  lame_errors<quadrature::scni_plain>();
+}
