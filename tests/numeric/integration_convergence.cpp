@@ -216,3 +216,11 @@ TEST_CASE("issue 10's claim: q2+vci at least as accurate as q4 at every resoluti
   for (std::size_t k = 0; k < expansion_n.size(); ++k) CHECK(m.expansion.at("q2+vci")[k] <= m.expansion.at("q4")[k]);
   for (std::size_t k = 0; k < bar_n.size(); ++k) CHECK(m.bar.at("q2+vci")[k] <= m.bar.at("q4")[k]);
 }
+
+// scni (docs/method.md section 3.6): its errors and rates beside the table above, measured and
+// printed only; no claim is made of them here.
+TEST_CASE("scni: expansion and bar errors and rates (measurement)") {
+  test::run_serially();
+  expansion_errors<quadrature::scni<>>();
+  bar_errors<quadrature::scni<>>();
+}
