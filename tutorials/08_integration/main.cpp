@@ -25,6 +25,9 @@
 //   q2_split  the cell halved across its longer side, one point at each half's centroid
 //   q2_tri    the cell cut along its shorter diagonal, one point at each triangle's centroid
 //   q2+vci, q4+vci   q2 and q4 with VCI-corrected test gradients
+//   scni      stabilized conforming nodal integration (docs/method.md section 3.6): no rule
+//             per cell, but one smoothing cell per particle, on which the gradients are
+//             smoothed by boundary integrals, with the modified-SCNI stabilization
 //
 // The program has four parts:
 //   1. the per-particle violation of the constraint, for every rule, on a 9 x 9 patch with
@@ -37,7 +40,9 @@
 // discrete models (one small instantiation per rule and geometry: the rule only changes the
 // tables) and use the solver's own force loop through apply_elastic_stiffness.
 //
-// Usage: tutorial_08_integration [output directory]   (default results/08_integration)
+// Usage: tutorial_08_integration [output directory] [--taylor-bar]
+//        (default results/08_integration; --taylor-bar runs part 4's Taylor bar to the end with
+//        every rule, about two minutes more)
 
 #include <algorithm>
 #include <chrono>
@@ -70,7 +75,9 @@
 #include <rkpm/io/gnuplot.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/material/elastic_constants.hpp>
+#include <rkpm/discretization/smoothing_cells.hpp>
 #include <rkpm/quadrature/cell_rules.hpp>
+#include <rkpm/quadrature/scni.hpp>
 #include <rkpm/quadrature/shaped_rules.hpp>
 #include <rkpm/quadrature/vci.hpp>
 #include <rkpm/solver/discrete_model.hpp>
@@ -96,12 +103,7 @@ template <class... Q>
 struct rule_list {};
 
 using rules = rule_list<quadrature::q2, quadrature::q4, quadrature::q9, quadrature::q2_split, quadrature::q2_tri,
-                        quadrature::q2_vci, quadrature::q4_vci
-                        // SCNI (issue 10, docs/method.md section 3.6): not in the library when this
-                        // tutorial was written. When include/rkpm/quadrature/scni.hpp lands, add
-                        // its policy here (and its header above); every part below then shows it
-                        // beside the cell rules, and README.md's tables get one more row.
-                        >;
+                        quadrature::q2_vci, quadrature::q4_vci, quadrature::scni<>>;
 
 template <class... Q, class F>
 void for_each_rule(rule_list<Q...>, F&& f) {
@@ -170,9 +172,25 @@ void write_cells(const fs::path& path, const background_mesh& mesh) {
 // relative violation, 1e-16 meaning "exact to round-off". The gradients measured are those the
 // internal force is scattered with: the trial gradients grad N_I for a plain rule, the
 // corrected ones for a VCI rule (discrete_model::test_gradients()).
+//
+// Each rule is held to b_I as it integrates the boundary itself: 5 Gauss points per boundary
+// edge for the cell rules (the rule VCI uses), and for scni the points its smoothing cells place
+// on the boundary (3 per half edge, make_split_boundary_points). Both are approximations of
+// the exact b_I (N_I is rational); part 1 also prints how far scni's b_I is from the 5-point one.
 template <class Q, class G>
-std::vector<double> constraint_violation(const body& b, const std::vector<vec2>& boundary_integral) {
-  const discrete_model m = make_model<Q, G>(b.particles, b.mesh);
+std::vector<vec2> rule_boundary_integrals(const discrete_model& m) {
+  if constexpr (NodalRule<Q>) {
+    const boundary_points bp = make_split_boundary_points<G>(m.mesh, Q::edge_points);
+    return boundary_integrals(
+        build_shape_table<kernel_type, correction_type, 2>(neighbor_search<2>(m.particles), bp.position), bp,
+        m.particle_count());
+  } else {
+    return boundary_integrals<kernel_type, correction_type, G>(m.particles, m.mesh, 5);
+  }
+}
+
+template <class G>
+std::vector<double> relative_violation(const discrete_model& m, const std::vector<vec2>& boundary_integral) {
   const integration_constraint c =
       measure_integration_constraint(m.points, m.at_points, m.test_gradients(), boundary_integral, G::is_axisymmetric);
   std::vector<double> e(c.residual.size());
@@ -187,10 +205,17 @@ double median(std::vector<double> v) {
 
 template <class G>
 void constraint_of_geometry(const fs::path& out, const body& b, const std::string& tag) {
-  const std::vector<vec2> bI = boundary_integrals<kernel_type, correction_type, G>(b.particles, b.mesh, 5);
+  const std::vector<vec2> five_point = boundary_integrals<kernel_type, correction_type, G>(b.particles, b.mesh, 5);
   std::map<std::string, std::vector<double>> violation;
+  std::string other_boundary_rule;
   for_each_rule(rules{}, [&]<class Q>(std::type_identity<Q>) {
-    violation[std::string(Q::name)] = constraint_violation<Q, G>(b, bI);
+    const discrete_model m = make_model<Q, G>(b.particles, b.mesh);
+    violation[std::string(Q::name)] = relative_violation<G>(m, rule_boundary_integrals<Q, G>(m));
+    if constexpr (NodalRule<Q>) {
+      const auto e = relative_violation<G>(m, five_point);
+      other_boundary_rule += fmt::format("  {} against b_I of 5 points per whole edge: worst {:.2e}, median {:.2e}\n",
+                                         Q::name, *std::max_element(e.begin(), e.end()), median(e));
+    }
   });
 
   const auto names = rule_names();
@@ -210,6 +235,7 @@ void constraint_of_geometry(const fs::path& out, const body& b, const std::strin
   for (const auto& n : names)
     std::cout << fmt::format("  {:<10} {:>12.2e} {:>12.2e}\n", n, *std::max_element(violation[n].begin(), violation[n].end()),
                              median(violation[n]));
+  std::cout << other_boundary_rule;
 
   // One panel per rule: the cells, and each particle coloured by log10 of its violation
   // (a violation below 1e-17 is drawn at -17). The colour scale is the same in every panel.
@@ -268,8 +294,9 @@ struct patch_result {
 const material::elastic_constants steel{200e9, 0.3, 7800.0};
 
 template <class Q, class G>
-patch_result patch_test(const body& b, const std::vector<vec2>& bI) {
+patch_result patch_test(const body& b) {
   const discrete_model m = make_model<Q, G>(b.particles, b.mesh);
+  const std::vector<vec2> bI = rule_boundary_integrals<Q, G>(m);
   mat2 A;
   if constexpr (G::is_axisymmetric) A << 0.012, 0.0, 0.0, -0.007;
   else A << 0.012, -0.004, 0.009, -0.007;
@@ -299,9 +326,8 @@ patch_result patch_test(const body& b, const std::vector<vec2>& bI) {
 
 template <class G>
 std::map<std::string, patch_result> patch_of_geometry(const body& b) {
-  const std::vector<vec2> bI = boundary_integrals<kernel_type, correction_type, G>(b.particles, b.mesh, 5);
   std::map<std::string, patch_result> r;
-  for_each_rule(rules{}, [&]<class Q>(std::type_identity<Q>) { r[std::string(Q::name)] = patch_test<Q, G>(b, bI); });
+  for_each_rule(rules{}, [&]<class Q>(std::type_identity<Q>) { r[std::string(Q::name)] = patch_test<Q, G>(b); });
   return r;
 }
 
@@ -312,7 +338,7 @@ void part2_patch_test(const fs::path& out, const body& b) {
       "\nPart 2: linear patch test on the same particles; force relative to |sigma| scale_I\n"
       "  interior: max |f_I| over the particles whose support misses the boundary ({} in plane strain, {} "
       "axisymmetric);\n  all: max |f_I - sigma b_I| over every particle\n",
-      ps.begin()->second.interior_count, ax.begin()->second.interior_count);
+      ps.at("q2").interior_count, ax.at("q2").interior_count);
   std::cout << fmt::format("  {:<10} {:>20} {:>20} {:>20} {:>20}\n", "rule", "plane strain interior", "plane strain all",
                            "axisym. interior", "axisym. all");
   // CSV holds numbers only: rule_index counts the rules in the order printed (rule_names()).
@@ -643,8 +669,9 @@ set key bottom right font ',9'
 // impact, then 200 timed steps on one thread, process CPU time. The solver type is the same for
 // every rule (solver_for<Config> depends on geometry, material and contact only), so this part
 // compiles one time loop. The set-up time (make_solver: shape tables, masses and, for VCI, the
-// boundary integrals and the corrected gradients) is measured too. The full runs, with the final
-// radius and height, come from the runner (README.md); they take a minute together.
+// boundary integrals and the corrected gradients) is measured too. With --taylor-bar each run
+// goes on to the end (80 us), for the final radius and height of every rule; the runner gives
+// the same numbers for the rules it takes (tools/rkpm paper --cases taylor_bar, README.md).
 using bar_case = cases::taylor_bar;
 using wall = contact::particle_to_segment<contact::enforcement::paper, contact::friction::frictionless>;
 template <class Q>
@@ -655,11 +682,14 @@ struct step_timing {
   index_t points = 0;
   double setup_ms = 0.0;  // CPU time of make_solver
   double cpu_ms_per_step = 0.0;
-  double dt = 0.0;  // the stable step after 300 steps (s)
+  double dt = 0.0;  // the mean step over the timed steps (s)
+  // With --taylor-bar: the whole run (80 us).
+  index_t steps = 0;
+  double run_cpu_s = 0.0, radius_mm = 0.0, height_mm = 0.0, max_plastic_strain = 0.0, balance_error = 0.0;
 };
 
 template <class Q>
-step_timing time_steps() {
+step_timing time_steps(bool full_run) {
   step_timing t{std::string(Q::name)};
   run_options options;
   options.end_time = bar_case::end_time({});
@@ -667,6 +697,7 @@ step_timing time_steps() {
   auto s = make_solver<bar_method<Q>>(bar_case::build<wall>({}, 1), options);
   t.setup_ms = 1e3 * double(std::clock() - setup_start) / CLOCKS_PER_SEC;
   t.points = s.model().point_count();
+  const std::clock_t run_start = std::clock();
   for (int k = 0; k < 100; ++k) s.step();
   const int steps = 200;
   const double t0 = s.time();
@@ -674,13 +705,25 @@ step_timing time_steps() {
   for (int k = 0; k < steps; ++k) s.step();
   t.cpu_ms_per_step = 1e3 * double(std::clock() - cpu_start) / CLOCKS_PER_SEC / steps;
   t.dt = (s.time() - t0) / steps;
+  if (full_run) {
+    // On to the end time; the case's own measures (cases/taylor_bar.hpp), as the runner reports them.
+    s.run();
+    t.run_cpu_s = double(std::clock() - run_start) / CLOCKS_PER_SEC;
+    t.steps = s.steps();
+    for (const auto& [key, value] : bar_case::measure(s, {}, {})) {
+      if (key == "radius_mm") t.radius_mm = value;
+      if (key == "height_mm") t.height_mm = value;
+      if (key == "max_equivalent_plastic_strain") t.max_plastic_strain = value;
+    }
+    t.balance_error = s.energy().balance_error();
+  }
   return t;
 }
 
-void part4_cost(const fs::path& out) {
+void part4_cost(const fs::path& out, bool full_run) {
   std::cout << "\nPart 4: Taylor bar 21 x 51, 200 steps after 100, 1 thread, CPU time (indicative)\n";
   std::vector<step_timing> timings;
-  for_each_rule(rules{}, [&]<class Q>(std::type_identity<Q>) { timings.push_back(time_steps<Q>()); });
+  for_each_rule(rules{}, [&]<class Q>(std::type_identity<Q>) { timings.push_back(time_steps<Q>(full_run)); });
   const double q2_time = timings.front().cpu_ms_per_step, q2_dt = timings.front().dt;
   std::cout << fmt::format("  {:<10} {:>7} {:>10} {:>12} {:>10} {:>14}\n", "rule", "points", "set-up ms", "CPU ms/step",
                            "/ q2", "mean dt / q2's");
@@ -691,6 +734,20 @@ void part4_cost(const fs::path& out) {
                              t.cpu_ms_per_step, t.cpu_ms_per_step / q2_time, t.dt / q2_dt);
     csv.row({double(k++), double(t.points), t.setup_ms, t.cpu_ms_per_step, t.cpu_ms_per_step / q2_time, t.dt});
   }
+  if (!full_run) return;
+  std::cout << fmt::format("\n  the whole run (80 us), as tools/rkpm paper reports it:\n  {:<10} {:>11} {:>11} {:>9} {:>14} {:>7} "
+                           "{:>8} {:>12}\n",
+                           "rule", "radius mm", "height mm", "max eps_p", "energy error", "steps", "CPU s", "per step/q2");
+  io::csv_writer bar(out / "taylor_bar.csv", {"rule_index", "radius_mm", "height_mm", "max_equivalent_plastic_strain",
+                                               "balance_error", "steps", "cpu_s"});
+  const double q2_per_step = timings.front().run_cpu_s / double(timings.front().steps);
+  k = 0;
+  for (const auto& t : timings) {
+    std::cout << fmt::format("  {:<10} {:>11.3f} {:>11.3f} {:>9.2f} {:>14.2e} {:>7} {:>8.2f} {:>12.2f}\n", t.rule,
+                             t.radius_mm, t.height_mm, t.max_plastic_strain, t.balance_error, t.steps, t.run_cpu_s,
+                             t.run_cpu_s / double(t.steps) / q2_per_step);
+    bar.row({double(k++), t.radius_mm, t.height_mm, t.max_plastic_strain, t.balance_error, double(t.steps), t.run_cpu_s});
+  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -698,7 +755,14 @@ void part4_cost(const fs::path& out) {
 // ---------------------------------------------------------------------------------------
 int main(int argc, char** argv) {
   try {
-    const fs::path out = argc > 1 ? fs::path(argv[1]) : fs::path("results/08_integration");
+    fs::path out = "results/08_integration";
+    bool full_taylor_bar = false;
+    for (int a = 1; a < argc; ++a) {
+      const std::string arg = argv[a];
+      if (arg == "--taylor-bar") full_taylor_bar = true;
+      else if (arg.starts_with("--")) fail("unknown option '{}'; usage: tutorial_08_integration [output directory] [--taylor-bar]", arg);
+      else out = arg;
+    }
     fs::create_directories(out);
     // One thread throughout: the problems are small, so threads would only add start-up and
     // barrier costs (on a busy machine a two-thread run took 7 times longer), and part 4's CPU
@@ -712,7 +776,7 @@ int main(int argc, char** argv) {
     part1_constraint(out, patch);
     part2_patch_test(out, patch);
     part3_convergence(out);
-    part4_cost(out);
+    part4_cost(out, full_taylor_bar);
     std::cout << fmt::format("\nwrote CSV and PNG files to {} ({:.1f} s)\n", out.string(),
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   } catch (const std::exception& e) {
