@@ -56,7 +56,9 @@ int run_paper(const paper_request& o) {
       r.out_dir = fmt::format("{}/{}-{}", o.out, c, q);
       fmt::print("paper: running {} with {} (beyond the paper) ...\n", c, q);
       std::fflush(stdout);
-      summary[fmt::format("{}-{}", c, q)] = run_named_case(r).summary;
+      run_outcome out = run_named_case(r);
+      fmt::print("paper: {} {} done, {} steps, {:.1f} s\n", c, q, count(out.summary, "steps"), number(out.summary, "wall_s"));
+      summary[fmt::format("{}-{}", c, q)] = std::move(out.summary);
     }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -98,8 +100,9 @@ int run_paper(const paper_request& o) {
   }
   if (!o.rules.empty()) {
     md += "\n## Beyond the paper: other integration rules\n\n";
-    md += "The paper's two readings of its two-point cell that rkpm does not use (`q2_split`, `q2_tri`) and the "
-          "variationally consistent rules (`+vci`), beside Q2 and Q4, from the same run of this command "
+    md += "The paper's two readings of its two-point cell that rkpm does not use (`q2_split`, `q2_tri`), the "
+          "variationally consistent rules (`+vci`) and stabilized conforming nodal integration (`scni`), beside Q2 "
+          "and Q4, from the same run of this command "
           "(docs/method.md section 3). Time per step is relative to Q2's in this run.\n\n";
     for (const auto& c : chosen) {
       md += fmt::format("### {}\n\n| rule | key results | energy balance error | steps | loop (s) | time per step / Q2 |\n"

@@ -152,7 +152,7 @@ void add_paper(CLI::App& app, paper_request& p) {
            std::erase(p.rules, "none");
          },
          "integration rules beyond the paper for the report's last section, comma-separated, or none "
-         "(default q2_split,q2_tri,q2+vci,q4+vci)")
+         "(default q2_split,q2_tri,q2+vci,q4+vci,scni)")
       ->delimiter(',')
       ->check(CLI::IsMember([] {
         auto names = policy_names(quadratures);

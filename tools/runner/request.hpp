@@ -46,7 +46,7 @@ struct paper_request {
   std::string out = "results/paper";
   std::vector<std::string> cases;  // empty: every case
   // Rules beyond the paper run beside Q2 and Q4 for the report's last section.
-  std::vector<std::string> rules{"q2_split", "q2_tri", "q2+vci", "q4+vci"};
+  std::vector<std::string> rules{"q2_split", "q2_tri", "q2+vci", "q4+vci", "scni"};
   bool plots = true;
 };
 
