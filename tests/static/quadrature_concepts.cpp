@@ -135,7 +135,7 @@ concept wraps = requires { typename quadrature::vci<R>; };
 static_assert(!wraps<no_name> && !wraps<both_kinds> && wraps<quadrature::q9>);
 
 // The extended list stays apart from the runner's list.
-static_assert(boost::hana::length(policies::extended_quadratures) == boost::hana::size_c<7>);
+static_assert(boost::hana::length(policies::extended_quadratures) == boost::hana::size_c<8>);
 static_assert(!boost::hana::contains(policies::quadratures, boost::hana::type_c<quadrature::q2_vci>));
 static_assert(boost::hana::contains(policies::extended_quadratures, boost::hana::type_c<quadrature::scni<>>));
 

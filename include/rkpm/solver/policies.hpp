@@ -29,10 +29,12 @@ inline constexpr auto quadratures = hana::tuple_t<quadrature::q2, quadrature::q4
 // Rules beyond the paper (docs/method.md sections 3.4-3.5), kept out of `quadratures` (and so
 // out of the product, the covering set and the runner's compiled table) until the runner
 // chooses them: the two other readings of the two-point cell, the VCI-corrected rules and
-// stabilized conforming nodal integration (section 3.6).
+// stabilized conforming nodal integration (section 3.6), with its stabilization and without
+// (scni_plain, to show what the stabilization does; both share one builder).
 inline constexpr auto extended_quadratures =
     hana::tuple_t<quadrature::q2_split, quadrature::q2_tri, quadrature::q2_vci, quadrature::q4_vci,
-                  quadrature::vci<quadrature::q2_split>, quadrature::vci<quadrature::q2_tri>, quadrature::scni<>>;
+                  quadrature::vci<quadrature::q2_split>, quadrature::vci<quadrature::q2_tri>, quadrature::scni<>,
+                  quadrature::scni_plain>;
 inline constexpr auto geometries = hana::tuple_t<geometry::plane_strain, geometry::axisymmetric>;
 inline constexpr auto materials =
     hana::tuple_t<material::elastic, material::j2_plasticity<material::hardening::linear>,
