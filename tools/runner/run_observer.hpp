@@ -61,6 +61,7 @@ class run_observer {
         figures_(dir, params),
         segment_start_(std::chrono::steady_clock::now()) {
     record_.impulse.resize(tools_, vec2::Zero());
+    record_.previous_impulse.resize(tools_, vec2::Zero());
     for (const auto& row : record_.history_rows) history_.row(row);
   }
 
@@ -73,7 +74,7 @@ class run_observer {
     const bool last = t >= end_time * (1.0 - 1e-12);
     if (!quiet_) progress_.update(t, end_time, static_cast<long>(s.steps()));
     if (t >= record_.next_history || last) {
-      add_history_row(s, t);
+      add_history_row(s, t, last);
       record_.next_history += record_.history_interval;
     }
     if (t >= record_.next_snapshot || last) {
@@ -136,11 +137,21 @@ class run_observer {
     return columns;
   }
 
-  // The tool forces are the impulses of the interval over its length.
-  void add_history_row(const Solver& s, double t) {
+  // The tool forces are the impulses of the interval over its length. The run's last interval
+  // can be a step or two long (the row before fell just short of the end time): a force averaged
+  // over so short a span is one step's contact impulse, not a force, so that row averages over
+  // it and the interval before.
+  void add_history_row(const Solver& s, double t, bool last) {
     const double span = t - record_.interval_start;
-    for (index_t k = 0; k < tools_; ++k)
-      mean_force_[k] = span > 0.0 ? vec2(record_.impulse[k] / span) : vec2::Zero();
+    const bool merge = last && span < 0.5 * record_.history_interval && record_.previous_span > 0.0;
+    for (index_t k = 0; k < tools_; ++k) {
+      if (merge)
+        mean_force_[k] = (record_.impulse[k] + record_.previous_impulse[k]) / (span + record_.previous_span);
+      else
+        mean_force_[k] = span > 0.0 ? vec2(record_.impulse[k] / span) : vec2::Zero();
+    }
+    record_.previous_impulse = record_.impulse;
+    record_.previous_span = span;
     std::fill(record_.impulse.begin(), record_.impulse.end(), vec2::Zero());
     record_.interval_start = t;
     measures_ = Case::measure(s, params_, mean_force_);

@@ -131,7 +131,10 @@ class explicit_solver {
     observe(*this);
     const double end = options_.end_time;
     while (time_ < end * (1.0 - 1e-12)) {
-      if (time_ + dt_ > end) dt_ = end - time_;  // land on the end time exactly
+      // Land on the end time exactly, in two equal steps rather than a full one and a sliver
+      // (a sliver's contact impulse over a tiny step would read as a force spike).
+      if (time_ + dt_ >= end) dt_ = end - time_;
+      else if (time_ + 2.0 * dt_ > end) dt_ = 0.5 * (end - time_);
       if (steps_ >= options_.max_steps)
         fail("t = {:.6g} s of {:.6g} s after {} steps, the limit max_steps: the stable step has shrunk to "
              "{:.3g} s (a body crushed or inverting?); raise max_steps if the run is meant to be this long",
