@@ -1,6 +1,6 @@
 // run_case_file: reads the case file (or, for --restart, the document the checkpoint kept),
 // applies the command line's --set overrides, policies and end time, and runs it in its
-// geometry (run_file_case.hpp).
+// geometry (file_case_dispatch.hpp).
 #include "run_case_file.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // `rkpm_run FILE.json`: a problem from a case file (file_case.hpp), run with the same dispatch
 // table and simulate() as the typed cases. run_case_file (run_case_file.cpp) reads the file, or
 // the document a checkpoint kept, and hands it to run_file_case<Geometry>, which is compiled
-// once per geometry in run_file_GEOMETRY.cpp so that the two build in parallel.
+// once per geometry in run_file_GEOMETRY.cpp (table: file_case_dispatch.hpp) so that the two build in parallel.
 
 #include <optional>
 

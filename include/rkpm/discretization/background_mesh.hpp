@@ -6,6 +6,7 @@
 // make_grid_mesh builds the cells of a regular particle grid with the same node numbering as
 // make_grid_particles (first direction fastest), so node i is particle i.
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <utility>
@@ -51,18 +52,24 @@ struct background_mesh {
     }
   }
 
-  // Nodes on the boundary of the meshed region: nodes of edges that belong to one cell only.
-  std::vector<index_t> boundary_nodes() const {
-    std::map<std::pair<index_t, index_t>, int> edge_count;
+  // The boundary edges (those that belong to one cell only), in cell order, each traversed as
+  // its cell traverses it (counter-clockwise cells: the body to the left, the outward normal to
+  // the right).
+  std::vector<std::array<index_t, 2>> boundary_edges() const {
+    std::map<std::pair<index_t, index_t>, int> count;
     for (const auto& c : cell)
-      for (int k = 0; k < 4; ++k) {
-        index_t a = c[k], b = c[(k + 1) % 4];
-        if (a > b) std::swap(a, b);
-        ++edge_count[{a, b}];
-      }
+      for (int k = 0; k < 4; ++k) ++count[std::minmax(c[k], c[(k + 1) % 4])];
+    std::vector<std::array<index_t, 2>> edges;
+    for (const auto& c : cell)
+      for (int k = 0; k < 4; ++k)
+        if (count[std::minmax(c[k], c[(k + 1) % 4])] == 1) edges.push_back({c[k], c[(k + 1) % 4]});
+    return edges;
+  }
+
+  // Nodes on the boundary of the meshed region: the nodes of boundary_edges(), ascending.
+  std::vector<index_t> boundary_nodes() const {
     std::vector<char> on(node.size(), 0);
-    for (const auto& [e, n] : edge_count)
-      if (n == 1) on[e.first] = on[e.second] = 1;
+    for (const auto& [a, b] : boundary_edges()) on[a] = on[b] = 1;
     std::vector<index_t> out;
     for (index_t i = 0; i < static_cast<index_t>(node.size()); ++i)
       if (on[i]) out.push_back(i);

@@ -73,39 +73,33 @@ inline std::pair<std::array<double, 6>, std::array<double, 6>> gauss_legendre(in
 
 }  // namespace detail
 
-// The boundary edges of the cells, in cell order, each traversed as its cell traverses it
-// (counter-clockwise cells: the body lies to the left, the outward normal to the right).
-inline std::vector<std::array<index_t, 2>> boundary_edges(const background_mesh& mesh) {
-  std::map<std::pair<index_t, index_t>, int> count;
-  for (const auto& c : mesh.cell)
-    for (int k = 0; k < 4; ++k) ++count[std::minmax(c[k], c[(k + 1) % 4])];
-  std::vector<std::array<index_t, 2>> edges;
-  for (const auto& c : mesh.cell)
-    for (int k = 0; k < 4; ++k)
-      if (count[std::minmax(c[k], c[(k + 1) % 4])] == 1) edges.push_back({c[k], c[(k + 1) % 4]});
-  return edges;
+namespace detail {
+// Gauss points of the segment A -> B (body to the left, outward normal to the right). Points
+// with zero weight (on the axis, 2 pi R = 0) are dropped unless `keep_axis_points`, which keeps
+// `points` entries per segment.
+template <Geometry G>
+void add_segment_points(const vec2& A, const vec2& B, int points, boundary_points& out, bool keep_axis_points) {
+  const auto [abscissa, gauss_weight] = gauss_legendre(points);
+  const vec2 t = B - A;
+  const double length = t.norm();
+  const vec2 n(t[1] / length, -t[0] / length);
+  for (int g = 0; g < points; ++g) {
+    const vec2 X = 0.5 * (A + B) + 0.5 * abscissa[g] * t;
+    const double w = 0.5 * length * gauss_weight[g] * G::weight_factor(X);
+    if (w == 0.0 && !keep_axis_points) continue;
+    out.position.push_back(X);
+    out.normal.push_back(n);
+    out.weight.push_back(w);
+  }
 }
+}  // namespace detail
 
 template <Geometry G>
 boundary_points make_boundary_points(const background_mesh& mesh, int points_per_edge) {
   mesh.validate();
-  const auto [abscissa, gauss_weight] = detail::gauss_legendre(points_per_edge);
   boundary_points b;
-  for (const auto& [i, j] : boundary_edges(mesh)) {
-    const vec2& A = mesh.node[i];
-    const vec2& B = mesh.node[j];
-    const vec2 t = B - A;
-    const double length = t.norm();
-    const vec2 n(t[1] / length, -t[0] / length);
-    for (int g = 0; g < points_per_edge; ++g) {
-      const vec2 X = 0.5 * (A + B) + 0.5 * abscissa[g] * t;
-      const double w = 0.5 * length * gauss_weight[g] * G::weight_factor(X);
-      if (w == 0.0) continue;  // on the axis: 2 pi R = 0
-      b.position.push_back(X);
-      b.normal.push_back(n);
-      b.weight.push_back(w);
-    }
-  }
+  for (const auto& [i, j] : mesh.boundary_edges())
+    detail::add_segment_points<G>(mesh.node[i], mesh.node[j], points_per_edge, b, /*keep_axis_points=*/false);
   return b;
 }
 

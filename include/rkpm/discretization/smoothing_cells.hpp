@@ -126,23 +126,6 @@ nodal_points make_nodal_points(const smoothing_cells& s, bool per_part) {
   return np;
 }
 
-namespace detail {
-// Gauss points of the segment A -> B (body to the left), as make_boundary_points places them.
-template <Geometry G>
-void add_segment_points(const vec2& A, const vec2& B, int points, boundary_points& out) {
-  const auto [abscissa, gauss_weight] = gauss_legendre(points);
-  const vec2 t = B - A;
-  const double length = t.norm();
-  const vec2 n(t[1] / length, -t[0] / length);
-  for (int g = 0; g < points; ++g) {
-    const vec2 X = 0.5 * (A + B) + 0.5 * abscissa[g] * t;
-    const double w = 0.5 * length * gauss_weight[g] * G::weight_factor(X);
-    out.position.push_back(X);
-    out.normal.push_back(n);
-    out.weight.push_back(w);  // zero on the axis: kept, so that every segment has `points` entries
-  }
-}
-}  // namespace detail
 
 // The body's boundary with each edge split at its midpoint, `points` Gauss points per half:
 // the points the smoothing cells use on the boundary, so that b_I from them is the sum of the
@@ -150,11 +133,11 @@ void add_segment_points(const vec2& A, const vec2& B, int points, boundary_point
 template <Geometry G>
 boundary_points make_split_boundary_points(const background_mesh& mesh, int points) {
   boundary_points b;
-  for (const auto& [i, j] : boundary_edges(mesh)) {
+  for (const auto& [i, j] : mesh.boundary_edges()) {
     const vec2 &A = mesh.node[i], &B = mesh.node[j];
     const vec2 m = 0.5 * (A + B);
-    detail::add_segment_points<G>(A, m, points, b);
-    detail::add_segment_points<G>(m, B, points, b);
+    detail::add_segment_points<G>(A, m, points, b, /*keep_axis_points=*/true);
+    detail::add_segment_points<G>(m, B, points, b, /*keep_axis_points=*/true);
   }
   return b;
 }
@@ -171,7 +154,9 @@ void smooth_point_gradients(const particle_set<2>& particles, const smoothing_ce
   // Gauss points of the four segments of every part: part p owns 4 * edge_points points.
   boundary_points seg;
   for (index_t p = 0; p < s.parts(); ++p)
-    for (int k = 0; k < 4; ++k) detail::add_segment_points<G>(s.corner[p][k], s.corner[p][(k + 1) % 4], edge_points, seg);
+    for (int k = 0; k < 4; ++k)
+      detail::add_segment_points<G>(s.corner[p][k], s.corner[p][(k + 1) % 4], edge_points, seg,
+                                    /*keep_axis_points=*/true);
   const neighbor_search<2> search(particles);
   const shape_table<2> at_seg =
       build_shape_table<K, C, 2>(search, seg.position, rk_shape_functions<K, C, 2>(max_condition));

@@ -22,26 +22,7 @@ import shutil
 import subprocess
 import sys
 
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAILED: " + message)
-
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-
-
-def read(path):
-    with open(path) as f:
-        return f.read()
-
-
-def summary(folder):
-    return json.loads(read(os.path.join(folder, "summary.json")))
+from checks import check, exit_status, read, run, summary
 
 
 def compare(typed, from_file, label):
@@ -176,10 +157,7 @@ def main(argv):
     mode, rkpm_run, cases, work = argv[1:5]
     os.makedirs(work, exist_ok=True)
     {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh}[mode](rkpm_run, cases, work)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return exit_status()
 
 
 if __name__ == "__main__":

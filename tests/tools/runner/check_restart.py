@@ -13,7 +13,6 @@
 The reference is always the same program's uninterrupted run of the same request: a restart must
 not change a run, so equality (not closeness) is the property.
 """
-import json
 import os
 import shutil
 import signal
@@ -21,26 +20,7 @@ import subprocess
 import sys
 import time
 
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAILED: " + message)
-
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-
-
-def read(path, mode="r"):
-    with open(path, mode) as f:
-        return f.read()
-
-
-def summary(folder):
-    return json.loads(read(os.path.join(folder, "summary.json")))
+from checks import check, exit_status, read, run, summary
 
 
 def checkpoints(folder):
@@ -180,10 +160,7 @@ def main(argv):
     mode, rkpm_run, work = argv[1], argv[2], argv[3]
     os.makedirs(work, exist_ok=True)
     {"same": same, "kill": kill, "refused": refused}[mode](rkpm_run, work)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return exit_status()
 
 
 if __name__ == "__main__":
