@@ -18,6 +18,7 @@
 #include <rkpm/quadrature/vci.hpp>
 #include <rkpm/quadrature/scni.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
+#include <rkpm/discretization/vci_gradients.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>

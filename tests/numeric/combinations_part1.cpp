@@ -15,3 +15,6 @@ using row_config = typename decltype(+rkpm::policies::covering_configs[hana::siz
 TEST_CASE("covering row 0") { rkpm::test::check_combination<row_config<0>>(); }
 TEST_CASE("covering row 3") { rkpm::test::check_combination<row_config<3>>(); }
 TEST_CASE("covering row 6") { rkpm::test::check_combination<row_config<6>>(); }
+TEST_CASE("covering row 0, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<0>>(); }
+TEST_CASE("covering row 3, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<3>>(); }
+TEST_CASE("covering row 6, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<6>>(); }

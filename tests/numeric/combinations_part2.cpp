@@ -15,3 +15,6 @@ using row_config = typename decltype(+rkpm::policies::covering_configs[hana::siz
 TEST_CASE("covering row 1") { rkpm::test::check_combination<row_config<1>>(); }
 TEST_CASE("covering row 4") { rkpm::test::check_combination<row_config<4>>(); }
 TEST_CASE("covering row 9") { rkpm::test::check_combination<row_config<9>>(); }
+TEST_CASE("covering row 1, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<1>>(); }
+TEST_CASE("covering row 4, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<4>>(); }
+TEST_CASE("covering row 9, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<9>>(); }

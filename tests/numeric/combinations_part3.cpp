@@ -15,6 +15,9 @@ using row_config = typename decltype(+rkpm::policies::covering_configs[hana::siz
 TEST_CASE("covering row 2") { rkpm::test::check_combination<row_config<2>>(); }
 TEST_CASE("covering row 7") { rkpm::test::check_combination<row_config<7>>(); }
 TEST_CASE("covering row 10") { rkpm::test::check_combination<row_config<10>>(); }
+TEST_CASE("covering row 2, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<2>>(); }
+TEST_CASE("covering row 7, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<7>>(); }
+TEST_CASE("covering row 10, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<10>>(); }
 
 TEST_CASE("kinematic contact: the energy balance error falls like dt^2") {
   // Row 7 (elastic, effective-mass contact): same simulated time at 0.7, 0.35 and 0.175 of the

@@ -15,3 +15,6 @@ using row_config = typename decltype(+rkpm::policies::covering_configs[hana::siz
 TEST_CASE("covering row 5") { rkpm::test::check_combination<row_config<5>>(); }
 TEST_CASE("covering row 8") { rkpm::test::check_combination<row_config<8>>(); }
 TEST_CASE("covering row 11") { rkpm::test::check_combination<row_config<11>>(); }
+TEST_CASE("covering row 5, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<5>>(); }
+TEST_CASE("covering row 8, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<8>>(); }
+TEST_CASE("covering row 11, every rule beyond the paper") { rkpm::test::check_combination_with_every_rule<row_config<11>>(); }

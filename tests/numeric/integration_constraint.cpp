@@ -67,7 +67,25 @@ body<G> make_body(layout l, const Eigen::Vector2i& n = Eigen::Vector2i(9, 9)) {
 struct measured {
   double worst = 0.0;   // max_I |r_I| / scale_I
   double median = 0.0;  // of |r_I| / scale_I over the particles
+  double point_sum = 0.0;  // max_q |sum_I g_I(X_q)| / sum_I |g_I(X_q)|: the net force of a stress at q
 };
+
+// Linear momentum needs sum_I g_I(X_q) = 0 at every point: the forces (37) of any stress field
+// then cancel. Trial gradients have it (RK reproduces constants); so must the VCI ones
+// (docs/method.md (19c')).
+inline double largest_point_sum(const shape_table<2>& table, const std::vector<vec2>& gradient) {
+  double worst = 0.0;
+  for (index_t q = 0; q < table.points(); ++q) {
+    vec2 sum = vec2::Zero();
+    double magnitude = 0.0;
+    for (index_t e = table.offset[q]; e < table.offset[q + 1]; ++e) {
+      sum += gradient[e];
+      magnitude += gradient[e].norm();
+    }
+    worst = std::max(worst, sum.norm() / magnitude);
+  }
+  return worst;
+}
 
 // b_I as the rule Q integrates it: five Gauss points per edge (VCI), or the smoothing cells'
 // points on the half edges (scni).
@@ -91,7 +109,7 @@ measured constraint_violation(layout l, bool five_point_edges = false) {
   std::vector<double> e;
   for (std::size_t I = 0; I < c.residual.size(); ++I) e.push_back(c.residual[I].cwiseAbs().maxCoeff() / c.scale[I]);
   std::sort(e.begin(), e.end());
-  return {c.worst(), e[e.size() / 2]};
+  return {c.worst(), e[e.size() / 2], largest_point_sum(m.at_points, m.test_gradients())};
 }
 
 template <class G>
@@ -116,6 +134,14 @@ void check_constraint(layout l) {
                << ", q4+vci " << q4v.worst);
   CHECK(q2v.worst < 1e-12);
   CHECK(q4v.worst < 1e-12);
+  const auto split_v = constraint_violation<quadrature::vci<quadrature::q2_split>, G>(l);
+  const auto tri_v = constraint_violation<quadrature::vci<quadrature::q2_tri>, G>(l);
+  CHECK(split_v.worst < 1e-12);
+  CHECK(tri_v.worst < 1e-12);
+  MESSAGE(what << ": largest |sum_I g_I| at a point, relative: q2 " << q2.point_sum << ", q2+vci " << q2v.point_sum
+               << ", q4+vci " << q4v.point_sum << ", q2_split+vci " << split_v.point_sum << ", q2_tri+vci "
+               << tri_v.point_sum);
+  for (const auto* v : {&q2, &q4, &q2v, &q4v, &split_v, &tri_v}) CHECK(v->point_sum < 1e-13);
   // The measure sees the violation of the uncorrected rules, far above round-off.
   CHECK(q2.worst > 1e-4);
   CHECK(q4.worst > 1e-6);

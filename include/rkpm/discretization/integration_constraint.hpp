@@ -12,8 +12,8 @@
 //                                    ds * omega (edges on the axis r = 0 weigh nothing and are left out)
 //   boundary_integrals               b_I  #particles
 //   measure_integration_constraint   the residual of the constraint for any gradient table
-//   vci_test_gradients               g_I = grad N_I + xi_I with one constant xi_I per particle
-//                                    over its support, chosen so that the residual is zero
+// The corrected gradients that make the residual zero are built in
+// discretization/vci_gradients.hpp.
 // The tables are those of discretization/shape_table.hpp; everything is computed once, in the
 // reference configuration.
 
@@ -170,33 +170,6 @@ inline integration_constraint measure_integration_constraint(const quadrature_po
     c.scale[I] += boundary_integral[I].cwiseAbs().maxCoeff();
   }
   return c;
-}
-
-// VCI test gradients (#entries of at_points): g_I(X_q) = grad N_I(X_q) + xi_I at every point
-// of I's support (every entry of I), with
-//   xi_I = -(sum_q [grad N_I + e_r N_I / R_q] w_q - b_I) / W_I,   W_I = sum over I's entries of w_q
-// so that the constraint holds exactly (docs/method.md (19c)).
-inline std::vector<vec2> vci_test_gradients(const quadrature_points& points, const shape_table<2>& at_points,
-                                            const std::vector<vec2>& boundary_integral, bool axisymmetric) {
-  const auto n = static_cast<index_t>(boundary_integral.size());
-  std::vector<vec2> sum(n, vec2::Zero());
-  std::vector<double> magnitude(n, 0.0), support_weight(n, 0.0);
-  detail::domain_sums(points, at_points, at_points.grad, axisymmetric, sum, magnitude);
-  for (index_t q = 0; q < points.size(); ++q)
-    for (index_t e = at_points.offset[q]; e < at_points.offset[q + 1]; ++e)
-      support_weight[at_points.neighbor[e]] += points.weight[q];
-  std::vector<vec2> xi(n, vec2::Zero());
-  for (index_t I = 0; I < n; ++I) {
-    if (!(support_weight[I] > 0.0)) {
-      if (boundary_integral[I].isZero(0.0)) continue;  // touched by no point and no boundary
-      fail("variationally consistent integration: particle {} is covered by no quadrature point but "
-           "touches the boundary; refine the background cells or enlarge the support", I);
-    }
-    xi[I] = -(sum[I] - boundary_integral[I]) / support_weight[I];
-  }
-  std::vector<vec2> g(at_points.grad);
-  for (index_t e = 0; e < at_points.entries(); ++e) g[e] += xi[at_points.neighbor[e]];
-  return g;
 }
 
 }  // namespace rkpm

@@ -32,7 +32,7 @@ template <class K = kernel::cubic_spline, class C = correction::linear, class Q 
 struct config {
   static_assert(Kernel<K>, "rkpm::config: parameter 1 must be a Kernel (kernel::cubic_spline, kernel::quartic_spline)");
   static_assert(Correction<C>, "rkpm::config: parameter 2 must be a Correction (correction::linear, correction::quadratic)");
-  static_assert(Quadrature<Q>, "rkpm::config: parameter 3 must be a Quadrature rule (quadrature::q2, q4, q9, q2_split, q2_tri, q2_vci, q4_vci, vci<Rule>)");
+  static_assert(Quadrature<Q>, "rkpm::config: parameter 3 must be a Quadrature rule (quadrature::q2, q4, q9, q2_split, q2_tri, q2_vci, q4_vci, vci<Rule>, scni<Beta>, scni_plain)");
   static_assert(Geometry<G>, "rkpm::config: parameter 4 must be a Geometry (geometry::plane_strain, geometry::axisymmetric)");
   static_assert(Material<M>, "rkpm::config: parameter 5 must be a Material (material::elastic, material::j2_plasticity<H>)");
   static_assert(Contact<Ct>, "rkpm::config: parameter 6 must be a Contact policy (contact::none, contact::particle_to_segment<E, F>)");

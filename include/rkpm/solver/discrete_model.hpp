@@ -24,6 +24,7 @@
 #include <rkpm/concepts/quadrature.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
+#include <rkpm/discretization/vci_gradients.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/discretization/smoothing_cells.hpp>

@@ -35,6 +35,11 @@ inline constexpr auto extended_quadratures =
     hana::tuple_t<quadrature::q2_split, quadrature::q2_tri, quadrature::q2_vci, quadrature::q4_vci,
                   quadrature::vci<quadrature::q2_split>, quadrature::vci<quadrature::q2_tri>, quadrature::scni<>,
                   quadrature::scni_plain>;
+// Every rule the toolkit ships. The tests run each covering row below again with every rule of
+// extended_quadratures in its place (test::check_combination_with_every_rule): the rows hold
+// every policy of the other families, so each extended rule meets each of them, at no extra
+// instantiation (the solver type does not depend on the rule).
+inline constexpr auto all_quadratures = hana::concat(quadratures, extended_quadratures);
 inline constexpr auto geometries = hana::tuple_t<geometry::plane_strain, geometry::axisymmetric>;
 inline constexpr auto materials =
     hana::tuple_t<material::elastic, material::j2_plasticity<material::hardening::linear>,
