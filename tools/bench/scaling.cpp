@@ -1,0 +1,193 @@
+// rkpm_scaling: cost per particle-step and footprint of the explicit loop as the Taylor bar is
+// refined (tools/rkpm bench --scaling [options]). One child process per resolution, so that
+// each size's peak resident set (wait4's ru_maxrss) is its own: the child builds the solver on
+// one thread (the set-up time), takes a few warm-up steps, then times the same number of steps
+// on 1 thread, on 2 threads and on 1 thread again (the two 1-thread windows are averaged, so
+// a drift of the cost along the impact does not read as a thread speed-up). Prints a table and
+// writes DIR/scaling.csv and DIR/scaling.png (cost per particle-step against particles, log x).
+// The machine may be shared: read ratios within one run, not absolute times.
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <rkpm/io/gnuplot.hpp>
+
+#include "taylor_bar_solver.hpp"
+
+namespace rkpm::bench {
+namespace {
+
+struct options {
+  std::vector<int> resolutions{1, 2, 4, 8, 16, 32};
+  int max_resolution = 32;
+  double particle_steps = 4e6;  // timed particle-steps per thread count and size
+  int warm_up_steps = 10;
+  std::string rule = "q2";
+  std::filesystem::path out = "results/bench";
+};
+
+// What a child measures (written to the parent through a pipe).
+struct measurement {
+  long particles = 0, points = 0, steps = 0;
+  double setup_s = 0.0, one_thread_s = 0.0, two_threads_s = 0.0;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class Q>
+measurement measure(int resolution, const options& o) {
+  measurement m;
+  omp_set_num_threads(1);
+  const auto start = std::chrono::steady_clock::now();
+  auto s = make_wall_solver<Q>(resolution);
+  m.setup_s = seconds_since(start);
+  m.particles = s.model().particle_count();
+  m.points = s.model().point_count();
+  for (int k = 0; k < o.warm_up_steps; ++k) s.step();
+  m.steps = std::clamp(static_cast<long>(o.particle_steps / static_cast<double>(m.particles)), 3L, 2000L);
+  auto timed = [&](int threads) {
+    omp_set_num_threads(threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long k = 0; k < m.steps; ++k) s.step();
+    return seconds_since(t0);
+  };
+  const double first = timed(1);
+  m.two_threads_s = timed(2);
+  m.one_thread_s = 0.5 * (first + timed(1));
+  return m;
+}
+
+// Runs measure() in a child; returns it with the child's peak resident set in bytes.
+std::pair<measurement, double> measure_in_child(int resolution, const options& o) {
+  int fd[2];
+  if (pipe(fd) != 0) fail("rkpm_scaling: pipe failed");
+  const pid_t pid = fork();
+  if (pid < 0) fail("rkpm_scaling: fork failed");
+  if (pid == 0) {
+    close(fd[0]);
+    int status = 0;
+    try {
+      const measurement m = o.rule == "q4" ? measure<quadrature::q4>(resolution, o) : measure<quadrature::q2>(resolution, o);
+      if (write(fd[1], &m, sizeof m) != static_cast<ssize_t>(sizeof m)) status = 2;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "rkpm_scaling: resolution %d: %s\n", resolution, e.what());
+      status = 1;
+    }
+    close(fd[1]);
+    _exit(status);
+  }
+  close(fd[1]);
+  measurement m;
+  const bool got = read(fd[0], &m, sizeof m) == static_cast<ssize_t>(sizeof m);
+  close(fd[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  if (!got || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    fail("rkpm_scaling: the child of resolution {} failed (status {})", resolution, status);
+  return {m, static_cast<double>(usage.ru_maxrss) * 1024.0};  // ru_maxrss is in KiB on Linux
+}
+
+options parse(int argc, char** argv) {
+  options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) fail("rkpm_scaling: {} needs a value", a);
+      return argv[++i];
+    };
+    if (a == "--max-resolution") o.max_resolution = std::stoi(value());
+    else if (a == "--resolutions") {
+      o.resolutions.clear();
+      std::string list = value();
+      for (std::size_t p = 0; p < list.size();) {
+        const std::size_t comma = std::min(list.find(',', p), list.size());
+        o.resolutions.push_back(std::stoi(list.substr(p, comma - p)));
+        p = comma + 1;
+      }
+    } else if (a == "--particle-steps") o.particle_steps = std::stod(value());
+    else if (a == "--warm-up") o.warm_up_steps = std::stoi(value());
+    else if (a == "--rule") {
+      o.rule = value();
+      if (o.rule != "q2" && o.rule != "q4") fail("rkpm_scaling: --rule q2 or q4, not {}", o.rule);
+    } else if (a == "--out") o.out = value();
+    else if (a == "--help" || a == "-h") {
+      fmt::print(
+          "usage: rkpm_scaling [--max-resolution K] [--resolutions 1,2,4,...] [--particle-steps N]\n"
+          "                    [--warm-up STEPS] [--rule q2|q4] [--out DIR]\n"
+          "Taylor bar (cubic, linear, paper contact); one child process per resolution K (about\n"
+          "1071 K^2 particles); timed steps per thread count = N / particles (default 4e6, 3 to 2000).\n");
+      std::exit(0);
+    } else fail("rkpm_scaling: unknown option {} (--help lists them)", a);
+  }
+  std::erase_if(o.resolutions, [&](int r) { return r < 1 || r > o.max_resolution; });
+  if (o.resolutions.empty()) fail("rkpm_scaling: no resolution left at or below --max-resolution {}", o.max_resolution);
+  return o;
+}
+
+void plot(const std::filesystem::path& csv, const std::filesystem::path& png, const std::string& rule) {
+  if (!io::gnuplot_available()) {
+    fmt::print(stderr, "rkpm_scaling: gnuplot not found, {} not drawn\n", png.string());
+    return;
+  }
+  io::gnuplot_png(png, fmt::format(
+      "set datafile separator ','\n"
+      "set logscale x\nset format x '10^{{%L}}'\nset grid\n"
+      "set xlabel 'particles'\nset ylabel 'time per particle-step (us)'\nset yrange [0:*]\n"
+      "set key top left\n"
+      "set title 'Taylor bar, {}, cubic, linear: cost per particle-step'\n"
+      "plot {} using 1:4 with linespoints lw 2 pt 7 title '1 thread', "
+      "'' using 1:5 with linespoints lw 2 pt 5 title '2 threads'\n",
+      rule, io::gnuplot_quote(csv.string())), {.width = 900, .height = 600});
+}
+
+}  // namespace
+}  // namespace rkpm::bench
+
+int main(int argc, char** argv) try {
+  using namespace rkpm::bench;
+  const options o = parse(argc, argv);
+  std::filesystem::create_directories(o.out);
+  const auto csv = o.out / "scaling.csv";
+  std::ofstream out(csv);
+  out << "particles,points,setup_s,us_per_particle_step_1_thread,us_per_particle_step_2_threads,speedup_2_threads,"
+         "peak_rss_bytes_per_particle,resolution,rule,timed_steps\n";
+  fmt::print("Taylor bar, {}, cubic, linear, paper contact (one child process per size)\n", o.rule);
+  fmt::print("{:>10} {:>10} {:>11} {:>11} {:>9} {:>15} {:>10}\n", "particles", "points", "us/p-step 1", "us/p-step 2",
+             "speed-up", "bytes/particle", "set-up (s)");
+  for (int r : o.resolutions) {
+    const auto [m, rss] = measure_in_child(r, o);
+    const double ps = static_cast<double>(m.particles) * static_cast<double>(m.steps);
+    const double one = 1e6 * m.one_thread_s / ps, two = 1e6 * m.two_threads_s / ps;
+    const double bytes = rss / static_cast<double>(m.particles);
+    fmt::print("{:>10} {:>10} {:>11.3f} {:>11.3f} {:>9.2f} {:>15.0f} {:>10.2f}\n", m.particles, m.points, one, two,
+               one / two, bytes, m.setup_s);
+    std::fflush(stdout);
+    out << fmt::format("{},{},{:.4f},{:.5f},{:.5f},{:.3f},{:.0f},{},{},{}\n", m.particles, m.points, m.setup_s, one, two,
+                       one / two, bytes, r, o.rule, m.steps);
+    out.flush();
+  }
+  out.close();
+  plot(csv, o.out / "scaling.png", o.rule);
+  fmt::print("wrote {} and {}\n", csv.string(), (o.out / "scaling.png").string());
+  return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "%s\n", e.what());
+  return 1;
+}
