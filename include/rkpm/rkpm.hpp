@@ -9,6 +9,7 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/mesh_particles.hpp>
 #include <rkpm/discretization/neighbor_search.hpp>
 #include <rkpm/discretization/particle_set.hpp>
