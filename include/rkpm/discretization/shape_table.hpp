@@ -2,12 +2,15 @@
 // shape_table<Dim>: RK shape functions and gradients at a list of evaluation points, in
 // compressed sparse rows, built once in the reference configuration (docs/method.md section 9.3).
 //   offset    #points+1; the entries of point p are offset[p] .. offset[p+1]-1
-//   neighbor  #entries particle index_t I
+//   neighbor  #entries particle index I (32 bits: the tables are most of a run's memory)
 //   N         #entries N_I(x_p)
 //   grad      #entries grad N_I(x_p)
-// The transpose lists, for each particle, the entries that touch it, so that a scatter to
-// particles can run in parallel without atomics.
+// transpose() lists, for each particle, the entries that touch it (the solver's force loop
+// does not need it: it scatters point by point, solver/point_forces.hpp).
 
+#include <cstdint>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include <rkpm/approximation/rk_shape_functions.hpp>
@@ -15,10 +18,13 @@
 
 namespace rkpm {
 
+// A particle index as the tables store it.
+using particle_index = std::int32_t;
+
 template <int Dim>
 struct shape_table {
   std::vector<index_t> offset{0};
-  std::vector<index_t> neighbor;
+  std::vector<particle_index> neighbor;
   std::vector<double> N;
   std::vector<vec<Dim>> grad;
 
@@ -59,39 +65,57 @@ shape_table_transpose transpose(const shape_table<Dim>& table, index_t particles
   return t;
 }
 
-// Builds the table at `points` for the particles of `search`.
+// Builds the table at `points` for the particles of `search`. Two passes: the neighbour counts
+// first (the cell-list query alone) so that the rows are laid out once at their final size,
+// then the RK functions of each row written in place: no per-point vectors, no regrowth, so the
+// set-up's peak memory is the table itself.
 template <Kernel K, Correction C, int Dim>
 shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
                                    const std::vector<vec<Dim>>& points,
                                    const rk_shape_functions<K, C, Dim>& rk = {}) {
   const index_t np = static_cast<index_t>(points.size());
-  std::vector<std::vector<index_t>> nbr(np);
-  std::vector<std::vector<double>> val(np);
-  std::vector<std::vector<vec<Dim>>> grd(np);
+  if (search.particles().size() > std::numeric_limits<particle_index>::max())
+    fail("{} particles: the shape tables index at most {} particles", search.particles().size(),
+         std::numeric_limits<particle_index>::max());
+  shape_table<Dim> t;
+  t.offset.assign(np + 1, 0);
+#pragma omp parallel
+  {
+    std::vector<index_t> nbr;
+#pragma omp for schedule(static)
+    for (index_t p = 0; p < np; ++p) {
+      search.query(points[p], nbr);
+      t.offset[p + 1] = static_cast<index_t>(nbr.size());
+    }
+  }
+  for (index_t p = 0; p < np; ++p) t.offset[p + 1] += t.offset[p];
+  t.neighbor.resize(t.offset[np]);
+  t.N.resize(t.offset[np]);
+  t.grad.resize(t.offset[np]);
   std::string first_error;
-#pragma omp parallel for schedule(dynamic, 64)
-  for (index_t p = 0; p < np; ++p) {
-    try {
-      search.query(points[p], nbr[p]);
-      rk.evaluate(points[p], search.particles(), nbr[p], val[p], grd[p]);
-    } catch (const error& e) {
+#pragma omp parallel
+  {
+    std::vector<index_t> nbr;
+    std::vector<double> val;
+    std::vector<vec<Dim>> grd;
+#pragma omp for schedule(dynamic, 64)
+    for (index_t p = 0; p < np; ++p) {
+      try {
+        search.query(points[p], nbr);
+        rk.evaluate(points[p], search.particles(), nbr, val, grd);
+        for (std::size_t j = 0; j < nbr.size(); ++j) {
+          const index_t e = t.offset[p] + static_cast<index_t>(j);
+          t.neighbor[e] = static_cast<particle_index>(nbr[j]);
+          t.N[e] = val[j];
+          t.grad[e] = grd[j];
+        }
+      } catch (const error& e) {
 #pragma omp critical(rkpm_shape_table_error)
-      if (first_error.empty()) first_error = e.what();
+        if (first_error.empty()) first_error = e.what();
+      }
     }
   }
   if (!first_error.empty()) throw error(first_error);
-  shape_table<Dim> t;
-  t.offset.resize(np + 1);
-  t.offset[0] = 0;
-  for (index_t p = 0; p < np; ++p) t.offset[p + 1] = t.offset[p] + static_cast<index_t>(nbr[p].size());
-  t.neighbor.reserve(t.offset[np]);
-  t.N.reserve(t.offset[np]);
-  t.grad.reserve(t.offset[np]);
-  for (index_t p = 0; p < np; ++p) {
-    t.neighbor.insert(t.neighbor.end(), nbr[p].begin(), nbr[p].end());
-    t.N.insert(t.N.end(), val[p].begin(), val[p].end());
-    t.grad.insert(t.grad.end(), grd[p].begin(), grd[p].end());
-  }
   return t;
 }
 

@@ -5,7 +5,8 @@
 // policies cost a small instantiation each instead of a copy of the whole solver.
 //   points               quadrature points X_q and weights w_q (2 pi R included)
 //   at_points            N_I(X_q), grad N_I(X_q)
-//   particles_of_points  transpose of at_points (scatter without atomics)
+//   traversal            the tiles and colours the force loop visits the points in (gather,
+//                        point rule and scatter in one pass, discretization/point_traversal.hpp)
 //   at_particles         N_J(X_I): physical values at the particles
 //   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, docs/method.md (38))
 //   test_gradient        corrected test-function gradients g_I(X_q), parallel to at_points.grad,
@@ -24,6 +25,7 @@
 #include <rkpm/concepts/quadrature.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
+#include <rkpm/discretization/point_traversal.hpp>
 #include <rkpm/discretization/vci_gradients.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
 #include <rkpm/discretization/shape_table.hpp>
@@ -36,7 +38,7 @@ struct discrete_model {
   background_mesh mesh;
   quadrature_points points;
   shape_table<2> at_points;
-  shape_table_transpose particles_of_points;
+  point_traversal traversal;
   shape_table<2> at_particles;
   std::vector<double> lumped_volume;
   std::vector<vec2> test_gradient;
@@ -87,7 +89,7 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
   const rk_shape_functions<K, C, 2> rk(max_condition);
   m.at_points = build_shape_table<K, C, 2>(search, m.points.position, rk);
   m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk);
-  m.particles_of_points = transpose(m.at_points, particles.size());
+  m.traversal = make_point_traversal(m.at_points, particles.size());
   m.lumped_volume = lumped_volumes(particles, m.points, m.at_points);
   m.particles = std::move(particles);
   m.mesh = std::move(mesh);
@@ -105,7 +107,7 @@ discrete_model build_nodal_model(particle_set<2> particles, background_mesh mesh
   const nodal_points np = make_nodal_points<G>(cells, beta > 0.0);
   discrete_model m = build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), np.points, max_condition);
   smooth_point_gradients<K, C, G>(m.particles, cells, np, beta, edge_points, m.at_points, max_condition);
-  m.particles_of_points = transpose(m.at_points, m.particle_count());
+  m.traversal = make_point_traversal(m.at_points, m.particle_count());
   return m;
 }
 

@@ -18,16 +18,16 @@ inline std::vector<vec2> values_at_particles(const discrete_model& m, const std:
 }
 
 // at_point(q) carried to the particles by the lumped L2 projection.
+// One serial pass over the points: each particle's sum runs over its points in ascending order.
 template <class Value, class PointValue>
 std::vector<Value> project_to_particles(const discrete_model& m, PointValue&& at_point) {
-  const auto& tt = m.particles_of_points;
-  std::vector<Value> out(m.particle_count());
-  for (index_t I = 0; I < m.particle_count(); ++I) {
-    Value sum = at_point(index_t{0}) * 0.0;
-    for (index_t s = tt.offset[I]; s < tt.offset[I + 1]; ++s)
-      sum += m.at_points.N[tt.entry[s]] * m.points.weight[tt.point[s]] * at_point(tt.point[s]);
-    out[I] = sum / m.lumped_volume[I];
+  const auto& t = m.at_points;
+  std::vector<Value> out(m.particle_count(), at_point(index_t{0}) * 0.0);
+  for (index_t q = 0; q < m.point_count(); ++q) {
+    const Value value = at_point(q);
+    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) out[t.neighbor[e]] += t.N[e] * m.points.weight[q] * value;
   }
+  for (index_t I = 0; I < m.particle_count(); ++I) out[I] = out[I] / m.lumped_volume[I];
   return out;
 }
 

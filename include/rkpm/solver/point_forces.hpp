@@ -1,17 +1,22 @@
 #pragma once
-// The one traversal of the force loop (docs/method.md section 5): at every quadrature point
+// The one traversal of the force loop (docs/method.md section 5.3): at every quadrature point
 // a gather over its neighbours,
 //   H_q = sum_I x_I (x) grad_X N_I(X_q),   u_q = sum_I N_I(X_q) x_I,
 // a point rule that turns (H_q, u_q) into the weighted first Piola stress S_q = P_q w_q and
-// the weighted hoop term h_q = P33_q w_q / R_q, and a scatter to the particles through the
-// transposed table,
-//   f_I = sum_q [S_q g_I(X_q) + e_r h_q N_I(X_q)],
+// the weighted hoop term h_q = P33_q w_q / R_q, and at once the scatter of that point to its
+// neighbours,
+//   f_I += S_q g_I(X_q) + e_r h_q N_I(X_q),
 // with the test gradients g_I = grad_X N_I, or the corrected ones of variationally consistent
 // integration (discrete_model::test_gradients(), docs/method.md section 3.5), chosen once per
 // call; the gather always uses the trial gradients grad_X N_I.
+// The gather, the point rule and the scatter of a point share its table row while it is in
+// cache: the table is read once per evaluation and nothing is stored per point. The points are
+// visited tile by tile in the order of discrete_model::traversal (discretization/
+// point_traversal.hpp): tiles of one colour share no particle and run in parallel, colours one
+// after the other, so no atomics are needed and every f_I is summed in the same order whatever
+// the thread count.
 // The internal force (solver/point_materials.hpp) and the matrix-free stiffness of the stable
-// time step (solver/stable_time_step.hpp) both go through it. Both loops are parallel over
-// their outputs, so no atomics are needed and the sums do not depend on the thread count.
+// time step (solver/stable_time_step.hpp) both go through it.
 
 #include <vector>
 
@@ -20,11 +25,10 @@
 
 namespace rkpm {
 
-// S_q and h_q of every quadrature point, sized once.
+// Kept for callers of apply_elastic_stiffness that pass a workspace: the fused traversal
+// stores nothing per point, so this holds nothing.
 struct point_stresses {
-  std::vector<mat2> weighted;
-  std::vector<double> hoop;
-  explicit point_stresses(index_t points = 0) : weighted(points, mat2::Zero()), hoop(points, 0.0) {}
+  explicit point_stresses(index_t /*points*/ = 0) {}
 };
 
 // Gradient H_q and value u_q at quadrature point q of the field with coefficients x.
@@ -36,40 +40,66 @@ struct point_gradient {
 inline point_gradient gather(const shape_table<2>& t, index_t q, const std::vector<vec2>& x) {
   point_gradient g;
   for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) {
-    g.H.noalias() += x[t.neighbor[e]] * t.grad[e].transpose();
-    g.u += t.N[e] * x[t.neighbor[e]];
+    const vec2& xI = x[t.neighbor[e]];
+    g.H.noalias() += xI * t.grad[e].transpose();
+    g.u += t.N[e] * xI;
   }
   return g;
 }
 
-// f = scatter of the stresses in s (the second half of the traversal).
-template <Geometry G>
-void scatter(const discrete_model& m, const point_stresses& s, std::vector<vec2>& f) {
+namespace detail {
+
+// Gather, rule and scatter of the points first .. last-1.
+template <Geometry G, class PointRule>
+void traverse_points(const discrete_model& m, const std::vector<vec2>& grad, index_t first, index_t last,
+                     const std::vector<vec2>& x, std::vector<vec2>& f, PointRule& rule) {
   const auto& t = m.at_points;
-  const std::vector<vec2>& grad = m.test_gradients();
-  const auto& tt = m.particles_of_points;
-  const index_t n = m.particle_count();
-#pragma omp parallel for schedule(static)
-  for (index_t I = 0; I < n; ++I) {
-    vec2 sum = vec2::Zero();
-    for (index_t k = tt.offset[I]; k < tt.offset[I + 1]; ++k) {
-      const index_t e = tt.entry[k], q = tt.point[k];
-      sum.noalias() += s.weighted[q] * grad[e];
-      if constexpr (G::is_axisymmetric) sum[0] += s.hoop[q] * t.N[e];
+  for (index_t q = first; q < last; ++q) {
+    mat2 S = mat2::Zero();
+    double hoop = 0.0;
+    rule(q, gather(t, q, x), S, hoop);
+    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) {
+      vec2& fI = f[t.neighbor[e]];
+      fI.noalias() += S * grad[e];
+      if constexpr (G::is_axisymmetric) fI[0] += hoop * t.N[e];
     }
-    f[I] = sum;
   }
 }
 
-// The whole traversal: rule(q, gradient, S_q, h_q) sets the point's stresses from the gathered
-// gradient of x (it runs in parallel and must not throw), then f is scattered.
+}  // namespace detail
+
+// The whole traversal: f = sum over the points of the scattered stresses that rule(q, gradient,
+// S_q, h_q) sets from the gathered gradient of x (S_q, h_q start at zero; the rule runs in
+// parallel and must not throw).
 template <Geometry G, class PointRule>
-void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, point_stresses& s,
+void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, std::vector<vec2>& f,
+                           PointRule&& rule) {
+  const point_traversal& tr = m.traversal;
+  const std::vector<vec2>& grad = m.test_gradients();
+  const index_t n = m.particle_count();
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (index_t I = 0; I < n; ++I) f[I] = vec2::Zero();
+    for (index_t c = 0; c < tr.colours(); ++c) {
+      if (c < tr.serial_from) {
+#pragma omp for schedule(dynamic, 1)
+        for (index_t k = tr.colour_start[c]; k < tr.colour_start[c + 1]; ++k)
+          detail::traverse_points<G>(m, grad, tr.tile_start[tr.tile[k]], tr.tile_start[tr.tile[k] + 1], x, f, rule);
+      } else {
+#pragma omp single
+        for (index_t k = tr.colour_start[c]; k < tr.colour_start[c + 1]; ++k)
+          detail::traverse_points<G>(m, grad, tr.tile_start[tr.tile[k]], tr.tile_start[tr.tile[k] + 1], x, f, rule);
+      }
+    }
+  }
+}
+
+// The former signature, with a workspace that is no longer needed.
+template <Geometry G, class PointRule>
+void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, point_stresses& /*unused*/,
                            std::vector<vec2>& f, PointRule&& rule) {
-  const index_t nq = m.point_count();
-#pragma omp parallel for schedule(static)
-  for (index_t q = 0; q < nq; ++q) rule(q, gather(m.at_points, q, x), s.weighted[q], s.hoop[q]);
-  scatter<G>(m, s, f);
+  assemble_point_forces<G>(m, x, f, rule);
 }
 
 }  // namespace rkpm

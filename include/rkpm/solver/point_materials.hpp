@@ -41,8 +41,7 @@ class point_materials {
         F_(m.point_count(), mat3::Identity()),
         det_F_(m.point_count(), 1.0),
         stretch_(m.point_count(), 1.0),
-        failed_(m.point_count(), 0),
-        stresses_(m.point_count()) {
+        failed_(m.point_count(), 0) {
     support_inverse_.setZero();
     for (const vec2& a : m.particles.support) support_inverse_ += a;
     support_inverse_ = (support_inverse_ / static_cast<double>(m.particle_count())).cwiseInverse();
@@ -51,7 +50,7 @@ class point_materials {
   // f_int at coefficients d; advances the material states to the new F.
   void internal_force(const discrete_model& m, const M& material, const std::vector<vec2>& d,
                       std::vector<vec2>& f_int, step_context where) {
-    assemble_point_forces<G>(m, d, stresses_, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
+    assemble_point_forces<G>(m, d, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
       const vec2& X = m.points.position[q];
       mat3 F = mat3::Identity();
       F.topLeftCorner<2, 2>() += g.H;
@@ -147,7 +146,6 @@ class point_materials {
   std::vector<double> det_F_, stretch_;
   std::vector<char> failed_;  // 1: det F <= 0, 2: material update threw
   std::string error_;
-  point_stresses stresses_;
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
   double min_stretch_ = 1.0, plastic_work_ = 0.0;
 };

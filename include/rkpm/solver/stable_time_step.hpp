@@ -20,21 +20,19 @@
 
 namespace rkpm {
 
-// Scratch arrays of the matrix-free stiffness, sized once (no allocation per call).
+// Scratch of the matrix-free stiffness, sized once (no allocation per call).
 struct stiffness_workspace {
   std::vector<vec2> kx;
-  point_stresses stresses;
-  explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()), stresses(m.point_count()) {}
+  explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()) {}
 };
 
 // out = K x about the configuration F (#points; empty: the reference configuration).
 template <Geometry G>
 void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out,
-                             point_stresses& stresses) {
+                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out) {
   const double lambda = c.lame_lambda(), mu = c.shear_modulus();
   const bool reference = F.empty();
-  assemble_point_forces<G>(m, x, stresses, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
+  assemble_point_forces<G>(m, x, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
     const vec2& X = m.points.position[q];
     const mat2 Fi = reference ? mat2::Identity() : mat2(F[q].topLeftCorner<2, 2>().inverse());
     const double F33 = reference ? 1.0 : F[q](2, 2);
@@ -52,9 +50,22 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
 // Reference configuration: out = K0 x.
 template <Geometry G>
 void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<vec2>& x, std::vector<vec2>& out, point_stresses& stresses) {
+                             const std::vector<vec2>& x, std::vector<vec2>& out) {
   static const std::vector<mat3> reference;
-  apply_elastic_stiffness<G>(m, c, reference, x, out, stresses);
+  apply_elastic_stiffness<G>(m, c, reference, x, out);
+}
+
+// The former signatures, with a workspace the fused force loop no longer needs.
+template <Geometry G>
+void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
+                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out,
+                             point_stresses& /*unused*/) {
+  apply_elastic_stiffness<G>(m, c, F, x, out);
+}
+template <Geometry G>
+void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
+                             const std::vector<vec2>& x, std::vector<vec2>& out, point_stresses& /*unused*/) {
+  apply_elastic_stiffness<G>(m, c, x, out);
 }
 
 // A start vector with every frequency present (deterministic, so runs repeat exactly).
@@ -71,7 +82,7 @@ double largest_frequency_squared(const discrete_model& m, const material::elasti
   const index_t n = m.particle_count();
   double omega2 = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    apply_elastic_stiffness<G>(m, c, F, x, w.kx, w.stresses);
+    apply_elastic_stiffness<G>(m, c, F, x, w.kx);
     double xkx = 0.0, xmx = 0.0, norm = 0.0;
     for (index_t I = 0; I < n; ++I) {
       xkx += x[I].dot(w.kx[I]);

@@ -1,0 +1,72 @@
+#pragma once
+// point_traversal: the order in which the force loop (solver/point_forces.hpp) visits the
+// quadrature points so that it can gather, update and scatter in one pass, in parallel,
+// without atomics and with sums that do not depend on the thread count.
+//   tile_start  #tiles+1: tile t is the points tile_start[t] .. tile_start[t+1]-1 (fixed size,
+//               whatever the thread count)
+//   tile        the tiles grouped by colour; colour c is tile[colour_start[c] .. colour_start[c+1]-1]
+//   serial_from colours from this one on are visited one tile after the other (tiles of such a
+//               colour may share particles); below it, tiles of one colour share no particle
+// Two tiles get different colours when a particle is a neighbour of a point of each, so the
+// tiles of one colour can scatter into the particles at the same time. A particle's force is
+// then summed colour by colour, tile by tile, point by point: a fixed order.
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include <rkpm/discretization/shape_table.hpp>
+
+namespace rkpm {
+
+struct point_traversal {
+  std::vector<index_t> tile_start{0};
+  std::vector<index_t> tile;
+  std::vector<index_t> colour_start{0};
+  index_t serial_from = 0;
+
+  index_t tiles() const { return static_cast<index_t>(tile_start.size()) - 1; }
+  index_t colours() const { return static_cast<index_t>(colour_start.size()) - 1; }
+};
+
+// Points per tile: large enough that a tile's particles are mostly its own (few colours), small
+// enough that a 10^4-particle body gives each of two threads a dozen tiles per colour.
+inline constexpr index_t traversal_tile_points = 128;
+
+// Greedy colouring of the tiles of `table` (rows: points, columns: `particles` particles).
+template <int Dim>
+point_traversal make_point_traversal(const shape_table<Dim>& table, index_t particles,
+                                     index_t tile_points = traversal_tile_points) {
+  constexpr int parallel_colours = 63;  // colour 63 collects the tiles that find no free colour
+  point_traversal t;
+  const index_t np = table.points();
+  const index_t tiles = (np + tile_points - 1) / tile_points;
+  t.tile_start.resize(tiles + 1);
+  for (index_t k = 0; k <= tiles; ++k) t.tile_start[k] = std::min(k * tile_points, np);
+  std::vector<std::uint64_t> used(particles, 0);  // colours of the tiles touching each particle
+  std::vector<int> colour(tiles);
+  std::vector<index_t> count(parallel_colours + 1, 0);
+  for (index_t k = 0; k < tiles; ++k) {
+    const index_t first = table.offset[t.tile_start[k]], last = table.offset[t.tile_start[k + 1]];
+    std::uint64_t taken = 0;
+    for (index_t e = first; e < last; ++e) taken |= used[table.neighbor[e]];
+    const int c = std::min(std::countr_one(taken), parallel_colours);
+    for (index_t e = first; e < last; ++e) used[table.neighbor[e]] |= std::uint64_t{1} << c;
+    colour[k] = c;
+    ++count[c];
+  }
+  // Colours in order of first use are 0, 1, 2, ... already; drop the empty ones.
+  t.tile.reserve(tiles);
+  for (int c = 0; c <= parallel_colours; ++c) {
+    if (count[c] == 0) continue;
+    if (c == parallel_colours) t.serial_from = t.colours();
+    for (index_t k = 0; k < tiles; ++k)
+      if (colour[k] == c) t.tile.push_back(k);
+    t.colour_start.push_back(static_cast<index_t>(t.tile.size()));
+  }
+  if (count[parallel_colours] == 0) t.serial_from = t.colours();
+  return t;
+}
+
+}  // namespace rkpm
