@@ -37,6 +37,7 @@ struct options {
   double particle_steps = 4e6;  // timed particle-steps per thread count and size
   int warm_up_steps = 10;
   std::string rule = "q2";
+  bool two_threads = true;  // --one-thread: skip the 2-thread window (a busy machine)
   std::filesystem::path out = "results/bench";
 };
 
@@ -44,7 +45,16 @@ struct options {
 struct measurement {
   long particles = 0, points = 0, steps = 0;
   double setup_s = 0.0, one_thread_s = 0.0, two_threads_s = 0.0;
+  double resident_bytes = 0.0;  // resident set after the timed steps (the peak may be in the set-up)
 };
+
+// The resident set now, from /proc/self/statm (pages).
+double resident_bytes_now() {
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0, resident = 0.0;
+  statm >> pages >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -68,8 +78,13 @@ measurement measure(int resolution, const options& o) {
     return seconds_since(t0);
   };
   const double first = timed(1);
-  m.two_threads_s = timed(2);
-  m.one_thread_s = 0.5 * (first + timed(1));
+  if (o.two_threads) {
+    m.two_threads_s = timed(2);
+    m.one_thread_s = 0.5 * (first + timed(1));
+  } else {
+    m.one_thread_s = first;
+  }
+  m.resident_bytes = resident_bytes_now();
   return m;
 }
 
@@ -123,6 +138,7 @@ options parse(int argc, char** argv) {
       }
     } else if (a == "--particle-steps") o.particle_steps = std::stod(value());
     else if (a == "--warm-up") o.warm_up_steps = std::stoi(value());
+    else if (a == "--one-thread") o.two_threads = false;
     else if (a == "--rule") {
       o.rule = value();
       if (o.rule != "q2" && o.rule != "q4") fail("rkpm_scaling: --rule q2 or q4, not {}", o.rule);
@@ -130,7 +146,7 @@ options parse(int argc, char** argv) {
     else if (a == "--help" || a == "-h") {
       fmt::print(
           "usage: rkpm_scaling [--max-resolution K] [--resolutions 1,2,4,...] [--particle-steps N]\n"
-          "                    [--warm-up STEPS] [--rule q2|q4] [--out DIR]\n"
+          "                    [--warm-up STEPS] [--rule q2|q4] [--one-thread] [--out DIR]\n"
           "Taylor bar (cubic, linear, paper contact); one child process per resolution K (about\n"
           "1071 K^2 particles); timed steps per thread count = N / particles (default 4e6, 3 to 2000).\n");
       std::exit(0);
@@ -167,20 +183,21 @@ int main(int argc, char** argv) try {
   const auto csv = o.out / "scaling.csv";
   std::ofstream out(csv);
   out << "particles,points,setup_s,us_per_particle_step_1_thread,us_per_particle_step_2_threads,speedup_2_threads,"
-         "peak_rss_bytes_per_particle,resolution,rule,timed_steps\n";
+         "peak_rss_bytes_per_particle,stepping_rss_bytes_per_particle,resolution,rule,timed_steps\n";
   fmt::print("Taylor bar, {}, cubic, linear, paper contact (one child process per size)\n", o.rule);
-  fmt::print("{:>10} {:>10} {:>11} {:>11} {:>9} {:>15} {:>10}\n", "particles", "points", "us/p-step 1", "us/p-step 2",
-             "speed-up", "bytes/particle", "set-up (s)");
+  fmt::print("{:>10} {:>10} {:>11} {:>11} {:>9} {:>11} {:>11} {:>10}\n", "particles", "points", "us/p-step 1",
+             "us/p-step 2", "speed-up", "peak B/p", "stepping B/p", "set-up (s)");
   for (int r : o.resolutions) {
     const auto [m, rss] = measure_in_child(r, o);
     const double ps = static_cast<double>(m.particles) * static_cast<double>(m.steps);
-    const double one = 1e6 * m.one_thread_s / ps, two = 1e6 * m.two_threads_s / ps;
+    const double one = 1e6 * m.one_thread_s / ps, two = 1e6 * m.two_threads_s / ps;  // two = 0: not timed
     const double bytes = rss / static_cast<double>(m.particles);
-    fmt::print("{:>10} {:>10} {:>11.3f} {:>11.3f} {:>9.2f} {:>15.0f} {:>10.2f}\n", m.particles, m.points, one, two,
-               one / two, bytes, m.setup_s);
+    const double stepping = m.resident_bytes / static_cast<double>(m.particles);
+    fmt::print("{:>10} {:>10} {:>11.3f} {:>11.3f} {:>9.2f} {:>11.0f} {:>11.0f} {:>10.2f}\n", m.particles, m.points, one,
+               two, two > 0.0 ? one / two : 0.0, bytes, stepping, m.setup_s);
     std::fflush(stdout);
-    out << fmt::format("{},{},{:.4f},{:.5f},{:.5f},{:.3f},{:.0f},{},{},{}\n", m.particles, m.points, m.setup_s, one, two,
-                       one / two, bytes, r, o.rule, m.steps);
+    out << fmt::format("{},{},{:.4f},{:.5f},{:.5f},{:.3f},{:.0f},{:.0f},{},{},{}\n", m.particles, m.points, m.setup_s, one,
+                       two, two > 0.0 ? one / two : 0.0, bytes, stepping, r, o.rule, m.steps);
     out.flush();
   }
   out.close();
