@@ -1,5 +1,6 @@
 #pragma once
-// Builds the contact policy object of a configuration from the case's tools and numbers:
+// Builds the contact policy object of a configuration from the case's tools, the pairs of its
+// deformable bodies in contact (contact/body_contact.hpp) and numbers:
 // the friction coefficient (Coulomb; frictionless ignores it and must be given 0) and the
 // penalty stiffness (used only by the penalty enforcement).
 
@@ -16,7 +17,8 @@ template <class E, class F>
 struct is_particle_to_segment<contact::particle_to_segment<E, F>> : std::true_type {};
 
 template <class Contact>
-Contact make_contact(std::vector<contact::rigid_tool> tools, double friction, double penalty_stiffness) {
+Contact make_contact(std::vector<contact::rigid_tool> tools, double friction, double penalty_stiffness,
+                     std::vector<contact::body_pair> body_pairs = {}) {
   static_assert(is_particle_to_segment<Contact>::value,
                 "this case has rigid tools: its configuration needs a contact policy "
                 "contact::particle_to_segment<Enforcement, Friction>, not contact::none");
@@ -31,7 +33,7 @@ Contact make_contact(std::vector<contact::rigid_tool> tools, double friction, do
   }
   enforcement_type e{};
   if constexpr (std::is_same_v<enforcement_type, contact::enforcement::penalty>) e.stiffness = penalty_stiffness;
-  return Contact(std::move(tools), f, e);
+  return Contact(std::move(tools), std::move(body_pairs), f, e);
 }
 
 }  // namespace rkpm::cases

@@ -10,6 +10,7 @@
 #include <boost/hana.hpp>
 
 #include "cases/block_forging.hpp"
+#include "cases/rod_on_rod.hpp"
 #include "cases/taylor_bar.hpp"
 #include "cases/wheel_forging.hpp"
 #include "outcome.hpp"
@@ -17,7 +18,8 @@
 
 namespace rkpm::runner {
 
-inline constexpr auto case_types = boost::hana::tuple_t<cases::taylor_bar, cases::block_forging, cases::wheel_forging>;
+inline constexpr auto case_types =
+    boost::hana::tuple_t<cases::taylor_bar, cases::block_forging, cases::wheel_forging, cases::rod_on_rod>;
 
 // Runs one case as the request says (parameters from --set, --end-time); dispatch.hpp.
 template <class Case>

@@ -4,6 +4,7 @@
 //                  (the paper's figures 4, 5 and 6)
 //   block_forging  shapes.png (0, 20, 40 and 60% compression), tool_force.png (force vs stroke)
 //   wheel_forging  shape.png (final shape with punch and die), punch_force.png
+//   rod_on_rod     shape.png (initial and final sections), radius.png, height.png (both rods)
 // figure_recorder<Case>::observe keeps the deformed cells when the run passes each shape time
 // (and writes them to shape_LABEL.csv for the user's own plots); plot() draws the figures after
 // the run from those shapes and the history the run recorded.
@@ -22,6 +23,7 @@
 #include "case_traits.hpp"
 
 #include "cases/block_forging.hpp"
+#include "cases/rod_on_rod.hpp"
 #include "cases/taylor_bar.hpp"
 #include "cases/wheel_forging.hpp"
 
@@ -124,6 +126,14 @@ class figure_recorder {
       shapes_png("shapes.png", "block forging: section at 0, 20, 40 and 60% compression", "% compression", false);
       history_png("tool_force.png", "block forging: top tool force per metre", "stroke (mm)", "force (MN/m)",
                   history.series("time_s", 2.0 * params_.tool_velocity_m_s * 1e3, "tool_force_N_per_m", 1e-6));
+    } else if constexpr (std::is_same_v<Case, cases::rod_on_rod>) {
+      shapes_png("shape.png", "rod on rod: initial and final sections of both rods (r, z)", "", true);
+      history_png("radius.png", "rod on rod: radius of each rod's impact face", "time (us)", "radius (mm)",
+                  {{"lower rod", history.series("time_s", 1e6, "lower_final_radius_mm", 1.0)},
+                   {"upper rod", history.series("time_s", 1e6, "upper_final_radius_mm", 1.0)}});
+      history_png("height.png", "rod on rod: height of each rod", "time (us)", "height (mm)",
+                  {{"lower rod", history.series("time_s", 1e6, "lower_final_height_mm", 1.0)},
+                   {"upper rod", history.series("time_s", 1e6, "upper_final_height_mm", 1.0)}});
     } else {
       shapes_png("shape.png", "wheel forging: final section with punch and die", "", true);
       history_png("punch_force.png", "wheel forging: punch force", "stroke (mm)", "force (kN)",
@@ -242,14 +252,24 @@ class figure_recorder {
     fig.render();
   }
 
+  using series_type = std::vector<std::pair<double, double>>;
   void history_png(const std::string& png, const std::string& title, const std::string& xlabel,
-                   const std::string& ylabel, const std::vector<std::pair<double, double>>& series) const {
-    if (series.empty()) return;
+                   const std::string& ylabel, const series_type& series) const {
+    history_png(png, title, xlabel, ylabel, std::vector<std::pair<std::string, series_type>>{{"", series}});
+  }
+  // Several labelled curves on one plot (a key when they have labels).
+  void history_png(const std::string& png, const std::string& title, const std::string& xlabel,
+                   const std::string& ylabel, const std::vector<std::pair<std::string, series_type>>& curves) const {
+    if (curves.empty() || curves.front().second.empty()) return;
     io::gnuplot_figure fig(dir_ / png);
-    fig << fmt::format("set title {}\nset xlabel {}\nset ylabel {}\nset grid\nset key off\n"
-                       "plot '-' using 1:2 with lines lw 2\n",
-                       io::gnuplot_quote(title), io::gnuplot_quote(xlabel), io::gnuplot_quote(ylabel));
-    fig.send1d(series);
+    fig << fmt::format("set title {}\nset xlabel {}\nset ylabel {}\nset grid\nset key {}\nplot ",
+                       io::gnuplot_quote(title), io::gnuplot_quote(xlabel), io::gnuplot_quote(ylabel),
+                       curves.front().first.empty() ? "off" : "top right");
+    for (std::size_t k = 0; k < curves.size(); ++k)
+      fig << fmt::format("{}'-' using 1:2 with lines lw 2 title {}", k ? ", " : "",
+                         io::gnuplot_quote(curves[k].first));
+    fig << "\n";
+    for (const auto& [label, series] : curves) fig.send1d(series);
     fig.render();
   }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The definition of build_model (model_builder.hpp): a run-time search of the Hana product of
-// methods.hpp's kernels, corrections and quadrature rules for the names asked for.
+// methods.hpp's kernels, corrections and quadrature rules for the names asked for; one model per
+// body when the cells form several (solver/body_models.hpp).
 
 #include <optional>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include <fmt/ranges.h>
 
 #include <rkpm/core/error.hpp>
+#include <rkpm/solver/body_models.hpp>
 
 #include "methods.hpp"
 #include "model_builder.hpp"
@@ -26,7 +28,7 @@ discrete_model build_model(std::string_view kernel, std::string_view correction,
     using C = typename decltype(+combo[hana::size_c<1>])::type;
     using Q = typename decltype(+combo[hana::size_c<2>])::type;
     if (!model && kernel == K::name && correction == C::name && rule == Q::name)
-      model.emplace(build_discrete_model<K, C, Q, Geometry>(std::move(particles), std::move(mesh), max_condition));
+      model.emplace(build_model_of_bodies<K, C, Q, Geometry>(std::move(particles), std::move(mesh), max_condition));
   });
   if (!model)
     fail("no compiled model for kernel '{}', correction '{}', quadrature '{}'; the choices are {}; {}; {}", kernel,

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
@@ -24,6 +25,11 @@ namespace rkpm {
 struct contact_body {
   std::span<const vec2> reference_position;  // X_I, #particles
   std::span<const double> mass;              // lumped m_I (axisymmetric: 2 pi r included)
+  // For contact between deformable bodies (contact/body_contact.hpp): the cells, whose
+  // boundaries are the master surfaces, and the rows N_J(X_I) that give physical positions.
+  const background_mesh* mesh = nullptr;
+  const shape_table<2>* at_particles = nullptr;
+  bool axisymmetric = false;
 };
 
 // The particles checked against the tools, given once at set-up: slave j is particle
@@ -36,7 +42,7 @@ struct contact_slaves {
 // What a contact policy reports after each step.
 struct contact_result {
   double max_penetration = 0;  // largest gap found on the predicted configuration
-  index_t active = 0;          // slave particles in contact with at least one tool
+  index_t active = 0;          // slave particles in contact with a tool, plus slave contacts between bodies
 };
 
 template <class C>

@@ -27,6 +27,7 @@
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/joined_name.hpp>
+#include <rkpm/contact/body_contact.hpp>
 #include <rkpm/contact/contact_checks.hpp>
 #include <rkpm/contact/contact_pair.hpp>
 #include <rkpm/contact/enforcement.hpp>
@@ -54,9 +55,18 @@ class particle_to_segment {
     for (const rigid_tool& tool : tools_) grid_.emplace_back(tool);
     reaction_.assign(tools_.size(), vec2::Zero());
   }
+  // Rigid tools and pairs of deformable bodies in contact (body_contact.hpp); either may be empty.
+  particle_to_segment(std::vector<rigid_tool> tools, std::vector<body_pair> body_pairs, Friction friction = {},
+                      Enforcement enforcement = {})
+      : particle_to_segment(std::move(tools), friction, enforcement) {
+    bodies_ = body_contact(std::move(body_pairs));
+  }
 
   const std::vector<rigid_tool>& tools() const { return tools_; }
   const std::vector<segment_grid>& grids() const { return grid_; }
+  const std::vector<body_pair>& body_pairs() const { return bodies_.pairs(); }
+  // Contacts between bodies in the last step.
+  const body_contact& bodies() const { return bodies_; }
   // Reaction on each tool in the last step (minus the contact forces it applied).
   const std::vector<vec2>& reactions() const { return reaction_; }
   // The contacts of the last step.
@@ -117,6 +127,7 @@ class particle_to_segment {
     touched_.assign(np, 0);
     touched_count_ = 0;
     reaction_.assign(nt, vec2::Zero());
+    bodies_.setup(body, slave_);
     ready_ = true;
   }
 
@@ -210,8 +221,10 @@ class particle_to_segment {
       const index_t I = touched_[s];
       touched_flag_[I] = 0;
     }
+    // Then the pairs of deformable bodies (body_contact.hpp).
+    bodies_.enforce(body, dt, enforcement_, friction_, d, v, result);
     // Remember where the slaves ended up, for the crossing test of the next call.
-    if (touched_count_ > 0)
+    if (touched_count_ > 0 || !bodies_.empty())
       for (index_t j = 0; j < ns; ++j) x_[j] = X[slave_[j]] + table_.interpolate(j, d);
     touched_count_ = 0;
     std::swap(x_prev_, x_);
@@ -241,6 +254,7 @@ class particle_to_segment {
 
   std::vector<rigid_tool> tools_;
   std::vector<segment_grid> grid_;
+  body_contact bodies_;
   Friction friction_;
   Enforcement enforcement_;
 

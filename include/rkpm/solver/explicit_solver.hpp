@@ -60,7 +60,9 @@ class explicit_solver {
     const contact_slaves slaves = select_slaves(model_, std::move(prob.slave_particles), has_tools());
     slave_ = slaves.particle;
     contact_.setup(body(), slaves);
-    if (prob.initial_velocity)
+    if (prob.initial_particle_velocity)
+      for (index_t I = 0; I < n; ++I) v_[I] = prob.initial_particle_velocity(I, model_.particles.position[I]);
+    else if (prob.initial_velocity)
       for (index_t I = 0; I < n; ++I) v_[I] = prob.initial_velocity(model_.particles.position[I]);
     constraints_.apply(0.0, v_);
     v_half_prev_ = v_;
@@ -179,7 +181,9 @@ class explicit_solver {
   const constraint_projector& constraints() const { return constraints_; }
   const std::vector<index_t>& slave_particles() const { return slave_; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
-  contact_body body() const { return {model_.particles.position, mass_}; }
+  contact_body body() const {
+    return {model_.particles.position, mass_, &model_.mesh, &model_.at_particles, G::is_axisymmetric};
+  }
 
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stresses()[q] / points_.det_F()[q]; }
@@ -215,7 +219,12 @@ class explicit_solver {
     a.part(s.contact_);
   }
 
-  bool has_tools() const { return !std::ranges::empty(contact_.tools()); }
+  // Rigid tools, or pairs of deformable bodies (contact/body_contact.hpp), to enforce contact with.
+  bool has_tools() const {
+    if constexpr (requires { contact_.body_pairs(); })
+      if (!contact_.body_pairs().empty()) return true;
+    return !std::ranges::empty(contact_.tools());
+  }
 
   void compute_internal_force() {
     points_.internal_force(model_, material_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});

@@ -1,7 +1,8 @@
 #pragma once
 // make_solver<Config>(problem, options): the one way to build a solver. It builds the discrete
-// model with the configuration's kernel, correction and quadrature rule, then the explicit
-// solver of its geometry, material and contact. The solver type depends only on those three,
+// model with the configuration's kernel, correction and quadrature rule (one per body when the
+// cells form several, solver/body_models.hpp), then the explicit solver of its geometry,
+// material and contact. The solver type depends only on those three,
 // so every kernel/correction/quadrature choice shares one instantiation of the time loop.
 //
 //   using method = rkpm::config<kernel::cubic_spline, correction::linear, quadrature::q2,
@@ -12,6 +13,7 @@
 #include <utility>
 
 #include <rkpm/solver/config.hpp>
+#include <rkpm/solver/body_models.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/explicit_solver.hpp>
 
@@ -27,7 +29,7 @@ using solver_for =
 template <class Config>
 solver_for<Config> make_solver(problem_for<Config> p, const run_options& options) {
   discrete_model model =
-      build_discrete_model<typename Config::kernel_type, typename Config::correction_type,
+      build_model_of_bodies<typename Config::kernel_type, typename Config::correction_type,
                            typename Config::quadrature_type, typename Config::geometry_type>(
           std::move(p.particles), std::move(p.mesh), options.max_moment_condition);
   return solver_for<Config>(std::move(model), std::move(p), options);

@@ -20,6 +20,9 @@ struct problem {
   Contact contact;
   // Physical initial velocity v0(X); the coefficients start at v0(X_I), exact for linear fields.
   std::function<vec2(const vec2&)> initial_velocity;
+  // Or per particle, taking precedence: v0 of particle I at X_I, for bodies that touch at t = 0
+  // (particles of two bodies at one position) and move apart.
+  std::function<vec2(index_t, const vec2&)> initial_particle_velocity;
   // Prescribed physical velocities; in axisymmetric geometry u_r = 0 on the axis is added.
   std::vector<velocity_constraint> constraints;
   vec2 body_force = vec2::Zero();  // acceleration (m/s^2), e.g. gravity

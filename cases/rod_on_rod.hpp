@@ -1,0 +1,158 @@
+#pragma once
+// Beyond the paper: two coaxial copper rods with the Taylor bar's data meet head on
+// (docs/method.md section 6.9), axisymmetric. The lower rod (z from -lower_height to 0) moves
+// up and the upper rod (z from 0 to upper_height) down, each at velocity_m_s; they touch at
+// z = 0 at t = 0. Contact is between the two deformable bodies, each slave against the other
+// (two_pass = 1) or the upper rod's particles against the lower rod's surface only. By
+// symmetry the contact plane of two identical rods is a frictionless rigid wall, so the default
+// case reproduces taylor_bar. Parameters SI; results in millimetres.
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/contact/body_contact.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/geometry/axisymmetric.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/problem.hpp>
+
+#include "cases/contact_setup.hpp"
+#include "cases/parameters.hpp"
+
+namespace rkpm::cases {
+
+struct rod_on_rod_parameters {
+  double velocity_m_s = 227.0;
+  double radius_m = 3.2e-3;
+  double lower_height_m = 32.4e-3;
+  double upper_height_m = 32.4e-3;
+  double youngs_modulus_Pa = 117e9;
+  double poisson_ratio = 0.35;
+  double density_kg_m3 = 8930.0;
+  double yield_stress_Pa = 400e6;
+  double hardening_modulus_Pa = 100e6;
+  double friction = 0.0;
+  double end_time_s = 80e-6;
+  int radial_particles = 21;
+  int axial_particles = 51;
+  double support_factor = 2.0;
+  double penalty_stiffness_N_m = 1e11;
+  bool two_pass = true;
+
+  using P = rod_on_rod_parameters;
+  static constexpr std::array fields = {
+      parameter<P>{"velocity_m_s", "m/s", "speed of each rod toward the other", &P::velocity_m_s},
+      parameter<P>{"radius_m", "m", "radius of both rods", &P::radius_m},
+      parameter<P>{"lower_height_m", "m", "height of the lower rod", &P::lower_height_m},
+      parameter<P>{"upper_height_m", "m", "height of the upper rod", &P::upper_height_m},
+      parameter<P>{"youngs_modulus_Pa", "Pa", "Young's modulus", &P::youngs_modulus_Pa},
+      parameter<P>{"poisson_ratio", "-", "Poisson's ratio", &P::poisson_ratio},
+      parameter<P>{"density_kg_m3", "kg/m^3", "density", &P::density_kg_m3},
+      parameter<P>{"yield_stress_Pa", "Pa", "initial yield stress", &P::yield_stress_Pa},
+      parameter<P>{"hardening_modulus_Pa", "Pa", "linear hardening modulus H", &P::hardening_modulus_Pa},
+      parameter<P>{"friction", "-", "Coulomb coefficient between the rods", &P::friction},
+      parameter<P>{"end_time_s", "s", "simulated time", &P::end_time_s},
+      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles, 2},
+      parameter<P>{"axial_particles", "-", "particles along z of the lower rod at resolution 1 (the upper rod at the same spacing)", &P::axial_particles, 2},
+      parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
+      parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
+      parameter<P>{"two_pass", "-", "1: each rod slave against the other; 0: the upper rod's particles against the lower rod only", &P::two_pass},
+  };
+};
+
+struct rod_on_rod {
+  static constexpr std::string_view name = "rod_on_rod";
+  static constexpr std::string_view description =
+      "two rods meeting head on, contact between deformable bodies (axisymmetric, beyond the paper)";
+  using parameters = rod_on_rod_parameters;
+  using geometry_type = geometry::axisymmetric;
+  using material_type = material::j2_plasticity<material::hardening::linear>;
+
+  static double end_time(const parameters& p) { return p.end_time_s; }
+
+  template <class Contact>
+  static problem<material_type, Contact> build(const parameters& p, int resolution) {
+    for (const auto& [label, value] : {std::pair{"velocity_m_s", p.velocity_m_s}, {"radius_m", p.radius_m},
+                                       {"lower_height_m", p.lower_height_m}, {"upper_height_m", p.upper_height_m},
+                                       {"end_time_s", p.end_time_s}})
+      require_positive(label, value);
+    if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
+    const int nr = refined_count(p.radial_particles, resolution);
+    const int n_lower = refined_count(p.axial_particles, resolution);
+    const double h = p.lower_height_m / (n_lower - 1);
+    const int n_upper = std::max(2, static_cast<int>(std::lround(p.upper_height_m / h)) + 1);
+    particle_set<2> particles;
+    background_mesh mesh;
+    add_rod(vec2(0.0, -p.lower_height_m), vec2(p.radius_m, 0.0), Eigen::Vector2i(nr, n_lower), p.support_factor,
+            particles, mesh);
+    add_rod(vec2(0.0, 0.0), vec2(p.radius_m, p.upper_height_m), Eigen::Vector2i(nr, n_upper), p.support_factor,
+            particles, mesh);
+    // Bodies are numbered by their first cells: 0 the lower rod, 1 the upper.
+    std::vector<contact::body_pair> pairs{{1, 0}};
+    if (p.two_pass) pairs.push_back({0, 1});
+    const double v = p.velocity_m_s;
+    return problem<material_type, Contact>{
+        .particles = std::move(particles),
+        .mesh = std::move(mesh),
+        .material = material_type({p.youngs_modulus_Pa, p.poisson_ratio, p.density_kg_m3},
+                                  material::hardening::linear{p.yield_stress_Pa, p.hardening_modulus_Pa}),
+        .contact = make_contact<Contact>({}, p.friction, p.penalty_stiffness_N_m, std::move(pairs)),
+        // The lower rod's particles lie at z <= 0, the upper's at z >= 0; the two rows at z = 0
+        // are told apart by their index (the upper rod's come second).
+        .initial_particle_velocity = [v, lower = static_cast<index_t>(nr * n_lower)](index_t I, const vec2&) {
+          return vec2(0.0, I < lower ? v : -v);
+        },
+    };
+  }
+
+  // Measures at the solver's current time (mm): each rod's height (extent in z) and the largest
+  // radius of the particles that started on its impact face (z = 0), the deepest penetration
+  // found so far, and the change of the total axial momentum relative to sum m |v0|.
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
+                                                             const std::vector<vec2>& /*tool_force*/) {
+    const auto x = s.particle_positions();
+    const auto& X = s.model().particles.position;
+    const auto& body = s.contact().bodies().partition().particle_body;
+    std::array<double, 2> zmin{1e300, 1e300}, zmax{-1e300, -1e300}, radius{0.0, 0.0};
+    double P = 0.0, P0 = 0.0, scale = 0.0;
+    for (std::size_t I = 0; I < x.size(); ++I) {
+      const auto b = static_cast<std::size_t>(body[I]);
+      zmin[b] = std::min(zmin[b], x[I][1]);
+      zmax[b] = std::max(zmax[b], x[I][1]);
+      if (std::abs(X[I][1]) <= 1e-9 * p.lower_height_m) radius[b] = std::max(radius[b], x[I][0]);
+      const double m = s.mass()[I];
+      P += m * s.coefficient_velocities()[I][1];
+      P0 += m * (b == 0 ? p.velocity_m_s : -p.velocity_m_s);
+      scale += m * p.velocity_m_s;
+    }
+    return {{"lower_final_height_mm", (zmax[0] - zmin[0]) * 1e3},
+            {"upper_final_height_mm", (zmax[1] - zmin[1]) * 1e3},
+            {"lower_final_radius_mm", radius[0] * 1e3},
+            {"upper_final_radius_mm", radius[1] * 1e3},
+            {"max_penetration_mm", s.max_penetration() * 1e3},
+            {"momentum_error", std::abs(P - P0) / scale}};
+  }
+
+ private:
+  static void add_rod(const vec2& lo, const vec2& hi, const Eigen::Vector2i& n, double support,
+                      particle_set<2>& particles, background_mesh& mesh) {
+    const auto rod = make_grid_particles<2>(lo, hi, n, support);
+    const auto cells = make_grid_mesh(lo, hi, n);
+    const auto offset = static_cast<index_t>(mesh.node.size());
+    particles.position.insert(particles.position.end(), rod.position.begin(), rod.position.end());
+    particles.volume.insert(particles.volume.end(), rod.volume.begin(), rod.volume.end());
+    particles.support.insert(particles.support.end(), rod.support.begin(), rod.support.end());
+    mesh.node.insert(mesh.node.end(), cells.node.begin(), cells.node.end());
+    for (auto cell : cells.cell) {
+      for (auto& i : cell) i += offset;
+      mesh.cell.push_back(cell);
+    }
+  }
+};
+
+}  // namespace rkpm::cases

@@ -1,0 +1,306 @@
+#pragma once
+// Contact between deformable bodies: the paper's slave and master bodies (docs/method.md section
+// 6.9). A body_pair names a slave body and a master body of the problem's mesh (the connected
+// parts of its cells, discretization/body_partition.hpp). The master surface is the master
+// body's boundary chains (discretization/boundary_chains.hpp; not the axis of a section), its
+// vertices the master particles at their physical positions x = X + sum_I N_I(X) d_I on the
+// predicted configuration. Each step, for every slave particle J of the slave body:
+//   (i)   the segment a-b of the master surface it penetrates: projection lambda in [0, 1],
+//         gap g = -(x_J - x_a) . n in (0, depth] with n the master's outward normal (the
+//         nearest such segment);
+//   (ii)  the normal and friction forces of (P4)-(P6) as for a rigid tool, with the velocity of
+//         the contact point x_c = (1 - lambda) x_a + lambda x_b as the tool velocity; the
+//         effective mass counts both sides, 1 / m_eff = sum_I N_I(X_J)^2 / m_I + sum_I c_I^2 / m_I,
+//         c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b), so that an isolated gap closes in one
+//         step, and is shared among contacts that move the same coefficients as (61a) shares it
+//         among slaves on a tool (effective_mass enforcement); the paper's form uses the reduced
+//         mass of the slave and the contact point;
+//   (iii) the force f_J on the slave goes to the slave body's coefficients through N_I(X_J)
+//         (P7), and its reaction -f_J at the contact point to the master body's through c_I (the
+//         transpose of (P7) on the master side). Both rows sum to one, so the bodies' linear
+//         momentum is unchanged to round-off.
+// The effective-mass sweeps repeat (ii)-(iii) on the updated configuration. The particles of
+// master surfaces must be the mesh nodes (grids and meshed bodies are).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include <rkpm/concepts/contact.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/discretization/body_partition.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
+
+namespace rkpm::contact {
+
+// Slave body and master body, as numbered by partition_bodies (the order of their first cells).
+struct body_pair {
+  index_t slave = 0;
+  index_t master = 1;
+};
+
+// One slave particle against one master segment in the last step.
+struct body_contact_pair {
+  index_t pair = 0;     // index into the body pairs
+  index_t slave = 0;    // particle
+  index_t a = 0, b = 0; // the segment's master particles
+  double lambda = 0.0;  // contact point (1 - lambda) x_a + lambda x_b
+  double gap = 0.0;     // penetration before correction
+  vec2 normal = vec2::Zero();  // the master's outward normal
+  double normal_force = 0.0;
+  vec2 tangential_force = vec2::Zero();
+  vec2 force() const { return normal_force * normal + tangential_force; }  // on the slave
+};
+
+class body_contact {
+ public:
+  body_contact() = default;
+  explicit body_contact(std::vector<body_pair> pairs) : pairs_(std::move(pairs)) {}
+
+  bool empty() const { return pairs_.empty(); }
+  const std::vector<body_pair>& pairs() const { return pairs_; }
+  std::span<const body_contact_pair> active_pairs() const {
+    return {active_.data(), static_cast<std::size_t>(active_count_)};
+  }
+  index_t bodies() const { return partition_.bodies; }
+  const body_partition& partition() const { return partition_; }
+
+  // `slaves`: the problem's slave particles; each pair's slaves are those of its slave body.
+  void setup(const contact_body& body, std::span<const index_t> slaves) {
+    if (pairs_.empty()) return;
+    if (!body.mesh || !body.at_particles)
+      fail("contact between bodies needs the background cells and the shape functions at the particles; the "
+           "solver passes them in contact_body");
+    const background_mesh& mesh = *body.mesh;
+    const std::span<const vec2> X = body.reference_position;
+    const auto n = static_cast<index_t>(X.size());
+    partition_ = partition_bodies(X, mesh);
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      for (index_t b : {pairs_[k].slave, pairs_[k].master})
+        if (b < 0 || b >= partition_.bodies)
+          fail("contact pair {}: body {} does not exist; the cells form {} bodies, numbered 0 to {} in the order "
+               "of their first cells",
+               k, b, partition_.bodies, partition_.bodies - 1);
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      if (pairs_[k].slave == pairs_[k].master)
+        fail("contact pair {}: body {} against itself; self-contact is not supported, name two bodies", k,
+             pairs_[k].slave);
+    if (static_cast<index_t>(mesh.node.size()) != n)
+      fail("contact between bodies: the master surfaces' vertices must be particles, but the mesh has {} nodes "
+           "for {} particles; give the particles at the mesh nodes",
+           mesh.node.size(), n);
+    double size = 0.0;
+    for (const vec2& x : X) size = std::max(size, x.cwiseAbs().maxCoeff());
+    const double axis = 1e-9 * size;
+    const auto chains = boundary_chains(mesh, [&](index_t i) { return body.axisymmetric && X[i][0] <= axis; });
+
+    segment_.assign(pairs_.size(), {});
+    slave_.assign(pairs_.size(), {});
+    depth_.assign(pairs_.size(), 0.0);
+    std::vector<char> surface(n, 0);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      double shortest = INFINITY;
+      for (const auto& c : chains)
+        if (c.body == pairs_[k].master)
+          for (index_t s = 0; s < c.segments(); ++s) {
+            const auto seg = c.segment(s);
+            segment_[k].push_back(seg);
+            shortest = std::min(shortest, (X[seg[1]] - X[seg[0]]).norm());
+            surface[seg[0]] = surface[seg[1]] = 1;
+          }
+      depth_[k] = 0.5 * shortest;
+      for (index_t J : slaves)
+        if (partition_.particle_body[J] == pairs_[k].slave) {
+          slave_[k].push_back(J);
+          surface[J] = 1;
+        }
+      if (slave_[k].empty())
+        fail("contact pair {}: slave body {} has no slave particles; give slaves on its boundary", k, pairs_[k].slave);
+    }
+    surface_.clear();
+    for (index_t I = 0; I < n; ++I)
+      if (surface[I]) surface_.push_back(I);
+    std::size_t capacity = 0;
+    for (const auto& s : slave_) capacity += s.size();
+    active_.assign(capacity, body_contact_pair{});
+    x_.assign(n, vec2::Zero());
+    w_.assign(n, vec2::Zero());
+    dforce_.assign(n, vec2::Zero());
+    coefficient_.assign(n, 0.0);
+    coverage_.assign(n, 0.0);
+    shared_mass_.assign(capacity, 0.0);
+    touched_flag_.assign(n, 0);
+    touched_.assign(n, 0);
+  }
+
+  template <class Enforcement, class Friction>
+  void enforce(const contact_body& body, double dt, const Enforcement& enforcement, const Friction& friction,
+               std::vector<vec2>& d, std::vector<vec2>& v, contact_result& result) {
+    if (pairs_.empty()) return;
+    const shape_table<2>& rows = *body.at_particles;
+    const std::span<const vec2> X = body.reference_position;
+    const std::span<const double> m = body.mass;
+    for (index_t I : surface_) physical_state(rows, X, I, d, v);
+
+    // The pairs one after the other (Gauss-Seidel): a second pass, the same two bodies with
+    // the roles swapped, sees the gaps the first one closed instead of closing them again.
+    active_count_ = 0;
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      if (k > 0)
+        for (index_t I : surface_) physical_state(rows, X, I, d, v);
+      const index_t first = active_count_;
+      detect(k, result);
+      resolve(first, rows, X, m, dt, enforcement, friction, d, v);
+    }
+  }
+
+ private:
+  // (i) for pair k on the current configuration: the segment each slave penetrates.
+  void detect(std::size_t k, contact_result& result) {
+    for (index_t J : slave_[k]) {
+      body_contact_pair best;
+      best.slave = -1;
+      for (const auto& [a, b] : segment_[k]) {
+        const vec2 t = x_[b] - x_[a];
+        const double L = t.norm();
+        const vec2 r = x_[J] - x_[a];
+        if (r.squaredNorm() > (L + depth_[k]) * (L + depth_[k])) continue;
+        const double lambda = r.dot(t) / (L * L);
+        if (lambda < 0.0 || lambda > 1.0) continue;
+        const vec2 normal(t[1] / L, -t[0] / L);
+        const double g = -r.dot(normal);
+        if (g <= 0.0 || g > depth_[k]) continue;
+        if (best.slave < 0 || g < best.gap)
+          best = body_contact_pair{static_cast<index_t>(k), J, a, b, lambda, g, normal, 0.0, vec2::Zero()};
+      }
+      if (best.slave < 0) continue;
+      active_[active_count_++] = best;
+      result.max_penetration = std::max(result.max_penetration, best.gap);
+      ++result.active;
+    }
+  }
+
+  // (ii)-(iii) for the contacts [first, active_count_), with the enforcement's sweeps (Jacobi:
+  // every contact of the pass on the same configuration).
+  template <class Enforcement, class Friction>
+  void resolve(index_t first, const shape_table<2>& rows, std::span<const vec2> X, std::span<const double> m,
+               double dt, const Enforcement& enforcement, const Friction& friction, std::vector<vec2>& d,
+               std::vector<vec2>& v) {
+    shared_masses(first, rows, m);
+    for (int sweep = 0; sweep < enforcement.sweeps && active_count_ > first; ++sweep) {
+      const double omega = sweep == 0 ? 1.0 : enforcement.relaxation;
+      if (sweep > 0)
+        for (index_t I : surface_) physical_state(rows, X, I, d, v);
+      for (index_t q = first; q < active_count_; ++q) {
+        body_contact_pair& p = active_[q];
+        const vec2 xc = (1.0 - p.lambda) * x_[p.a] + p.lambda * x_[p.b];
+        const vec2 vc = (1.0 - p.lambda) * w_[p.a] + p.lambda * w_[p.b];
+        const double g = sweep == 0 ? p.gap : -(x_[p.slave] - xc).dot(p.normal);
+        const double m_sh = shared_mass_[q];
+        // The paper's form (P4) closes the gap with the slave's mass against a rigid master; a
+        // master with mass m_c (its contact point's share) moves too, so the pair's reduced mass.
+        const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
+        const double m_s = m[p.slave] * m_c / (m[p.slave] + m_c);
+        const vec2 rel = w_[p.slave] - vc;
+        const vec2 v_t = rel - rel.dot(p.normal) * p.normal;
+        const double fn = std::max(0.0, p.normal_force + omega * enforcement.normal_force(g, dt, m_s, m_sh));
+        const vec2 trial = p.tangential_force - omega * enforcement.stick_mass(m_s, m_sh) * v_t / dt;
+        const vec2 ft = friction.limit(trial, fn);
+        const vec2 df = (fn - p.normal_force) * p.normal + (ft - p.tangential_force);
+        p.normal_force = fn;
+        p.tangential_force = ft;
+        spread(rows, p.slave, 1.0, df);
+        spread(rows, p.a, -(1.0 - p.lambda), df);
+        spread(rows, p.b, -p.lambda, df);
+      }
+      for (index_t s = 0; s < touched_count_; ++s) {
+        const index_t I = touched_[s];
+        const vec2 da = dforce_[I] / m[I];
+        v[I] += dt * da;
+        d[I] += dt * dt * da;
+        dforce_[I].setZero();
+        touched_flag_[I] = 0;
+      }
+      touched_count_ = 0;
+    }
+  }
+
+  void physical_state(const shape_table<2>& rows, std::span<const vec2> X, index_t I, const std::vector<vec2>& d,
+                      const std::vector<vec2>& v) {
+    vec2 u = vec2::Zero(), w = vec2::Zero();
+    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
+      u += rows.N[e] * d[rows.neighbor[e]];
+      w += rows.N[e] * v[rows.neighbor[e]];
+    }
+    x_[I] = X[I] + u;
+    w_[I] = w;
+  }
+
+  // f_I += scale N_I(X_J) df over the row of particle J.
+  void spread(const shape_table<2>& rows, index_t J, double scale, const vec2& df) {
+    if (scale == 0.0) return;
+    for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
+      const index_t I = rows.neighbor[e];
+      dforce_[I] += scale * rows.N[e] * df;
+      if (!touched_flag_[I]) {
+        touched_flag_[I] = 1;
+        touched_[touched_count_++] = I;
+      }
+    }
+  }
+
+  // Visits the row r_p of contact p: +N_I(X_J) for the slave's coefficients, -c_I for the
+  // master's, c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b) (each I once; coefficient_ is zero
+  // between calls).
+  template <class Visit>
+  void visit_row(const shape_table<2>& rows, const body_contact_pair& p, Visit&& visit) {
+    for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e) visit(rows.neighbor[e], rows.N[e]);
+    for (const auto& [vertex, weight] : {std::pair{p.a, 1.0 - p.lambda}, std::pair{p.b, p.lambda}})
+      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e)
+        coefficient_[rows.neighbor[e]] += weight * rows.N[e];
+    for (index_t vertex : {p.a, p.b})
+      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e) {
+        double& c = coefficient_[rows.neighbor[e]];
+        if (c != 0.0) visit(rows.neighbor[e], -c);
+        c = 0.0;
+      }
+  }
+
+  // The shared effective mass of each contact of the pass (docs/method.md (61a) with the master's
+  // row): a unit force on contact p closes the gap of contact q by dt^2 sum_I r_qI r_pI / m_I, so
+  //   m_sh,q = 1 / sum_I |r_qI| S_I / m_I,   S_I = sum over the pass's contacts p of |r_pI|,
+  // bounds every pattern of corrections (Gershgorin) and is 1 / sum_I r_qI^2 / m_I, the mass that
+  // closes an isolated gap in one step, when q shares no coefficient with another contact.
+  void shared_masses(index_t first, const shape_table<2>& rows, std::span<const double> m) {
+    for (index_t q = first; q < active_count_; ++q)
+      visit_row(rows, active_[q], [&](index_t I, double r) { coverage_[I] += std::abs(r); });
+    for (index_t q = first; q < active_count_; ++q) {
+      double s = 0.0;
+      visit_row(rows, active_[q], [&](index_t I, double r) { s += std::abs(r) * coverage_[I] / m[I]; });
+      shared_mass_[q] = 1.0 / s;
+    }
+    for (index_t q = first; q < active_count_; ++q)
+      visit_row(rows, active_[q], [&](index_t I, double) { coverage_[I] = 0.0; });
+  }
+
+  std::vector<body_pair> pairs_;
+  body_partition partition_;
+  std::vector<std::vector<std::array<index_t, 2>>> segment_;  // per pair: master segments (particles)
+  std::vector<std::vector<index_t>> slave_;                   // per pair: slave particles
+  std::vector<double> depth_;                                 // per pair
+  std::vector<index_t> surface_;  // particles whose physical state the detection reads
+
+  // Scratch, sized in setup().
+  std::vector<body_contact_pair> active_;
+  index_t active_count_ = 0;
+  std::vector<vec2> x_, w_, dforce_;  // #particles
+  std::vector<double> coefficient_, coverage_;  // #particles
+  std::vector<double> shared_mass_;              // #capacity of active_
+  std::vector<char> touched_flag_;
+  std::vector<index_t> touched_;
+  index_t touched_count_ = 0;
+};
+
+}  // namespace rkpm::contact
