@@ -2,8 +2,9 @@
 // Beyond the paper: two coaxial copper rods with the Taylor bar's data meet head on
 // (docs/method.md section 6.9), axisymmetric. The lower rod (z from -lower_height to 0) moves
 // up and the upper rod (z from 0 to upper_height) down, each at velocity_m_s; they touch at
-// z = 0 at t = 0. Contact is between the two deformable bodies, each slave against the other
-// (two_pass = 1) or the upper rod's particles against the lower rod's surface only. By
+// z = 0 at t = 0. Contact is between the two deformable bodies: the upper rod's particles are
+// slaves against the lower rod's surface (the paper's slave and master bodies), or, with
+// two_pass = 1, each rod is slave against the other in turn. By
 // symmetry the contact plane of two identical rods is a frictionless rigid wall, so the default
 // case reproduces taylor_bar. Parameters SI; results in millimetres.
 
@@ -41,7 +42,7 @@ struct rod_on_rod_parameters {
   int axial_particles = 51;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e11;
-  bool two_pass = true;
+  bool two_pass = false;
 
   using P = rod_on_rod_parameters;
   static constexpr std::array fields = {
