@@ -49,19 +49,34 @@ inline point_gradient gather(const shape_table<2>& t, index_t q, const std::vect
 
 namespace detail {
 
-// Gather, rule and scatter of the points first .. last-1.
+// Gather, rule and scatter of the points first .. last-1. The table is read through local
+// pointers and the row bounds are held in locals: the scatter's stores into f could otherwise
+// alias the table, and the compiler would reload its pointers for every entry.
 template <Geometry G, class PointRule>
-void traverse_points(const discrete_model& m, const std::vector<vec2>& grad, index_t first, index_t last,
+void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad, index_t first, index_t last,
                      const std::vector<vec2>& x, std::vector<vec2>& f, PointRule& rule) {
-  const auto& t = m.at_points;
+  const index_t* const offset = m.at_points.offset.data();
+  const particle_index* const neighbor = m.at_points.neighbor.data();
+  const double* const N = m.at_points.N.data();
+  const vec2* const grad = m.at_points.grad.data();
+  const vec2* const test = test_grad.data();
+  const vec2* const xs = x.data();
+  vec2* const fs = f.data();
   for (index_t q = first; q < last; ++q) {
+    const index_t begin = offset[q], end = offset[q + 1];
+    point_gradient g;
+    for (index_t e = begin; e < end; ++e) {
+      const vec2 xI = xs[neighbor[e]];
+      g.H.noalias() += xI * grad[e].transpose();
+      g.u += N[e] * xI;
+    }
     mat2 S = mat2::Zero();
     double hoop = 0.0;
-    rule(q, gather(t, q, x), S, hoop);
-    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) {
-      vec2& fI = f[t.neighbor[e]];
-      fI.noalias() += S * grad[e];
-      if constexpr (G::is_axisymmetric) fI[0] += hoop * t.N[e];
+    rule(q, g, S, hoop);
+    for (index_t e = begin; e < end; ++e) {
+      vec2& fI = fs[neighbor[e]];
+      fI.noalias() += S * test[e];
+      if constexpr (G::is_axisymmetric) fI[0] += hoop * N[e];
     }
   }
 }
