@@ -14,6 +14,9 @@ add_test(NAME tools.runner.bad_options
 add_test(NAME tools.runner.step_budget
          COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} step-budget $<TARGET_FILE:rkpm_run> ${rkpm_runner_work})
 add_test(NAME tools.runner.help COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} help $<TARGET_FILE:rkpm_run>)
+# Two rods head on (rod_on_rod) with every contact policy, several rules, the other kernel and correction.
+add_test(NAME tools.runner.rod_on_rod
+         COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} rod-on-rod $<TARGET_FILE:rkpm_run> ${rkpm_runner_work})
 # A 2 us Taylor bar on 21 x 21 particles writes the files the next two tests read.
 add_test(NAME tools.runner.run
          COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} run $<TARGET_FILE:rkpm_run> ${rkpm_runner_work}/taylor_bar)
@@ -21,7 +24,7 @@ add_test(NAME tools.runner.outputs COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_c
 add_test(NAME tools.runner.vtk COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} vtk ${rkpm_runner_work}/taylor_bar)
 set_tests_properties(tools.runner.run PROPERTIES FIXTURES_SETUP rkpm_runner_output)
 set_tests_properties(tools.runner.outputs tools.runner.vtk PROPERTIES FIXTURES_REQUIRED rkpm_runner_output)
-set_tests_properties(tools.runner.bad_options tools.runner.step_budget tools.runner.help tools.runner.run tools.runner.outputs tools.runner.vtk
+set_tests_properties(tools.runner.bad_options tools.runner.step_budget tools.runner.help tools.runner.rod_on_rod tools.runner.run tools.runner.outputs tools.runner.vtk
                      PROPERTIES TIMEOUT 120 LABELS "tools/runner"
                                 ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
 

@@ -6,6 +6,7 @@
     check_runner.py run RKPM_RUN OUT_DIR           a short Taylor bar run (the fixture of the next two)
     check_runner.py outputs OUT_DIR                summary.json keys and values, history.csv, .pvd, PNGs
     check_runner.py vtk OUT_DIR                    the VTK series read back with meshio (independent reader)
+    check_runner.py rod-on-rod RKPM_RUN WORK_DIR   rod_on_rod with every contact policy, rule, kernel, correction
 
 The numbers are checked against physics and the run's own request (particle count 21 x 21, end time,
 initial velocity 227 m/s, reference + displacement = current points), never against stored output.
@@ -135,6 +136,8 @@ def help_text(rkpm_run):
         "block_forging": ["tool_velocity_m_s", "width_m", "friction", "particles_per_side", "end_time_s"],
         "wheel_forging": ["tool_velocity_m_s", "stroke_m", "flow_coefficient_Pa", "flow_exponent",
                           "radial_particles"],
+        "rod_on_rod": ["velocity_m_s", "radius_m", "lower_height_m", "upper_height_m", "friction", "end_time_s",
+                       "radial_particles", "axial_particles", "two_pass"],
     }
     for case, names in expected.items():
         r = run([rkpm_run, case, "--help"])
@@ -324,6 +327,37 @@ def vtk(out):
           f"height {height_mm:.4f} mm")
 
 
+def rod_on_rod(rkpm_run, work):
+    """Two rods head on, small and short, with each --contact, --quadrature, --kernel and --correction:
+    the run ends, both rods shorten by the same amount within a spacing (symmetry), their faces spread,
+    total axial momentum is kept to round-off and no slave goes deeper than a tenth of a spacing."""
+    small = ["--set", "radial_particles=5", "--set", "axial_particles=11", "--end-time", "4e-6", "--no-plots",
+             "--quiet", "--threads", "1"]
+    spacing_mm = 32.4 / 10
+    variants = [["--contact", c] for c in ("paper", "effective_mass", "penalty")]
+    variants += [["--quadrature", q] for q in ("q4", "q2_split", "q2_tri", "q2+vci", "q4+vci", "scni")]
+    variants += [["--kernel", "quartic"], ["--correction", "quadratic", "--set", "support_factor=3"],
+                 ["--set", "two_pass=1"],
+                 ["--set", "friction=0.3"]]
+    for v in variants:
+        out = os.path.join(work, "rod_on_rod", "_".join(a.strip("-").replace("+", "") for a in v))
+        shutil.rmtree(out, ignore_errors=True)
+        extra = ["--set", "penalty_stiffness_N_m=1e9"] if v == ["--contact", "penalty"] else []
+        r = run([rkpm_run, "rod_on_rod", *small, *v, *extra, "--out", out])
+        check(r.returncode == 0, f"rod_on_rod {v}: exit status {r.returncode}: {r.stderr}")
+        if r.returncode != 0:
+            continue
+        res = json.load(open(os.path.join(out, "summary.json")))["results"]
+        lower, upper = res["lower_final_height_mm"], res["upper_final_height_mm"]
+        check(lower < 32.4 and upper < 32.4, f"rod_on_rod {v}: the rods did not shorten ({lower}, {upper})")
+        check(abs(lower - upper) < spacing_mm, f"rod_on_rod {v}: heights {lower} and {upper} differ by a spacing")
+        check(res["lower_final_radius_mm"] > 3.2 and res["upper_final_radius_mm"] > 3.2,
+              f"rod_on_rod {v}: the impact faces did not spread: {res}")
+        check(res["momentum_error"] < 1e-12, f"rod_on_rod {v}: momentum error {res['momentum_error']}")
+        check(res["max_penetration_mm"] < 0.1 * spacing_mm, f"rod_on_rod {v}: penetration {res['max_penetration_mm']}")
+    print(f"ok  rod_on_rod: {len(variants)} variants")
+
+
 def main(argv):
     mode = argv[1]
     if mode == "bad-options":
@@ -338,6 +372,8 @@ def main(argv):
         outputs(argv[2])
     elif mode == "vtk":
         vtk(argv[2])
+    elif mode == "rod-on-rod":
+        rod_on_rod(argv[2], argv[3])
     else:
         sys.exit(f"unknown mode {mode}")
     if failures:
