@@ -73,6 +73,8 @@ struct outcome {
   double momentum_error = 0.0;  // largest |P - P0| / sum m |v0| over every step
   double penetration_mm = 0.0;  // deepest penetration found in any step
   double plane_um = 0.0;        // mean z of the two impact faces at the end
+  double axis_um[2] = {0, 0};   // z of each rod's particle that started at r = 0 on its impact face
+  double min_dt_ns = 0.0;       // the smallest time step of the run
   double seconds = 0.0;
   long steps = 0;
   index_t particles = 0, points = 0;
@@ -98,11 +100,19 @@ outcome run_taylor_bar(const rod_on_rod::parameters& rods, int resolution, const
   auto solver = make_solver<method>(taylor_bar::build<contact_t>(p, resolution), options);  // built in place
   fmt::print("Taylor bar: {} particles, {} quadrature points, first time step {:.3g} ns\n",
              solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e9);
-  io::csv_writer history(dir / "history_taylor_bar.csv", {"time_us", "radius_mm", "height_mm"});
+  // Every step the wall's impulse on the bar; every 20 steps a row: the case's measures, the z
+  // of the face's centre (particle 0, at the origin) and the mean wall force since the last row.
+  io::csv_writer history(dir / "history_taylor_bar.csv", {"time_us", "radius_mm", "height_mm", "centre_um", "force_kN"});
+  double impulse = 0.0, last_t = 0.0, row_start = 0.0;
   solver.run([&](const auto& s) {
+    impulse += -s.contact().reactions()[0].y() * (s.time() - last_t);  // reactions() is the force on the wall
+    last_t = s.time();
+    if (s.steps() % row_every != 0 && s.time() < options.end_time * (1.0 - 1e-12)) return;
     const auto m = taylor_bar::measure(s, p, {});
-    history.row({s.time() * 1e6, m[0].second, m[1].second});
-  }, row_every);
+    const double force = s.time() > row_start ? impulse / (s.time() - row_start) : 0.0;
+    impulse = 0.0, row_start = s.time();
+    history.row({s.time() * 1e6, m[0].second, m[1].second, s.particle_positions()[0][1] * 1e6, force * 1e-3});
+  }, 1);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const auto x = solver.particle_positions();
@@ -117,10 +127,11 @@ outcome run_taylor_bar(const rod_on_rod::parameters& rods, int resolution, const
   o.penetration_mm = solver.max_penetration() * 1e3;
   o.seconds = seconds;
   o.steps = static_cast<long>(solver.steps());
+  o.min_dt_ns = solver.min_time_step() * 1e9;
   o.particles = solver.model().particle_count();
   o.points = solver.model().point_count();
-  fmt::print("  {} steps, {:.1f} s: radius {:.3f} mm, height {:.3f} mm\n", o.steps, seconds, o.radius_mm[0],
-             o.height_mm[0]);
+  fmt::print("  {} steps ({:.2f} to {:.2f} ns), {:.1f} s: radius {:.3f} mm, height {:.3f} mm\n", o.steps, o.min_dt_ns,
+             solver.max_time_step() * 1e9, seconds, o.radius_mm[0], o.height_mm[0]);
   return o;
 }
 
@@ -233,7 +244,7 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
 
   io::csv_writer history(dir / fmt::format("history_{}.csv", label),
                          {"time_us", "lower_radius_mm", "upper_radius_mm", "lower_height_mm", "upper_height_mm",
-                          "momentum_error", "plane_um", "contacts", "force_kN"});
+                          "momentum_error", "plane_um", "contacts", "force_kN", "lower_axis_um", "upper_axis_um"});
   outcome o;
   double impulse = 0.0, last_t = 0.0, row_start = 0.0, next_report = 0.0;
   bool shown = two_pass;  // Part 2 once, in the one-pass run
@@ -257,15 +268,19 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
     // faces), the number of slaves in contact and the mean force since the last row.
     const auto m = rod_on_rod::measure(s, p, {});
     const auto x = s.particle_positions();
-    double plane = 0.0;
+    double plane = 0.0, axis[2] = {0, 0};
     int face = 0;
     for (std::size_t I = 0; I < x.size(); ++I)
-      if (std::abs(X[I][1]) <= 1e-9 * p.lower_height_m) plane += x[I][1], ++face;
+      if (std::abs(X[I][1]) <= 1e-9 * p.lower_height_m) {
+        plane += x[I][1], ++face;
+        if (X[I][0] == 0.0) axis[body[I]] = x[I][1];  // the centre of the face
+      }
     plane /= face;
     const double mean_force = s.time() > row_start ? impulse / (s.time() - row_start) : 0.0;
     impulse = 0.0, row_start = s.time();
     history.row({s.time() * 1e6, m[2].second, m[3].second, m[0].second, m[1].second, error, plane * 1e6,
-                 static_cast<double>(s.contact().bodies().active_pairs().size()), mean_force * 1e-3});
+                 static_cast<double>(s.contact().bodies().active_pairs().size()), mean_force * 1e-3, axis[0] * 1e6,
+                 axis[1] * 1e6});
     if (s.time() >= next_report || end) {
       fmt::print("  {:>5.1f} us  step {:>6}  radius {:.3f} / {:.3f} mm  height {:.3f} / {:.3f} mm (lower / upper)"
                  "  plane {:+.2f} um\n",
@@ -273,7 +288,7 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
       std::fflush(stdout);
       next_report += 0.1 * options.end_time;
     }
-    o.plane_um = plane * 1e6;
+    o.plane_um = plane * 1e6, o.axis_um[0] = axis[0] * 1e6, o.axis_um[1] = axis[1] * 1e6;
   };
   solver.run(observe, 1);
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -288,11 +303,15 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
   o.radius_mm[0] = m[2].second, o.radius_mm[1] = m[3].second;
   o.penetration_mm = m[4].second;
   o.steps = static_cast<long>(solver.steps());
+  o.min_dt_ns = solver.min_time_step() * 1e9;
   o.particles = solver.model().particle_count();
   o.points = solver.model().point_count();
-  fmt::print("  {} steps, {:.1f} s; largest momentum error {:.1e}, deepest penetration {:.2f} um ({:.1f}% of the "
-             "axial spacing)\n",
-             o.steps, o.seconds, o.momentum_error, o.penetration_mm * 1e3, 100.0 * o.penetration_mm * 1e-3 / h);
+  fmt::print("  {} steps ({:.2f} to {:.2f} ns), {:.1f} s; largest momentum error {:.1e}, deepest penetration {:.2f} um "
+             "({:.1f}% of the axial spacing)\n",
+             o.steps, o.min_dt_ns, solver.max_time_step() * 1e9, o.seconds, o.momentum_error, o.penetration_mm * 1e3,
+             100.0 * o.penetration_mm * 1e-3 / h);
+  fmt::print("  centres of the impact faces (r = 0): lower rod z = {:+.1f} um, upper rod z = {:+.1f} um\n", o.axis_um[0],
+             o.axis_um[1]);
   return o;
 }
 
@@ -316,17 +335,18 @@ void plot(const fs::path& dir) {
       "plot " + sb + " skip 1 u (-$1):2 w p pt 7 ps 0.3 lc rgb '#cccccc' t 'initial', " + sb +
       " skip 1 u (-$1):(-$2) w p pt 7 ps 0.3 lc rgb '#cccccc' notitle, " + s1 +
       " skip 1 u 2:3 w p pt 7 ps 0.3 lc rgb '#cccccc' notitle, " + sb +
-      " skip 1 u (-$3):4 w p pt 7 ps 0.4 lc rgb 'black' t 'Taylor bar (left; below: mirrored)', " + sb +
+      " skip 1 u (-$3):4 w p pt 7 ps 0.4 lc rgb 'black' t 'Taylor bar', " + sb +
       " skip 1 u (-$3):(-$4) w p pt 7 ps 0.4 lc rgb 'black' notitle, " + s1 +
-      " skip 1 u ($1 == 0 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#1f77b4' t 'lower rod (master)', " + s1 +
-      " skip 1 u ($1 == 1 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#d62728' t 'upper rod (slave)'\n";
+      " skip 1 u ($1 == 0 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#1f77b4' t 'lower rod', " + s1 +
+      " skip 1 u ($1 == 1 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#d62728' t 'upper rod'\n";
   io::gnuplot_png(dir / "shape.png",
-                  common + "set size ratio -1\nset key top left\nset xlabel 'r (mm): Taylor bar left, rods right'\n"
-                           "set ylabel 'z (mm)'\nset yrange [-34:42]\n" + sections,
+                  common + "set size ratio -1\nset key top left samplen 1\n"
+                           "set xlabel 'r (mm): Taylor bar left, rods right'\nset ylabel 'z (mm)'\nset xrange [-9:9]\n"
+                           "set yrange [-34:48]\n" + sections,
                   {.width = 700, .height = 1000});
   // The impact faces closer: the lips of the two rods against the Taylor bar's.
   io::gnuplot_png(dir / "faces.png",
-                  common + "set size ratio -1\nset key top left\nset xlabel 'r (mm): Taylor bar left, rods right'\n"
+                  common + "set size ratio -1\nset key bottom left box opaque\nset xlabel 'r (mm): Taylor bar left, rods right'\n"
                            "set ylabel 'z (mm)'\nset xrange [-8:8]\nset yrange [-5:6]\n" + sections,
                   {.width = 900, .height = 700});
 
@@ -347,13 +367,14 @@ void plot(const fs::path& dir) {
                            "set ylabel '(P - P_0) / sum m |v_0|  (1e-15)'\nset key top left\nplot " + one +
                       " skip 1 u 1:($6 * 1e15) w l lw 2 lc rgb '#1f77b4' t 'one pass', " + two +
                       " skip 1 u 1:($6 * 1e15) w l lw 2 dt 2 lc rgb '#d62728' t 'two passes'\n"
-                      "set ylabel 'axial contact force (kN)'\nset key top right\nplot " + one +
+                      "set ylabel 'axial contact force (kN)'\nset key top right\nplot " + bar +
+                      " skip 1 u 1:5 w l lw 4 lc rgb '#bbbbbb' t 'Taylor bar (wall)', " + one +
                       " skip 1 u 1:9 w l lw 2 lc rgb '#1f77b4' t 'one pass', " + two +
                       " skip 1 u 1:9 w l lw 2 dt 2 lc rgb '#d62728' t 'two passes'\nunset multiplot\n",
                   {.width = 800, .height = 800});
 
   io::gnuplot_png(dir / "two_pass.png",
-                  common + "set multiplot layout 2,1\nset xlabel 'time (us)'\nset key bottom right\n"
+                  common + "set multiplot layout 3,1\nset xlabel 'time (us)'\nset key bottom right\n"
                            "set ylabel 'impact face radius (mm)'\nplot " + bar +
                       " skip 1 u 1:2 w l lw 4 lc rgb '#bbbbbb' t 'Taylor bar', " + one +
                       " skip 1 u 1:2 w l lw 2 lc rgb '#1f77b4' t 'one pass, lower', " + one +
@@ -362,8 +383,15 @@ void plot(const fs::path& dir) {
                       " skip 1 u 1:3 w l lw 2 dt 2 lc rgb '#d62728' t 'two passes, upper'\n"
                       "set ylabel 'contact plane z (um)'\nset key top left\nplot 0 w l lw 4 lc rgb '#bbbbbb' t "
                       "'symmetry', " + one + " skip 1 u 1:7 w l lw 2 lc rgb '#1f77b4' t 'one pass', " + two +
-                      " skip 1 u 1:7 w l lw 2 lc rgb '#d62728' t 'two passes'\nunset multiplot\n",
-                  {.width = 800, .height = 900});
+                      " skip 1 u 1:7 w l lw 2 lc rgb '#d62728' t 'two passes'\n"
+                      "set ylabel 'z at the centre of the faces (um)'\nset key top right\nplot " + bar +
+                      " skip 1 u 1:4 w l lw 4 lc rgb '#bbbbbb' t 'Taylor bar (and mirrored)', " + bar +
+                      " skip 1 u 1:(-$4) w l lw 4 lc rgb '#bbbbbb' notitle, " + one +
+                      " skip 1 u 1:10 w l lw 2 lc rgb '#1f77b4' t 'one pass, lower', " + one +
+                      " skip 1 u 1:11 w l lw 2 dt 2 lc rgb '#1f77b4' t 'one pass, upper', " + two +
+                      " skip 1 u 1:10 w l lw 2 lc rgb '#d62728' t 'two passes, lower', " + two +
+                      " skip 1 u 1:11 w l lw 2 dt 2 lc rgb '#d62728' t 'two passes, upper'\nunset multiplot\n",
+                  {.width = 800, .height = 1200});
   fmt::print("figures: shape.png, faces.png, history.png, momentum.png, two_pass.png in {}\n", dir.string());
 }
 
