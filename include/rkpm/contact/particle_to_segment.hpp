@@ -8,7 +8,9 @@
 //   (ii)  normal force (P4) along the segment normal n (out of the tool, toward the body), and the
 //         tangential force from the sticking force (P6) limited by the friction law (P5), with
 //         v_T the tangential velocity of J relative to the tool; redistribution (P7)
-//         f_I = sum_J N_I(X_J) f_J;
+//         f_I = sum_J N_I(X_J) f_J. The enforcement policy gets the slave's own mass m_J and its
+//         effective mass among the slaves in contact this step, m_sh (61a,
+//         shared_effective_mass.hpp), which is (61) for an isolated slave;
 //   (iii) da_I = f_I / m_I;   (iv) v_I += dt da_I, d_I += dt^2 da_I.
 // The tool velocity used for v_T is its mean over the step, (u(t) - u(t - dt)) / dt, the one
 // consistent with d_{n+1} = d_n + dt v_{n+1/2}; it equals the tool velocity for fixed and
@@ -35,6 +37,7 @@
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/segment_search.hpp>
+#include <rkpm/contact/shared_effective_mass.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
 
@@ -122,6 +125,8 @@ class particle_to_segment {
     pair_.assign(ns * nt, contact_pair{});
     pairs_ = 0;
     in_contact_.assign(ns, 0);
+    m_shared_.assign(ns * nt, 0.0);
+    shared_mass_.setup(np);
     dforce_.assign(np, vec2::Zero());
     touched_flag_.assign(np, 0);
     touched_.assign(np, 0);
@@ -176,6 +181,7 @@ class particle_to_segment {
 
     // (ii)-(iv), repeated for effective-mass sweeps: each sweep computes every pair's force
     // increment on the same configuration (Jacobi), then applies them together.
+    shared_mass_.compute(active_pairs(), table_, m, std::span<double>(m_shared_.data(), pairs_));
     for (int sweep = 0; sweep < enforcement_.sweeps && pairs_ > 0; ++sweep) {
       const double omega = sweep == 0 ? 1.0 : enforcement_.relaxation;
       if (sweep > 0)
@@ -189,8 +195,8 @@ class particle_to_segment {
         const double m_s = m[slave_[j]];
         const vec2 rel = v_[j] - v_tool_[p.tool];
         const vec2 v_t = rel - rel.dot(p.normal) * p.normal;
-        const double fn = std::max(0.0, p.normal_force + omega * enforcement_.normal_force(g, dt, m_s, m_eff_[j]));
-        const vec2 trial = p.tangential_force - omega * enforcement_.stick_mass(m_s, m_eff_[j]) * v_t / dt;
+        const double fn = std::max(0.0, p.normal_force + omega * enforcement_.normal_force(g, dt, m_s, m_shared_[q]));
+        const vec2 trial = p.tangential_force - omega * enforcement_.stick_mass(m_s, m_shared_[q]) * v_t / dt;
         const vec2 ft = friction_.limit(trial, fn);
         const vec2 df = (fn - p.normal_force) * p.normal + (ft - p.tangential_force);
         p.normal_force = fn;
@@ -270,6 +276,8 @@ class particle_to_segment {
   std::vector<contact_pair> pair_;             // capacity #tools x #slaves
   index_t pairs_ = 0;
   std::vector<char> in_contact_;               // #slaves
+  std::vector<double> m_shared_;               // m_sh (61a) of each active pair, capacity #tools x #slaves
+  shared_effective_mass shared_mass_;
   std::vector<vec2> dforce_;                   // #particles
   std::vector<char> touched_flag_;             // #particles
   std::vector<index_t> touched_;               // #particles
