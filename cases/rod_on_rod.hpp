@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <rkpm/contact/body_contact.hpp>
+#include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
@@ -88,10 +89,12 @@ struct rod_on_rod {
     const int n_upper = std::max(2, static_cast<int>(std::lround(p.upper_height_m / h)) + 1);
     particle_set<2> particles;
     background_mesh mesh;
-    add_rod(vec2(0.0, -p.lower_height_m), vec2(p.radius_m, 0.0), Eigen::Vector2i(nr, n_lower), p.support_factor,
-            particles, mesh);
-    add_rod(vec2(0.0, 0.0), vec2(p.radius_m, p.upper_height_m), Eigen::Vector2i(nr, n_upper), p.support_factor,
-            particles, mesh);
+    const auto add_rod = [&](const vec2& lo, const vec2& hi, int axial) {
+      const Eigen::Vector2i n(nr, axial);
+      append_body(particles, mesh, make_grid_particles<2>(lo, hi, n, p.support_factor), make_grid_mesh(lo, hi, n));
+    };
+    add_rod(vec2(0.0, -p.lower_height_m), vec2(p.radius_m, 0.0), n_lower);
+    add_rod(vec2(0.0, 0.0), vec2(p.radius_m, p.upper_height_m), n_upper);
     // Bodies are numbered by their first cells: 0 the lower rod, 1 the upper.
     std::vector<contact::body_pair> pairs{{1, 0}};
     if (p.two_pass) pairs.push_back({0, 1});
@@ -139,21 +142,6 @@ struct rod_on_rod {
             {"momentum_error", std::abs(P - P0) / scale}};
   }
 
- private:
-  static void add_rod(const vec2& lo, const vec2& hi, const Eigen::Vector2i& n, double support,
-                      particle_set<2>& particles, background_mesh& mesh) {
-    const auto rod = make_grid_particles<2>(lo, hi, n, support);
-    const auto cells = make_grid_mesh(lo, hi, n);
-    const auto offset = static_cast<index_t>(mesh.node.size());
-    particles.position.insert(particles.position.end(), rod.position.begin(), rod.position.end());
-    particles.volume.insert(particles.volume.end(), rod.volume.begin(), rod.volume.end());
-    particles.support.insert(particles.support.end(), rod.support.begin(), rod.support.end());
-    mesh.node.insert(mesh.node.end(), cells.node.begin(), cells.node.end());
-    for (auto cell : cells.cell) {
-      for (auto& i : cell) i += offset;
-      mesh.cell.push_back(cell);
-    }
-  }
 };
 
 }  // namespace rkpm::cases

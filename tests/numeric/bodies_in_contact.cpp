@@ -42,17 +42,7 @@ const double c = std::sqrt(E / rho);
 void add_bar(const vec2& lo, const vec2& hi, particle_set<2>& p, background_mesh& m, double spacing = h) {
   const Eigen::Vector2i n(static_cast<int>(std::lround((hi - lo)[0] / spacing)) + 1,
                           static_cast<int>(std::lround((hi - lo)[1] / spacing)) + 1);
-  const auto bar = make_grid_particles<2>(lo, hi, n, 2.0);
-  const auto cells = make_grid_mesh(lo, hi, n);
-  const auto offset = static_cast<index_t>(m.node.size());
-  p.position.insert(p.position.end(), bar.position.begin(), bar.position.end());
-  p.volume.insert(p.volume.end(), bar.volume.begin(), bar.volume.end());
-  p.support.insert(p.support.end(), bar.support.begin(), bar.support.end());
-  m.node.insert(m.node.end(), cells.node.begin(), cells.node.end());
-  for (auto cell : cells.cell) {
-    for (auto& i : cell) i += offset;
-    m.cell.push_back(cell);
-  }
+  append_body(p, m, make_grid_particles<2>(lo, hi, n, 2.0), make_grid_mesh(lo, hi, n));
 }
 
 struct impact {

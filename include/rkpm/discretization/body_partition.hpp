@@ -3,6 +3,7 @@
 // of the background cells (cell_bodies in boundary_chains.hpp), and every particle belongs to
 // the body whose cells hold it (the body of its node when the particles are the mesh nodes).
 // Each body then gets its own shape functions, so kernels never reach across bodies.
+//   append_body       adds one body's particles and cells to a problem's (node numbers shifted)
 //   partition_bodies  particle -> body and cell -> body; refuses a particle outside every body's
 //                     cells and bodies that overlap (a node or cell centre of one strictly inside
 //                     a cell of another); bodies that touch along their boundaries are allowed.
@@ -17,6 +18,7 @@
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
+#include <rkpm/discretization/particle_set.hpp>
 
 namespace rkpm {
 
@@ -33,6 +35,22 @@ struct body_partition {
     return out;
   }
 };
+
+// Appends a body's particles and cells to those of a problem with several bodies; the body's
+// cell nodes are renumbered after the nodes already there. Bodies are numbered by their first
+// cells, so the first body appended is body 0.
+inline void append_body(particle_set<2>& particles, background_mesh& mesh, const particle_set<2>& body,
+                        const background_mesh& cells) {
+  const auto offset = static_cast<index_t>(mesh.node.size());
+  particles.position.insert(particles.position.end(), body.position.begin(), body.position.end());
+  particles.volume.insert(particles.volume.end(), body.volume.begin(), body.volume.end());
+  particles.support.insert(particles.support.end(), body.support.begin(), body.support.end());
+  mesh.node.insert(mesh.node.end(), cells.node.begin(), cells.node.end());
+  for (auto cell : cells.cell) {
+    for (auto& i : cell) i += offset;
+    mesh.cell.push_back(cell);
+  }
+}
 
 namespace detail {
 
