@@ -21,6 +21,7 @@
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
+#include <rkpm/core/error.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm {
@@ -90,6 +91,11 @@ template <Geometry G, class PointRule>
 void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, std::vector<vec2>& f,
                            PointRule&& rule) {
   const point_traversal& tr = m.traversal;
+  // A model whose table was changed after its traversal was made would silently skip points.
+  if (tr.tile_start.back() != m.point_count())
+    fail("force loop: the point traversal covers {} points but the model has {}: call "
+         "make_point_traversal(at_points, particles) after building or changing the table",
+         tr.tile_start.back(), m.point_count());
   const std::vector<vec2>& grad = m.test_gradients();
   const index_t n = m.particle_count();
 #pragma omp parallel
