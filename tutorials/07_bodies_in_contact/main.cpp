@@ -330,25 +330,29 @@ void plot(const fs::path& dir) {
 
   // The final sections: the rods on the right (body 0 below z = 0, body 1 above), on the left
   // the Taylor bar and its mirror image in the wall, z -> -z, which the lower rod should match.
-  const std::string sb = file("shape_taylor_bar.csv"), s1 = file("shape_one_pass.csv");
-  const std::string sections =
-      "plot " + sb + " skip 1 u (-$1):2 w p pt 7 ps 0.3 lc rgb '#cccccc' t 'initial', " + sb +
-      " skip 1 u (-$1):(-$2) w p pt 7 ps 0.3 lc rgb '#cccccc' notitle, " + s1 +
-      " skip 1 u 2:3 w p pt 7 ps 0.3 lc rgb '#cccccc' notitle, " + sb +
-      " skip 1 u (-$3):4 w p pt 7 ps 0.4 lc rgb 'black' t 'Taylor bar', " + sb +
-      " skip 1 u (-$3):(-$4) w p pt 7 ps 0.4 lc rgb 'black' notitle, " + s1 +
-      " skip 1 u ($1 == 0 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#1f77b4' t 'lower rod', " + s1 +
-      " skip 1 u ($1 == 1 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#d62728' t 'upper rod'\n";
+  const std::string sb = file("shape_taylor_bar.csv");
+  auto sections = [&](const std::string& s1) {
+    return "plot " + sb + " skip 1 u (-$1):2 w p pt 7 ps 0.3 lc rgb '#cccccc' t 'initial', " + sb +
+        " skip 1 u (-$1):(-$2) w p pt 7 ps 0.3 lc rgb '#cccccc' notitle, " + s1 +
+        " skip 1 u 2:3 w p pt 7 ps 0.3 lc rgb '#cccccc' notitle, " + sb +
+        " skip 1 u (-$3):4 w p pt 7 ps 0.4 lc rgb 'black' t 'Taylor bar', " + sb +
+        " skip 1 u (-$3):(-$4) w p pt 7 ps 0.4 lc rgb 'black' notitle, " + s1 +
+        " skip 1 u ($1 == 0 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#1f77b4' t 'lower rod', " + s1 +
+        " skip 1 u ($1 == 1 ? $4 : 1/0):5 w p pt 7 ps 0.4 lc rgb '#d62728' t 'upper rod'\n";
+  };
   io::gnuplot_png(dir / "shape.png",
                   common + "set size ratio -1\nset key top left samplen 1\n"
                            "set xlabel 'r (mm): Taylor bar left, rods right'\nset ylabel 'z (mm)'\nset xrange [-9:9]\n"
-                           "set yrange [-34:48]\n" + sections,
+                           "set yrange [-34:48]\n" + sections(file("shape_one_pass.csv")),
                   {.width = 700, .height = 1000});
-  // The impact faces closer: the lips of the two rods against the Taylor bar's.
-  io::gnuplot_png(dir / "faces.png",
-                  common + "set size ratio -1\nset key bottom left box opaque\nset xlabel 'r (mm): Taylor bar left, rods right'\n"
-                           "set ylabel 'z (mm)'\nset xrange [-8:8]\nset yrange [-5:6]\n" + sections,
-                  {.width = 900, .height = 700});
+  // The impact faces closer, one pass and two: the lips of the two rods against the Taylor bar's.
+  for (const std::string run : {"one_pass", "two_pass"})
+    io::gnuplot_png(dir / (run == "one_pass" ? "faces.png" : "faces_two_pass.png"),
+                    common + "set size ratio -1\nset key bottom left box opaque\nset xlabel 'r (mm): Taylor bar left, "
+                             "rods right (" + (run == "one_pass" ? "one pass" : "two passes") + ")'\n"
+                             "set ylabel 'z (mm)'\nset xrange [-8:8]\nset yrange [-5:6]\n" +
+                        sections(file("shape_" + run + ".csv")),
+                    {.width = 900, .height = 700});
 
   io::gnuplot_png(dir / "history.png",
                   common + "set multiplot layout 2,1\nset xlabel 'time (us)'\nset key bottom right\n"
@@ -392,7 +396,8 @@ void plot(const fs::path& dir) {
                       " skip 1 u 1:10 w l lw 2 lc rgb '#d62728' t 'two passes, lower', " + two +
                       " skip 1 u 1:11 w l lw 2 dt 2 lc rgb '#d62728' t 'two passes, upper'\nunset multiplot\n",
                   {.width = 800, .height = 1200});
-  fmt::print("figures: shape.png, faces.png, history.png, momentum.png, two_pass.png in {}\n", dir.string());
+  fmt::print("figures: shape.png, faces.png, faces_two_pass.png, history.png, momentum.png, two_pass.png in {}\n",
+             dir.string());
 }
 
 int main(int argc, char** argv) {
