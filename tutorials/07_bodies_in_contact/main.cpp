@@ -32,6 +32,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -66,6 +67,13 @@ static_assert(std::is_same_v<rod_on_rod::geometry_type, taylor_bar::geometry_typ
 
 // Every 20 steps one row of history.
 constexpr int row_every = 20;
+
+// A case's measure by its name (the names of its summary.json).
+double measured(const std::vector<std::pair<std::string, double>>& m, const std::string& name) {
+  for (const auto& [key, value] : m)
+    if (key == name) return value;
+  throw std::runtime_error("the case measures no '" + name + "'");
+}
 
 struct outcome {
   // [0] the lower rod, [1] the upper rod; the Taylor bar fills [0] only.
@@ -111,7 +119,8 @@ outcome run_taylor_bar(const rod_on_rod::parameters& rods, int resolution, const
     const auto m = taylor_bar::measure(s, p, {});
     const double force = s.time() > row_start ? impulse / (s.time() - row_start) : 0.0;
     impulse = 0.0, row_start = s.time();
-    history.row({s.time() * 1e6, m[0].second, m[1].second, s.particle_positions()[0][1] * 1e6, force * 1e-3});
+    history.row({s.time() * 1e6, measured(m, "radius_mm"), measured(m, "height_mm"), s.particle_positions()[0][1] * 1e6,
+                 force * 1e-3});
   }, 1);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -122,8 +131,8 @@ outcome run_taylor_bar(const rod_on_rod::parameters& rods, int resolution, const
 
   const auto m = taylor_bar::measure(solver, p, {});
   outcome o;
-  o.radius_mm[0] = m[0].second;
-  o.height_mm[0] = m[1].second;
+  o.radius_mm[0] = measured(m, "radius_mm");
+  o.height_mm[0] = measured(m, "height_mm");
   o.penetration_mm = solver.max_penetration() * 1e3;
   o.seconds = seconds;
   o.steps = static_cast<long>(solver.steps());
@@ -267,6 +276,8 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
     // A row: radii and heights (the case's measure), the contact plane (mean z of both impact
     // faces), the number of slaves in contact and the mean force since the last row.
     const auto m = rod_on_rod::measure(s, p, {});
+    const double radius[2] = {measured(m, "lower_final_radius_mm"), measured(m, "upper_final_radius_mm")};
+    const double height[2] = {measured(m, "lower_final_height_mm"), measured(m, "upper_final_height_mm")};
     const auto x = s.particle_positions();
     double plane = 0.0, axis[2] = {0, 0};
     int face = 0;
@@ -278,13 +289,13 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
     plane /= face;
     const double mean_force = s.time() > row_start ? impulse / (s.time() - row_start) : 0.0;
     impulse = 0.0, row_start = s.time();
-    history.row({s.time() * 1e6, m[2].second, m[3].second, m[0].second, m[1].second, error, plane * 1e6,
+    history.row({s.time() * 1e6, radius[0], radius[1], height[0], height[1], error, plane * 1e6,
                  static_cast<double>(s.contact().bodies().active_pairs().size()), mean_force * 1e-3, axis[0] * 1e6,
                  axis[1] * 1e6});
     if (s.time() >= next_report || end) {
       fmt::print("  {:>5.1f} us  step {:>6}  radius {:.3f} / {:.3f} mm  height {:.3f} / {:.3f} mm (lower / upper)"
                  "  plane {:+.2f} um\n",
-                 s.time() * 1e6, s.steps(), m[2].second, m[3].second, m[0].second, m[1].second, plane * 1e6);
+                 s.time() * 1e6, s.steps(), radius[0], radius[1], height[0], height[1], plane * 1e6);
       std::fflush(stdout);
       next_report += 0.1 * options.end_time;
     }
@@ -299,9 +310,9 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
     shape.row({static_cast<double>(body[I]), X[I][0] * 1e3, X[I][1] * 1e3, x[I][0] * 1e3, x[I][1] * 1e3});
 
   const auto m = rod_on_rod::measure(solver, p, {});
-  o.height_mm[0] = m[0].second, o.height_mm[1] = m[1].second;
-  o.radius_mm[0] = m[2].second, o.radius_mm[1] = m[3].second;
-  o.penetration_mm = m[4].second;
+  o.height_mm[0] = measured(m, "lower_final_height_mm"), o.height_mm[1] = measured(m, "upper_final_height_mm");
+  o.radius_mm[0] = measured(m, "lower_final_radius_mm"), o.radius_mm[1] = measured(m, "upper_final_radius_mm");
+  o.penetration_mm = measured(m, "max_penetration_mm");
   o.steps = static_cast<long>(solver.steps());
   o.min_dt_ns = solver.min_time_step() * 1e9;
   o.particles = solver.model().particle_count();
