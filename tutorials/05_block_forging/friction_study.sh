@@ -5,7 +5,7 @@
 # Usage: friction_study.sh [contact policy: effective_mass|paper|penalty] [output directory]
 #        RKPM_RUN=path/to/rkpm_run to use a runner other than build/tools/runner/rkpm_run.
 # Runs one after the other on one thread (about 25 minutes in all on a 2-core machine, most of
-# it at resolution 3); a run whose summary.json exists is not repeated.
+# it at resolution 3); a run whose summary.json says completed is not repeated.
 set -e
 contact=${1:-effective_mass}
 out=${2:-results/05_block_forging/friction_study}
@@ -19,10 +19,11 @@ frictions="0 0.2 0.5 1000"
 for K in $resolutions; do
   for mu in $frictions; do
     d="$out/$contact-r$K-mu$mu"
-    [ -f "$d/summary.json" ] && continue
+    grep -qs '"status": "completed"' "$d/summary.json" && continue
     echo "block_forging, $contact, resolution $K, mu = $mu"
     OMP_NUM_THREADS=1 "$run" block_forging --quadrature q4 --contact "$contact" --resolution "$K" \
       --set friction="$mu" --threads 1 --no-plots --quiet --out "$d"
+    grep -qs '"status": "completed"' "$d/summary.json" || { echo "the run in $d did not complete" >&2; exit 1; }
   done
 done
 
@@ -55,7 +56,7 @@ cat "$table"
 plot="$out/force_stroke_$contact.png"
 {
   echo "set terminal pngcairo size 900,600; set output '$plot'"
-  echo "set datafile separator ','; set key top left; set grid"
+  echo "set datafile separator ','; set key top left; set grid; set termoption noenhanced"
   echo "set xlabel 'stroke (mm)'; set ylabel 'top tool force (MN/m)'"
   echo "set title 'block forging, Q4, $contact: force against stroke (dash: resolution)'"
   printf "plot "
