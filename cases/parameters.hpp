@@ -80,6 +80,15 @@ void set_parameter(P& p, std::string_view name, std::string_view text) {
   fail("unknown parameter '{}'; the parameters are: {}", name, names);
 }
 
+// The fields of several lists as one (a case that shares a block of parameters with another).
+template <class P, std::size_t... N>
+constexpr std::array<parameter<P>, (N + ...)> join_fields(const std::array<parameter<P>, N>&... lists) {
+  std::array<parameter<P>, (N + ...)> out{};
+  std::size_t k = 0;
+  ((std::copy(lists.begin(), lists.end(), out.begin() + k), k += N), ...);
+  return out;
+}
+
 // One line per parameter: name, default (the value in p), unit and description.
 template <class P>
 std::string describe_parameters(const P& p) {

@@ -22,15 +22,33 @@
 
 namespace rkpm::cases {
 
-struct taylor_bar_parameters {
-  double velocity_m_s = 227.0;
-  double radius_m = 3.2e-3;
-  double height_m = 32.4e-3;
+// The copper of the Taylor bar (the paper's Table 2), shared by the cases that use it.
+struct taylor_copper {
   double youngs_modulus_Pa = 117e9;
   double poisson_ratio = 0.35;
   double density_kg_m3 = 8930.0;
   double yield_stress_Pa = 400e6;
   double hardening_modulus_Pa = 100e6;
+
+  template <class P>
+  static constexpr std::array<parameter<P>, 5> fields() {
+    return {parameter<P>{"youngs_modulus_Pa", "Pa", "Young's modulus", &P::youngs_modulus_Pa},
+            parameter<P>{"poisson_ratio", "-", "Poisson's ratio", &P::poisson_ratio},
+            parameter<P>{"density_kg_m3", "kg/m^3", "density", &P::density_kg_m3},
+            parameter<P>{"yield_stress_Pa", "Pa", "initial yield stress", &P::yield_stress_Pa},
+            parameter<P>{"hardening_modulus_Pa", "Pa", "linear hardening modulus H", &P::hardening_modulus_Pa}};
+  }
+  material::j2_plasticity<material::hardening::linear> material() const {
+    return material::j2_plasticity<material::hardening::linear>(
+        {youngs_modulus_Pa, poisson_ratio, density_kg_m3},
+        material::hardening::linear{yield_stress_Pa, hardening_modulus_Pa});
+  }
+};
+
+struct taylor_bar_parameters : taylor_copper {
+  double velocity_m_s = 227.0;
+  double radius_m = 3.2e-3;
+  double height_m = 32.4e-3;
   double friction = 0.0;
   double end_time_s = 80e-6;
   int radial_particles = 21;
@@ -39,22 +57,19 @@ struct taylor_bar_parameters {
   double penalty_stiffness_N_m = 1e11;
 
   using P = taylor_bar_parameters;
-  static constexpr std::array fields = {
-      parameter<P>{"velocity_m_s", "m/s", "impact velocity", &P::velocity_m_s},
-      parameter<P>{"radius_m", "m", "initial radius R0", &P::radius_m},
-      parameter<P>{"height_m", "m", "initial height L0", &P::height_m},
-      parameter<P>{"youngs_modulus_Pa", "Pa", "Young's modulus", &P::youngs_modulus_Pa},
-      parameter<P>{"poisson_ratio", "-", "Poisson's ratio", &P::poisson_ratio},
-      parameter<P>{"density_kg_m3", "kg/m^3", "density", &P::density_kg_m3},
-      parameter<P>{"yield_stress_Pa", "Pa", "initial yield stress", &P::yield_stress_Pa},
-      parameter<P>{"hardening_modulus_Pa", "Pa", "linear hardening modulus H", &P::hardening_modulus_Pa},
-      parameter<P>{"friction", "-", "Coulomb coefficient at the wall", &P::friction},
-      parameter<P>{"end_time_s", "s", "simulated time", &P::end_time_s},
-      parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles, 2},
-      parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles, 2},
-      parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
-      parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
-  };
+  static constexpr auto fields = join_fields<P>(
+      std::array{parameter<P>{"velocity_m_s", "m/s", "impact velocity", &P::velocity_m_s},
+                 parameter<P>{"radius_m", "m", "initial radius R0", &P::radius_m},
+                 parameter<P>{"height_m", "m", "initial height L0", &P::height_m}},
+      taylor_copper::fields<P>(),
+      std::array{
+          parameter<P>{"friction", "-", "Coulomb coefficient at the wall", &P::friction},
+          parameter<P>{"end_time_s", "s", "simulated time", &P::end_time_s},
+          parameter<P>{"radial_particles", "-", "particles along r at resolution 1", &P::radial_particles, 2},
+          parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles, 2},
+          parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
+          parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy",
+                       &P::penalty_stiffness_N_m}});
 };
 
 struct taylor_bar {
@@ -82,8 +97,7 @@ struct taylor_bar {
     problem<material_type, Contact> pr{
         .particles = make_grid_particles<2>(lo, hi, n, p.support_factor),
         .mesh = make_grid_mesh(lo, hi, n),
-        .material = material_type({p.youngs_modulus_Pa, p.poisson_ratio, p.density_kg_m3},
-                                  material::hardening::linear{p.yield_stress_Pa, p.hardening_modulus_Pa}),
+        .material = p.material(),
         .contact = make_contact<Contact>(
             {contact::rigid_tool("wall", {vec2(-p.radius_m, 0.0), vec2(8.0 * p.radius_m, 0.0)},
                                  contact::side::left, contact::tool_motion::fixed())},

@@ -2,7 +2,8 @@
 // (cases/taylor_bar.hpp): by symmetry the plane where they meet stays at z = 0 and carries no
 // shear, so each rod is a Taylor bar on a frictionless rigid wall. Small bodies (9 x 21
 // particles per rod) and the first 12 us of the impact, with each enforcement policy, the upper
-// rod's particles slave against the lower rod (one pass):
+// rod's particles slave against the lower rod (one pass, the more accurate at this size and
+// time; at the paper's resolution and 80 us two passes are, docs/method.md section 6.9):
 //   - each rod's height and impact-face radius within 1.5% of the Taylor bar's (up to 1.0%
 //     measured at this size, the master rod's radius the farthest; the full case at the paper's
 //     resolution agrees within 0.5%, `tools/rkpm paper`);
