@@ -129,8 +129,8 @@ TEST_CASE_TEMPLATE("a block dropped on a fixed wall: no penetration, impulse = m
   using contact_t = contact::particle_to_segment<E_, contact::friction::frictionless>;
   E_ enforcement{};
   double tolerance = 0.01 * h;  // the gap is closed on the predicted configuration
-  // effective_mass: the default 3 projected Jacobi sweeps (one sweep over-closes a flat row of
-  // slaves that share coefficients; see tutorials/03_contact/README.md).
+  // effective_mass: the default projected Jacobi sweeps with the shared effective mass (61a), which
+  // does not over-close a flat row of slaves that share coefficients (docs/method.md section 6.6).
   if constexpr (std::is_same_v<E_, contact::enforcement::penalty>) {
     // k dt^2 / m_slave ~ 0.5 for the edge particles (m = rho h^2 / 2 = 0.05 kg per metre): stable,
     // and it closes about half the gap per step, so some penetration remains while in contact.
