@@ -16,9 +16,12 @@
 // RK shape functions are not interpolating (tutorial 01: N_J(X_J) is about 0.5), so a force
 // put on coefficient I moves particle J by only a part of what it would move a lone particle.
 // With the paper's mass m = m_J, one step closes only part of an isolated gap. The policy
-// contact::enforcement::effective_mass uses m_eff = 1 / sum_I N_I(X_J)^2 / m_I instead, which
-// closes an isolated gap in one step; neighbouring slaves share coefficients, so it repeats
-// the correction (`sweeps`, 3 by default) until a whole row of slaves lands on the tool.
+// contact::enforcement::effective_mass uses the effective mass of J among the slaves in contact
+// in the step, m_sh = 1 / sum_I |N_I(X_J)| S_I / m_I with S_I = sum_K |N_I(X_K)| (method (61a)):
+// neighbouring slaves share coefficients, so a force on one also moves the others, and m_sh
+// counts them. An isolated slave, or a uniformly penetrating row, lands on the tool in one step,
+// and no correction is overshot; the sweeps (`sweeps`, 5 by default, `relaxation` 1) repeat the
+// correction on the corrected configuration for the non-uniform rest, such as a row's ends.
 //
 // This program runs two problems with three policies side by side:
 //   A. an elastic-plastic block (J2, linear hardening) dropped onto a fixed wall;
@@ -60,13 +63,17 @@ using paper_contact = contact::particle_to_segment<contact::enforcement::paper, 
 using effective_contact =
     contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>;
 
+// The default effective_mass{} is 5 sweeps with relaxation 1; the one-sweep variant shows what
+// the later sweeps add. Labels name the sweeps: "effective_mass_1_sweep", "effective_mass_5_sweeps".
 struct policy {
   std::string label;  // file names and plot titles
   bool effective;
-  int sweeps;
+  contact::enforcement::effective_mass enforcement;  // used if effective
 };
-const std::vector<policy> policies = {
-    {"paper", false, 1}, {"effective_mass_1_sweep", true, 1}, {"effective_mass_3_sweeps", true, 3}};
+constexpr contact::enforcement::effective_mass one_sweep{.sweeps = 1}, default_sweeps{};
+const std::vector<policy> policies = {{"paper", false, {}},
+                                      {"effective_mass_1_sweep", true, one_sweep},
+                                      {fmt::format("effective_mass_{}_sweeps", default_sweeps.sweeps), true, default_sweeps}};
 
 // The wall: a one-segment polyline along y = 0, body on its left (above it), fixed.
 contact::rigid_tool wall() {
@@ -77,7 +84,7 @@ contact::rigid_tool wall() {
 template <class Contact>
 Contact make_contact(const policy& p, double mu) {
   if constexpr (std::is_same_v<Contact, effective_contact>)
-    return Contact({wall()}, contact::friction::coulomb{mu}, contact::enforcement::effective_mass{.sweeps = p.sweeps});
+    return Contact({wall()}, contact::friction::coulomb{mu}, p.enforcement);
   else
     return Contact({wall()}, contact::friction::coulomb{mu});
 }
@@ -191,8 +198,11 @@ void figures(const fs::path& out) {
   const std::string common =
       "set datafile separator ','\nset key autotitle columnhead\nset grid\nset key top right\n";
   auto file = [&](const std::string& name) { return "'" + (out / name).string() + "'"; };
-  const std::string P = file("drop_paper.csv"), E1 = file("drop_effective_mass_1_sweep.csv"),
-                    E3 = file("drop_effective_mass_3_sweeps.csv");
+  // policies[1] is the one-sweep variant, policies[2] the default effective_mass{}.
+  const std::string P = file("drop_paper.csv"), E1 = file("drop_" + policies[1].label + ".csv"),
+                    ED = file("drop_" + policies[2].label + ".csv");
+  const std::string one = "effective mass, 1 sweep",
+                    dflt = fmt::format("effective mass, {} sweeps (default)", default_sweeps.sweeps);
 
   // Gap history: before the correction (what each step had to undo) and after it (what is left).
   io::gnuplot_png(out / "drop_gap.png",
@@ -200,13 +210,13 @@ void figures(const fs::path& out) {
                            "set xlabel 't (ms)'\nset ylabel 'penetration / h'\n"
                            "set title 'Largest penetration on the predicted configuration (before the correction)'\n"
                            "plot " + P + " u ($1*1e3):2 w l lw 2 t 'paper', " + E1 +
-                           " u ($1*1e3):2 w l lw 2 t 'effective mass, 1 sweep', " + E3 +
-                           " u ($1*1e3):2 w l lw 2 dt 2 t 'effective mass, 3 sweeps'\n"
+                           " u ($1*1e3):2 w l lw 2 t '" + one + "', " + ED +
+                           " u ($1*1e3):2 w l lw 2 dt 2 t '" + dflt + "'\n"
                            "set title 'Physical gap of the lowest slave particle after the step (< 0: inside the wall)'\n"
-                           "set ylabel 'gap / h'\nset yrange [-0.03:0.1]\n"
+                           "set ylabel 'gap / h'\nset yrange [-0.04:0.1]\n"
                            "plot " + P + " u ($1*1e3):3 w l lw 2 t 'paper', " + E1 +
-                           " u ($1*1e3):3 w l lw 2 t 'effective mass, 1 sweep', " + E3 +
-                           " u ($1*1e3):3 w l lw 2 dt 2 t 'effective mass, 3 sweeps', 0 w l lc 'black' notitle\n"
+                           " u ($1*1e3):3 w l lw 2 t '" + one + "', " + ED +
+                           " u ($1*1e3):3 w l lw 2 dt 2 t '" + dflt + "', 0 w l lc 'black' notitle\n"
                            "unset multiplot\n",
                   {.width = 1000, .height = 800});
 
@@ -216,22 +226,23 @@ void figures(const fs::path& out) {
                            "set key center right\n"
                            "set title 'paper'\n"
                            "plot for [c in '5 6 7 9 10'] " + P + " u ($1*1e3):(column(int(c))) w l lw 2 t columnhead(int(c))\n"
-                           "set title 'effective mass, 3 sweeps'\n"
-                           "plot for [c in '5 6 7 9 10'] " + E3 + " u ($1*1e3):(column(int(c))) w l lw 2 t columnhead(int(c))\n"
+                           "set title '" + dflt + "'\n"
+                           "plot for [c in '5 6 7 9 10'] " + ED + " u ($1*1e3):(column(int(c))) w l lw 2 t columnhead(int(c))\n"
                            "unset multiplot\n",
                   {.width = 1200, .height = 500});
 
   // Sliding: centre-of-mass velocity against the Coulomb line v0 - mu g t.
-  const std::string SP = file("slide_paper.csv"), SE = file("slide_effective_mass_3_sweeps.csv");
+  const std::string SP = file("slide_paper.csv"), S1 = file("slide_" + policies[1].label + ".csv"),
+                    SD = file("slide_" + policies[2].label + ".csv");
   io::gnuplot_png(out / "slide.png",
                   common + "set multiplot layout 1,2\nset xlabel 't (ms)'\n"
                            "set ylabel 'v (m/s)'\nset title 'centre-of-mass velocity'\n"
-                           "plot " + SP + " u ($1*1e3):2 w l lw 2 t 'paper', " + SE +
-                           " u ($1*1e3):2 w l lw 2 dt 2 t 'effective mass', " + SP +
+                           "plot " + SP + " u ($1*1e3):2 w l lw 2 t 'paper', " + S1 + " u ($1*1e3):2 w l lw 2 t '" +
+                           one + "', " + SD + " u ($1*1e3):2 w l lw 2 dt 2 t '" + dflt + "', " + SP +
                            " u ($1*1e3):4 w l lw 1 lc 'black' t 'v0 - mu g t'\n"
                            "set ylabel 'x (m)'\nset title 'centre-of-mass position'\nset key bottom right\n"
-                           "plot " + SP + " u ($1*1e3):3 w l lw 2 t 'paper', " + SE +
-                           " u ($1*1e3):3 w l lw 2 dt 2 t 'effective mass', " + SP +
+                           "plot " + SP + " u ($1*1e3):3 w l lw 2 t 'paper', " + S1 + " u ($1*1e3):3 w l lw 2 t '" +
+                           one + "', " + SD + " u ($1*1e3):3 w l lw 2 dt 2 t '" + dflt + "', " + SP +
                            " u ($1*1e3):5 w l lw 1 lc 'black' t 'theory'\n"
                            "unset multiplot\n",
                   {.width = 1200, .height = 450});
