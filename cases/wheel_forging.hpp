@@ -43,6 +43,9 @@ struct wheel_forging_parameters {
   // corners (r = 12 and 24 mm) otherwise slip between two surface particles and drag the
   // particles behind them into the punch (about 1 mm deep by the end of the stroke).
   bool all_particles_slaves = true;
+  // 1: the tools' vertices are also checked as slaves against the body's surface (two-pass tool
+  // contact, docs/method.md section 6.9), which keeps the punch's corners out with surface slaves.
+  bool tool_vertex_slaves = false;
   // Deepest penetration a tool face still acts on. The default of rigid_tool (half the
   // shortest segment: 18 mm for the die) would make every particle within 18 mm of the floor a
   // candidate at every step; a few particle spacings is plenty.
@@ -66,6 +69,7 @@ struct wheel_forging_parameters {
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
       parameter<P>{"all_particles_slaves", "0/1", "1: every particle is checked against the tools", &P::all_particles_slaves},
+      parameter<P>{"tool_vertex_slaves", "0/1", "1: the tools' vertices are checked against the body's surface too", &P::tool_vertex_slaves},
       parameter<P>{"contact_depth_m", "m", "deepest penetration a tool face acts on", &P::contact_depth_m},
   };
 };
@@ -110,6 +114,7 @@ struct wheel_forging {
         .contact = make_contact<Contact>(std::move(tools), p.friction, p.penalty_stiffness_N_m),
         .initial_velocity = {},
     };
+    pr.contact.set_tool_vertex_slaves(p.tool_vertex_slaves);
     if (p.all_particles_slaves)
       for (index_t I = 0; I < pr.particles.size(); ++I) pr.slave_particles.push_back(I);
     return pr;

@@ -6,7 +6,9 @@
 //     after which the body leaves the tool with momentum 2 M V. In axisymmetric geometry the
 //     reaction is the total over the ring: A = pi R^2, M = rho pi R^2 L (masses carry 2 pi r);
 //   - a V-shaped tool (a convex corner) and a flat die closing on a block: no slave particle ends
-//     up inside either tool.
+//     up inside either tool;
+//   - a right-angled punch corner coming down between two surface particles sinks into the body
+//     (0.53 h) unless the tool's vertices are slaves too (then 1e-6 h).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -162,4 +164,51 @@ TEST_CASE_TEMPLATE("a V-shaped punch and a fixed die close on a block without a 
   CHECK(on_punch >= 2);
   CHECK(punch_force.y() > 0.0);
   CHECK(die_force.y() < 0.0);
+}
+
+TEST_CASE("a sharp punch corner between two surface particles: the tool's vertex as a slave keeps it out") {
+  // The same block, surface particles as slaves, and a V punch with a right-angled apex (like the
+  // wheel punch's corners) that comes down 0.6 h between two particles of the top face. Checked against
+  // the body's surface (the deformed top row, piecewise linear between its particles), the apex
+  // sinks into the body when only particles are slaves; with the tool's vertices also checked as
+  // slaves against the body's surface (docs/method.md section 6.9) it stays out.
+  using contact_t = contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>;
+  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
+                     material::elastic, contact_t>;
+  const double W = 0.1, H = 0.1, h = 0.01, T = 0.006;
+  const vec2 apex(0.5 * W + 0.5 * h, H);
+  auto deepest_apex = [&](bool vertex_slaves) {
+    const contact::rigid_tool punch("V punch", {apex + vec2(-0.03, 0.03), apex, apex + vec2(0.03, 0.03)},
+                                    contact::side::right, contact::tool_motion::constant_velocity(vec2(0.0, -V)));
+    const contact::rigid_tool die("die", {vec2(-0.1, 0.0), vec2(0.2, 0.0)}, contact::side::left);
+    problem_for<cfg> p{.particles = make_grid_particles<2>(vec2(0, 0), vec2(W, H), Eigen::Vector2i(11, 11), 2.0),
+                       .mesh = make_grid_mesh(vec2(0, 0), vec2(W, H), Eigen::Vector2i(11, 11)),
+                       .material = material::elastic(material::elastic_constants{E, 0.3, rho}),
+                       .contact = contact_t({punch, die}, contact::friction::coulomb{0.2})};
+    p.contact.set_tool_vertex_slaves(vertex_slaves);
+    run_options o;
+    o.end_time = T;
+    o.fixed_time_step = 1.5e-4;
+    auto s = make_solver<cfg>(std::move(p), o);
+    double deepest = 0.0;
+    s.run(
+        [&](const auto& s) {
+          const vec2 tip = apex + vec2(0.0, -V * s.time());
+          const auto x = s.particle_positions();
+          for (index_t i = 0; i + 1 < 11; ++i) {  // the top row: particles 110 .. 120
+            const vec2 a = x[110 + i], b = x[111 + i];
+            if (tip.x() < a.x() || tip.x() > b.x()) continue;
+            const double surface = a.y() + (b.y() - a.y()) * (tip.x() - a.x()) / (b.x() - a.x());
+            deepest = std::max(deepest, surface - tip.y());
+          }
+        },
+        1);
+    return deepest;
+  };
+  const double without = deepest_apex(false), with = deepest_apex(true);
+  MESSAGE("deepest apex below the body's surface: particles as slaves only " << without / h
+                                                                               << " h; with the tool's vertices "
+                                                                               << with / h << " h");
+  CHECK(with < 0.02 * h);
+  CHECK(without > 5.0 * with);  // the check above sees what the vertex pass removes
 }

@@ -1,7 +1,12 @@
-// The dispatch table of the taylor_bar case, compiled on its own so the cases build in parallel.
+// The dispatch tables of the taylor_bar and rod_on_rod cases, compiled on their own so the cases
+// build in parallel; the two share this file because they share every solver type
+// (axisymmetric, J2 with linear hardening, the three enforcements), which the compiler then
+// instantiates once.
+#include "cases/rod_on_rod.hpp"
 #include "cases/taylor_bar.hpp"
 #include "dispatch.hpp"
 
 namespace rkpm::runner {
 template run_outcome run_case<cases::taylor_bar>(const run_request& r);
+template run_outcome run_case<cases::rod_on_rod>(const run_request& r);
 }  // namespace rkpm::runner

@@ -37,6 +37,7 @@
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/segment_search.hpp>
+#include <rkpm/contact/tool_vertex_contact.hpp>
 #include <rkpm/contact/shared_effective_mass.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
@@ -68,6 +69,11 @@ class particle_to_segment {
   const std::vector<rigid_tool>& tools() const { return tools_; }
   const std::vector<segment_grid>& grids() const { return grid_; }
   const std::vector<body_pair>& body_pairs() const { return bodies_.pairs(); }
+  // Two-pass tool contact: the tools' vertices also checked as slaves against the bodies'
+  // surfaces (tool_vertex_contact.hpp), so that a sharp corner cannot slip between two surface
+  // particles. Set before the solver is built.
+  void set_tool_vertex_slaves(bool on) { tool_vertex_slaves_ = on; }
+  bool tool_vertex_slaves() const { return tool_vertex_slaves_; }
   // Contacts between bodies in the last step.
   const body_contact& bodies() const { return bodies_; }
   // Reaction on each tool in the last step (minus the contact forces it applied).
@@ -133,6 +139,11 @@ class particle_to_segment {
     touched_count_ = 0;
     reaction_.assign(nt, vec2::Zero());
     bodies_.setup(body, slave_);
+    if (tool_vertex_slaves_) {
+      std::size_t vertices = 0;
+      for (const rigid_tool& tool : tools_) vertices += tool.reference_vertices().size();
+      tool_vertices_.setup(body, vertices);
+    }
     ready_ = true;
   }
 
@@ -229,8 +240,9 @@ class particle_to_segment {
     }
     // Then the pairs of deformable bodies (body_contact.hpp).
     bodies_.enforce(body, dt, enforcement_, friction_, d, v, result);
+    tool_vertices_.enforce(body, tools_, u_now_, v_tool_, dt, enforcement_, friction_, d, v, result, reaction_);
     // Remember where the slaves ended up, for the crossing test of the next call.
-    if (touched_count_ > 0 || !bodies_.empty())
+    if (touched_count_ > 0 || !bodies_.empty() || tool_vertices_.enabled())
       for (index_t j = 0; j < ns; ++j) x_[j] = X[slave_[j]] + table_.interpolate(j, d);
     touched_count_ = 0;
     std::swap(x_prev_, x_);
@@ -261,6 +273,8 @@ class particle_to_segment {
   std::vector<rigid_tool> tools_;
   std::vector<segment_grid> grid_;
   body_contact bodies_;
+  bool tool_vertex_slaves_ = false;
+  tool_vertex_contact tool_vertices_;
   Friction friction_;
   Enforcement enforcement_;
 

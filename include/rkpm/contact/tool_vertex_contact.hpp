@@ -1,0 +1,218 @@
+#pragma once
+// Rigid tools' vertices as slaves against the bodies' surfaces (the second pass of tool contact,
+// docs/method.md section 6.9). Particle-to-segment contact checks the body's particles against
+// the tool's segments, so a sharp tool corner can slip between two surface particles into the
+// body. This pass checks each tool vertex P (at its position at t_n+1) against the boundary chains
+// of every body (discretization/boundary_chains.hpp): a vertex behind segment a-b of a body,
+//   lambda = (P - x_a) . t / |t|^2 in [0, 1],   g = -(P - x_a) . n in (0, depth],
+// pushes the body's contact point x_c = (1 - lambda) x_a + lambda x_b out of the tool, along -n,
+// by the forces of (56)-(58) with the contact point as the slave (its velocity against the
+// tool's, its mass the master side's: m_c of (78) for the paper's form, the shared effective
+// mass of the rows c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b) otherwise). The force goes to
+// the body's coefficients through c_I and its reaction onto the tool. The tool is rigid: only the
+// body moves.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include <rkpm/concepts/contact.hpp>
+#include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
+
+namespace rkpm::contact {
+
+class tool_vertex_contact {
+ public:
+  bool enabled() const { return enabled_; }
+
+  // The bodies' surfaces, from the cells; their vertices must be particles.
+  void setup(const contact_body& body, std::size_t tool_vertices) {
+    enabled_ = true;
+    if (!body.mesh || !body.at_particles)
+      fail("tool vertices as slaves need the background cells and the shape functions at the particles; the "
+           "solver passes them in contact_body");
+    const std::span<const vec2> X = body.reference_position;
+    const auto n = static_cast<index_t>(X.size());
+    if (static_cast<index_t>(body.mesh->node.size()) != n)
+      fail("tool vertices as slaves: the bodies' surface vertices must be particles, but the mesh has {} nodes for "
+           "{} particles; give the particles at the mesh nodes",
+           body.mesh->node.size(), n);
+    double size = 0.0;
+    for (const vec2& x : X) size = std::max(size, x.cwiseAbs().maxCoeff());
+    const double axis = 1e-9 * size;
+    segment_.clear();
+    std::vector<char> surface(n, 0);
+    double shortest = INFINITY;
+    for (const auto& c : boundary_chains(*body.mesh, [&](index_t i) { return body.axisymmetric && X[i][0] <= axis; }))
+      for (index_t s = 0; s < c.segments(); ++s) {
+        const auto seg = c.segment(s);
+        segment_.push_back(seg);
+        surface[seg[0]] = surface[seg[1]] = 1;
+        shortest = std::min(shortest, (X[seg[1]] - X[seg[0]]).norm());
+      }
+    depth_ = 0.5 * shortest;
+    surface_.clear();
+    for (index_t I = 0; I < n; ++I)
+      if (surface[I]) surface_.push_back(I);
+    contact_.assign(tool_vertices, {});
+    x_.assign(n, vec2::Zero());
+    w_.assign(n, vec2::Zero());
+    dforce_.assign(n, vec2::Zero());
+    coefficient_.assign(n, 0.0);
+    coverage_.assign(n, 0.0);
+    touched_flag_.assign(n, 0);
+    touched_.assign(n, 0);
+  }
+
+  // After the particles' pass: u_now and v_tool are each tool's displacement at t_n+1 and its
+  // mean velocity over the step; reactions[k] collects the force on tool k.
+  template <class Enforcement, class Friction>
+  void enforce(const contact_body& body, const std::vector<rigid_tool>& tools, std::span<const vec2> u_now,
+               std::span<const vec2> v_tool, double dt, const Enforcement& enforcement, const Friction& friction,
+               std::vector<vec2>& d, std::vector<vec2>& v, contact_result& result, std::span<vec2> reactions) {
+    if (!enabled_) return;
+    const shape_table<2>& rows = *body.at_particles;
+    const std::span<const vec2> X = body.reference_position;
+    const std::span<const double> m = body.mass;
+    for (index_t I : surface_) physical_state(rows, X, I, d, v);
+    count_ = 0;
+    for (std::size_t k = 0; k < tools.size(); ++k)
+      for (const vec2& P0 : tools[k].reference_vertices()) detect(static_cast<index_t>(k), P0 + u_now[k], result);
+    if (count_ == 0) return;
+    shared_masses(rows, m);
+    for (int sweep = 0; sweep < enforcement.sweeps; ++sweep) {
+      const double omega = sweep == 0 ? 1.0 : enforcement.relaxation;
+      if (sweep > 0)
+        for (index_t I : surface_) physical_state(rows, X, I, d, v);
+      for (index_t q = 0; q < count_; ++q) {
+        vertex_contact& p = contact_[q];
+        const vec2 xc = (1.0 - p.lambda) * x_[p.a] + p.lambda * x_[p.b];
+        const vec2 vc = (1.0 - p.lambda) * w_[p.a] + p.lambda * w_[p.b];
+        const vec2 push = -p.normal;  // out of the tool, into the body, as a tool's normal (section 6.2)
+        const double g = sweep == 0 ? p.gap : (p.vertex - xc).dot(push);
+        const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
+        const vec2 rel = vc - v_tool[p.tool];
+        const vec2 v_t = rel - rel.dot(push) * push;
+        const double fn = std::max(0.0, p.normal_force + omega * enforcement.normal_force(g, dt, m_c, p.shared_mass));
+        const vec2 trial = p.tangential_force - omega * enforcement.stick_mass(m_c, p.shared_mass) * v_t / dt;
+        const vec2 ft = friction.limit(trial, fn);
+        const vec2 df = (fn - p.normal_force) * push + (ft - p.tangential_force);
+        p.normal_force = fn;
+        p.tangential_force = ft;
+        spread(rows, p.a, 1.0 - p.lambda, df);
+        spread(rows, p.b, p.lambda, df);
+      }
+      for (index_t s = 0; s < touched_count_; ++s) {
+        const index_t I = touched_[s];
+        const vec2 da = dforce_[I] / m[I];
+        v[I] += dt * da;
+        d[I] += dt * dt * da;
+        dforce_[I].setZero();
+        touched_flag_[I] = 0;
+      }
+      touched_count_ = 0;
+    }
+    for (index_t q = 0; q < count_; ++q)
+      reactions[contact_[q].tool] -= contact_[q].normal_force * -contact_[q].normal + contact_[q].tangential_force;
+  }
+
+ private:
+  struct vertex_contact {
+    index_t tool = 0;
+    vec2 vertex = vec2::Zero();  // the tool vertex at t_n+1
+    index_t a = 0, b = 0;
+    double lambda = 0.0, gap = 0.0;
+    vec2 normal = vec2::Zero();  // the body's outward normal
+    double shared_mass = 0.0, normal_force = 0.0;
+    vec2 tangential_force = vec2::Zero();
+  };
+
+  void detect(index_t tool, const vec2& P, contact_result& result) {
+    vertex_contact best;
+    best.a = -1;
+    for (const auto& [a, b] : segment_) {
+      const vec2 t = x_[b] - x_[a];
+      const double L = t.norm();
+      const vec2 r = P - x_[a];
+      if (r.squaredNorm() > (L + depth_) * (L + depth_)) continue;
+      const double lambda = r.dot(t) / (L * L);
+      if (lambda < 0.0 || lambda > 1.0) continue;
+      const vec2 normal(t[1] / L, -t[0] / L);
+      const double g = -r.dot(normal);
+      if (g <= 0.0 || g > depth_) continue;
+      if (best.a < 0 || g < best.gap) best = vertex_contact{tool, P, a, b, lambda, g, normal, 0.0, 0.0, vec2::Zero()};
+    }
+    if (best.a < 0 || count_ >= static_cast<index_t>(contact_.size())) return;
+    contact_[count_++] = best;
+    result.max_penetration = std::max(result.max_penetration, best.gap);
+    ++result.active;
+  }
+
+  template <class Visit>
+  void visit_row(const shape_table<2>& rows, const vertex_contact& p, Visit&& visit) {
+    for (const auto& [vertex, weight] : {std::pair{p.a, 1.0 - p.lambda}, std::pair{p.b, p.lambda}})
+      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e)
+        coefficient_[rows.neighbor[e]] += weight * rows.N[e];
+    for (index_t vertex : {p.a, p.b})
+      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e) {
+        double& c = coefficient_[rows.neighbor[e]];
+        if (c != 0.0) visit(rows.neighbor[e], c);
+        c = 0.0;
+      }
+  }
+
+  // (61a) over the rows c of this pass's contacts.
+  void shared_masses(const shape_table<2>& rows, std::span<const double> m) {
+    for (index_t q = 0; q < count_; ++q)
+      visit_row(rows, contact_[q], [&](index_t I, double c) { coverage_[I] += std::abs(c); });
+    for (index_t q = 0; q < count_; ++q) {
+      double s = 0.0;
+      visit_row(rows, contact_[q], [&](index_t I, double c) { s += std::abs(c) * coverage_[I] / m[I]; });
+      contact_[q].shared_mass = 1.0 / s;
+    }
+    for (index_t q = 0; q < count_; ++q) visit_row(rows, contact_[q], [&](index_t I, double) { coverage_[I] = 0.0; });
+  }
+
+  void physical_state(const shape_table<2>& rows, std::span<const vec2> X, index_t I, const std::vector<vec2>& d,
+                      const std::vector<vec2>& v) {
+    vec2 u = vec2::Zero(), w = vec2::Zero();
+    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
+      u += rows.N[e] * d[rows.neighbor[e]];
+      w += rows.N[e] * v[rows.neighbor[e]];
+    }
+    x_[I] = X[I] + u;
+    w_[I] = w;
+  }
+
+  void spread(const shape_table<2>& rows, index_t J, double scale, const vec2& df) {
+    if (scale == 0.0) return;
+    for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
+      const index_t I = rows.neighbor[e];
+      dforce_[I] += scale * rows.N[e] * df;
+      if (!touched_flag_[I]) {
+        touched_flag_[I] = 1;
+        touched_[touched_count_++] = I;
+      }
+    }
+  }
+
+  bool enabled_ = false;
+  std::vector<std::array<index_t, 2>> segment_;  // every body's surface segments (particles)
+  double depth_ = 0.0;
+  std::vector<index_t> surface_;
+
+  // Scratch, sized in setup().
+  std::vector<vertex_contact> contact_;  // capacity: the tools' vertices
+  index_t count_ = 0;
+  std::vector<vec2> x_, w_, dforce_;
+  std::vector<double> coefficient_, coverage_;
+  std::vector<char> touched_flag_;
+  std::vector<index_t> touched_;
+  index_t touched_count_ = 0;
+};
+
+}  // namespace rkpm::contact
