@@ -31,6 +31,7 @@
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/discretization/body_partition.hpp>
+#include <rkpm/contact/surface_scratch.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
 
 namespace rkpm::contact {
@@ -125,14 +126,8 @@ class body_contact {
     std::size_t capacity = 0;
     for (const auto& s : slave_) capacity += s.size();
     active_.assign(capacity, body_contact_pair{});
-    x_.assign(n, vec2::Zero());
-    w_.assign(n, vec2::Zero());
-    dforce_.assign(n, vec2::Zero());
-    coefficient_.assign(n, 0.0);
-    coverage_.assign(n, 0.0);
+    scratch_.resize(n);
     shared_mass_.assign(capacity, 0.0);
-    touched_flag_.assign(n, 0);
-    touched_.assign(n, 0);
   }
 
   template <class Enforcement, class Friction>
@@ -142,14 +137,14 @@ class body_contact {
     const shape_table<2>& rows = *body.at_particles;
     const std::span<const vec2> X = body.reference_position;
     const std::span<const double> m = body.mass;
-    for (index_t I : surface_) physical_state(rows, X, I, d, v);
+    for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
 
     // The pairs one after the other (Gauss-Seidel): a second pass, the same two bodies with
     // the roles swapped, sees the gaps the first one closed instead of closing them again.
     active_count_ = 0;
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
       if (k > 0)
-        for (index_t I : surface_) physical_state(rows, X, I, d, v);
+        for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
       const index_t first = active_count_;
       detect(k, result);
       resolve(first, rows, X, m, dt, enforcement, friction, d, v);
@@ -163,9 +158,9 @@ class body_contact {
       body_contact_pair best;
       best.slave = -1;
       for (const auto& [a, b] : segment_[k]) {
-        const vec2 t = x_[b] - x_[a];
+        const vec2 t = scratch_.x[b] - scratch_.x[a];
         const double L = t.norm();
-        const vec2 r = x_[J] - x_[a];
+        const vec2 r = scratch_.x[J] - scratch_.x[a];
         if (r.squaredNorm() > (L + depth_[k]) * (L + depth_[k])) continue;
         const double lambda = r.dot(t) / (L * L);
         if (lambda < 0.0 || lambda > 1.0) continue;
@@ -189,21 +184,23 @@ class body_contact {
                double dt, const Enforcement& enforcement, const Friction& friction, std::vector<vec2>& d,
                std::vector<vec2>& v) {
     shared_masses(first, rows, m);
+    const auto& x = scratch_.x;
+    const auto& w = scratch_.w;
     for (int sweep = 0; sweep < enforcement.sweeps && active_count_ > first; ++sweep) {
       const double omega = sweep == 0 ? 1.0 : enforcement.relaxation;
       if (sweep > 0)
-        for (index_t I : surface_) physical_state(rows, X, I, d, v);
+        for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
       for (index_t q = first; q < active_count_; ++q) {
         body_contact_pair& p = active_[q];
-        const vec2 xc = (1.0 - p.lambda) * x_[p.a] + p.lambda * x_[p.b];
-        const vec2 vc = (1.0 - p.lambda) * w_[p.a] + p.lambda * w_[p.b];
-        const double g = sweep == 0 ? p.gap : -(x_[p.slave] - xc).dot(p.normal);
+        const vec2 xc = (1.0 - p.lambda) * x[p.a] + p.lambda * x[p.b];
+        const vec2 vc = (1.0 - p.lambda) * w[p.a] + p.lambda * w[p.b];
+        const double g = sweep == 0 ? p.gap : -(x[p.slave] - xc).dot(p.normal);
         const double m_sh = shared_mass_[q];
         // The paper's form (P4) closes the gap with the slave's mass against a rigid master; a
         // master with mass m_c (its contact point's share) moves too, so the pair's reduced mass.
         const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
         const double m_s = m[p.slave] * m_c / (m[p.slave] + m_c);
-        const vec2 rel = w_[p.slave] - vc;
+        const vec2 rel = w[p.slave] - vc;
         const vec2 v_t = rel - rel.dot(p.normal) * p.normal;
         const double fn = std::max(0.0, p.normal_force + omega * enforcement.normal_force(g, dt, m_s, m_sh));
         const vec2 trial = p.tangential_force - omega * enforcement.stick_mass(m_s, m_sh) * v_t / dt;
@@ -211,78 +208,29 @@ class body_contact {
         const vec2 df = (fn - p.normal_force) * p.normal + (ft - p.tangential_force);
         p.normal_force = fn;
         p.tangential_force = ft;
-        spread(rows, p.slave, 1.0, df);
-        spread(rows, p.a, -(1.0 - p.lambda), df);
-        spread(rows, p.b, -p.lambda, df);
+        scratch_.spread(rows, p.slave, 1.0, df);
+        scratch_.spread(rows, p.a, -(1.0 - p.lambda), df);
+        scratch_.spread(rows, p.b, -p.lambda, df);
       }
-      for (index_t s = 0; s < touched_count_; ++s) {
-        const index_t I = touched_[s];
-        const vec2 da = dforce_[I] / m[I];
-        v[I] += dt * da;
-        d[I] += dt * dt * da;
-        dforce_[I].setZero();
-        touched_flag_[I] = 0;
-      }
-      touched_count_ = 0;
+      scratch_.apply(m, dt, d, v);
     }
-  }
-
-  void physical_state(const shape_table<2>& rows, std::span<const vec2> X, index_t I, const std::vector<vec2>& d,
-                      const std::vector<vec2>& v) {
-    vec2 u = vec2::Zero(), w = vec2::Zero();
-    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
-      u += rows.N[e] * d[rows.neighbor[e]];
-      w += rows.N[e] * v[rows.neighbor[e]];
-    }
-    x_[I] = X[I] + u;
-    w_[I] = w;
-  }
-
-  // f_I += scale N_I(X_J) df over the row of particle J.
-  void spread(const shape_table<2>& rows, index_t J, double scale, const vec2& df) {
-    if (scale == 0.0) return;
-    for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
-      const index_t I = rows.neighbor[e];
-      dforce_[I] += scale * rows.N[e] * df;
-      if (!touched_flag_[I]) {
-        touched_flag_[I] = 1;
-        touched_[touched_count_++] = I;
-      }
-    }
-  }
-
-  // Visits the row r_p of contact p: +N_I(X_J) for the slave's coefficients, -c_I for the
-  // master's, c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b) (each I once; coefficient_ is zero
-  // between calls).
-  template <class Visit>
-  void visit_row(const shape_table<2>& rows, const body_contact_pair& p, Visit&& visit) {
-    for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e) visit(rows.neighbor[e], rows.N[e]);
-    for (const auto& [vertex, weight] : {std::pair{p.a, 1.0 - p.lambda}, std::pair{p.b, p.lambda}})
-      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e)
-        coefficient_[rows.neighbor[e]] += weight * rows.N[e];
-    for (index_t vertex : {p.a, p.b})
-      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e) {
-        double& c = coefficient_[rows.neighbor[e]];
-        if (c != 0.0) visit(rows.neighbor[e], -c);
-        c = 0.0;
-      }
   }
 
   // The shared effective mass of each contact of the pass (docs/method.md (61a) with the master's
   // row): a unit force on contact p closes the gap of contact q by dt^2 sum_I r_qI r_pI / m_I, so
   //   m_sh,q = 1 / sum_I |r_qI| S_I / m_I,   S_I = sum over the pass's contacts p of |r_pI|,
   // bounds every pattern of corrections (Gershgorin) and is 1 / sum_I r_qI^2 / m_I, the mass that
-  // closes an isolated gap in one step, when q shares no coefficient with another contact.
+  // closes an isolated gap in one step, when q shares no coefficient with another contact. The
+  // row r_q is +N_I(X_J) on the slave's coefficients and -c_I on the master's.
   void shared_masses(index_t first, const shape_table<2>& rows, std::span<const double> m) {
-    for (index_t q = first; q < active_count_; ++q)
-      visit_row(rows, active_[q], [&](index_t I, double r) { coverage_[I] += std::abs(r); });
-    for (index_t q = first; q < active_count_; ++q) {
-      double s = 0.0;
-      visit_row(rows, active_[q], [&](index_t I, double r) { s += std::abs(r) * coverage_[I] / m[I]; });
-      shared_mass_[q] = 1.0 / s;
-    }
-    for (index_t q = first; q < active_count_; ++q)
-      visit_row(rows, active_[q], [&](index_t I, double) { coverage_[I] = 0.0; });
+    scratch_.shared_masses(
+        first, active_count_, m,
+        [&](index_t q, auto&& visit) {
+          const body_contact_pair& p = active_[q];
+          for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e) visit(rows.neighbor[e], rows.N[e]);
+          scratch_.visit_point(rows, p.a, p.b, p.lambda, [&](index_t I, double c) { visit(I, -c); });
+        },
+        [&](index_t q, double mass) { shared_mass_[q] = mass; });
   }
 
   std::vector<body_pair> pairs_;
@@ -295,12 +243,8 @@ class body_contact {
   // Scratch, sized in setup().
   std::vector<body_contact_pair> active_;
   index_t active_count_ = 0;
-  std::vector<vec2> x_, w_, dforce_;  // #particles
-  std::vector<double> coefficient_, coverage_;  // #particles
-  std::vector<double> shared_mass_;              // #capacity of active_
-  std::vector<char> touched_flag_;
-  std::vector<index_t> touched_;
-  index_t touched_count_ = 0;
+  surface_scratch scratch_;
+  std::vector<double> shared_mass_;  // #capacity of active_
 };
 
 }  // namespace rkpm::contact

@@ -20,6 +20,7 @@
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/contact/surface_scratch.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
 
@@ -59,13 +60,7 @@ class tool_vertex_contact {
     for (index_t I = 0; I < n; ++I)
       if (surface[I]) surface_.push_back(I);
     contact_.assign(tool_vertices, {});
-    x_.assign(n, vec2::Zero());
-    w_.assign(n, vec2::Zero());
-    dforce_.assign(n, vec2::Zero());
-    coefficient_.assign(n, 0.0);
-    coverage_.assign(n, 0.0);
-    touched_flag_.assign(n, 0);
-    touched_.assign(n, 0);
+    scratch_.resize(n);
   }
 
   // After the particles' pass: u_now and v_tool are each tool's displacement at t_n+1 and its
@@ -78,20 +73,27 @@ class tool_vertex_contact {
     const shape_table<2>& rows = *body.at_particles;
     const std::span<const vec2> X = body.reference_position;
     const std::span<const double> m = body.mass;
-    for (index_t I : surface_) physical_state(rows, X, I, d, v);
+    for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
     count_ = 0;
     for (std::size_t k = 0; k < tools.size(); ++k)
       for (const vec2& P0 : tools[k].reference_vertices()) detect(static_cast<index_t>(k), P0 + u_now[k], result);
     if (count_ == 0) return;
-    shared_masses(rows, m);
+    scratch_.shared_masses(
+        0, count_, m,
+        [&](index_t q, auto&& visit) {
+          scratch_.visit_point(rows, contact_[q].a, contact_[q].b, contact_[q].lambda, visit);
+        },
+        [&](index_t q, double mass) { contact_[q].shared_mass = mass; });
+    const auto& x = scratch_.x;
+    const auto& w = scratch_.w;
     for (int sweep = 0; sweep < enforcement.sweeps; ++sweep) {
       const double omega = sweep == 0 ? 1.0 : enforcement.relaxation;
       if (sweep > 0)
-        for (index_t I : surface_) physical_state(rows, X, I, d, v);
+        for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
       for (index_t q = 0; q < count_; ++q) {
         vertex_contact& p = contact_[q];
-        const vec2 xc = (1.0 - p.lambda) * x_[p.a] + p.lambda * x_[p.b];
-        const vec2 vc = (1.0 - p.lambda) * w_[p.a] + p.lambda * w_[p.b];
+        const vec2 xc = (1.0 - p.lambda) * x[p.a] + p.lambda * x[p.b];
+        const vec2 vc = (1.0 - p.lambda) * w[p.a] + p.lambda * w[p.b];
         const vec2 push = -p.normal;  // out of the tool, into the body, as a tool's normal (section 6.2)
         const double g = sweep == 0 ? p.gap : (p.vertex - xc).dot(push);
         const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
@@ -103,18 +105,10 @@ class tool_vertex_contact {
         const vec2 df = (fn - p.normal_force) * push + (ft - p.tangential_force);
         p.normal_force = fn;
         p.tangential_force = ft;
-        spread(rows, p.a, 1.0 - p.lambda, df);
-        spread(rows, p.b, p.lambda, df);
+        scratch_.spread(rows, p.a, 1.0 - p.lambda, df);
+        scratch_.spread(rows, p.b, p.lambda, df);
       }
-      for (index_t s = 0; s < touched_count_; ++s) {
-        const index_t I = touched_[s];
-        const vec2 da = dforce_[I] / m[I];
-        v[I] += dt * da;
-        d[I] += dt * dt * da;
-        dforce_[I].setZero();
-        touched_flag_[I] = 0;
-      }
-      touched_count_ = 0;
+      scratch_.apply(m, dt, d, v);
     }
     for (index_t q = 0; q < count_; ++q)
       reactions[contact_[q].tool] -= contact_[q].normal_force * -contact_[q].normal + contact_[q].tangential_force;
@@ -135,9 +129,9 @@ class tool_vertex_contact {
     vertex_contact best;
     best.a = -1;
     for (const auto& [a, b] : segment_) {
-      const vec2 t = x_[b] - x_[a];
+      const vec2 t = scratch_.x[b] - scratch_.x[a];
       const double L = t.norm();
-      const vec2 r = P - x_[a];
+      const vec2 r = P - scratch_.x[a];
       if (r.squaredNorm() > (L + depth_) * (L + depth_)) continue;
       const double lambda = r.dot(t) / (L * L);
       if (lambda < 0.0 || lambda > 1.0) continue;
@@ -152,54 +146,6 @@ class tool_vertex_contact {
     ++result.active;
   }
 
-  template <class Visit>
-  void visit_row(const shape_table<2>& rows, const vertex_contact& p, Visit&& visit) {
-    for (const auto& [vertex, weight] : {std::pair{p.a, 1.0 - p.lambda}, std::pair{p.b, p.lambda}})
-      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e)
-        coefficient_[rows.neighbor[e]] += weight * rows.N[e];
-    for (index_t vertex : {p.a, p.b})
-      for (index_t e = rows.offset[vertex]; e < rows.offset[vertex + 1]; ++e) {
-        double& c = coefficient_[rows.neighbor[e]];
-        if (c != 0.0) visit(rows.neighbor[e], c);
-        c = 0.0;
-      }
-  }
-
-  // (61a) over the rows c of this pass's contacts.
-  void shared_masses(const shape_table<2>& rows, std::span<const double> m) {
-    for (index_t q = 0; q < count_; ++q)
-      visit_row(rows, contact_[q], [&](index_t I, double c) { coverage_[I] += std::abs(c); });
-    for (index_t q = 0; q < count_; ++q) {
-      double s = 0.0;
-      visit_row(rows, contact_[q], [&](index_t I, double c) { s += std::abs(c) * coverage_[I] / m[I]; });
-      contact_[q].shared_mass = 1.0 / s;
-    }
-    for (index_t q = 0; q < count_; ++q) visit_row(rows, contact_[q], [&](index_t I, double) { coverage_[I] = 0.0; });
-  }
-
-  void physical_state(const shape_table<2>& rows, std::span<const vec2> X, index_t I, const std::vector<vec2>& d,
-                      const std::vector<vec2>& v) {
-    vec2 u = vec2::Zero(), w = vec2::Zero();
-    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
-      u += rows.N[e] * d[rows.neighbor[e]];
-      w += rows.N[e] * v[rows.neighbor[e]];
-    }
-    x_[I] = X[I] + u;
-    w_[I] = w;
-  }
-
-  void spread(const shape_table<2>& rows, index_t J, double scale, const vec2& df) {
-    if (scale == 0.0) return;
-    for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
-      const index_t I = rows.neighbor[e];
-      dforce_[I] += scale * rows.N[e] * df;
-      if (!touched_flag_[I]) {
-        touched_flag_[I] = 1;
-        touched_[touched_count_++] = I;
-      }
-    }
-  }
-
   bool enabled_ = false;
   std::vector<std::array<index_t, 2>> segment_;  // every body's surface segments (particles)
   double depth_ = 0.0;
@@ -208,11 +154,7 @@ class tool_vertex_contact {
   // Scratch, sized in setup().
   std::vector<vertex_contact> contact_;  // capacity: the tools' vertices
   index_t count_ = 0;
-  std::vector<vec2> x_, w_, dforce_;
-  std::vector<double> coefficient_, coverage_;
-  std::vector<char> touched_flag_;
-  std::vector<index_t> touched_;
-  index_t touched_count_ = 0;
+  surface_scratch scratch_;
 };
 
 }  // namespace rkpm::contact
