@@ -42,16 +42,27 @@ template <class E>
 using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::axisymmetric,
                    material::j2_plasticity<material::hardening::linear>, contact_t<E>>;
 
-template <class E>
-std::map<std::string, double> taylor_bar() {
-  cases::taylor_bar::parameters p;
+// The case's parameters at this test's size, and its solver.
+template <class Case>
+typename Case::parameters small_parameters() {
+  typename Case::parameters p;
   p.radial_particles = radial;
   p.axial_particles = axial;
   p.end_time_s = end_time;
   p.penalty_stiffness_N_m = penalty_stiffness;
+  return p;
+}
+template <class Case, class E>
+auto small_solver(const typename Case::parameters& p) {
   run_options o;
   o.end_time = end_time;
-  auto s = make_solver<cfg<E>>(cases::taylor_bar::build<contact_t<E>>(p, 1), o);
+  return make_solver<cfg<E>>(Case::template build<contact_t<E>>(p, 1), o);
+}
+
+template <class E>
+std::map<std::string, double> taylor_bar() {
+  const auto p = small_parameters<cases::taylor_bar>();
+  auto s = small_solver<cases::taylor_bar, E>(p);
   s.run();
   std::map<std::string, double> out;
   for (const auto& [k, v] : cases::taylor_bar::measure(s, p, {})) out[k] = v;
@@ -66,15 +77,9 @@ struct rods {
 
 template <class E>
 rods rod_on_rod(bool two_pass) {
-  cases::rod_on_rod::parameters p;
-  p.radial_particles = radial;
-  p.axial_particles = axial;
-  p.end_time_s = end_time;
-  p.penalty_stiffness_N_m = penalty_stiffness;
+  auto p = small_parameters<cases::rod_on_rod>();
   p.two_pass = two_pass;
-  run_options o;
-  o.end_time = end_time;
-  auto s = make_solver<cfg<E>>(cases::rod_on_rod::build<contact_t<E>>(p, 1), o);
+  auto s = small_solver<cases::rod_on_rod, E>(p);
   rods r;
   while (s.time() < end_time * (1.0 - 1e-12)) {
     s.step();

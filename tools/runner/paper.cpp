@@ -59,35 +59,24 @@ int run_paper(const paper_request& o) {
 #endif
   const auto start = std::chrono::steady_clock::now();
   std::map<std::string, json> summary;  // "case-q2" -> summary
+  auto run = [&](const std::string& c, const std::string& q, std::string_view label) {
+    run_request r;
+    r.case_name = c;
+    r.quadrature = q;
+    r.resolution = o.resolution;
+    r.plots = o.plots;
+    r.out_dir = fmt::format("{}/{}-{}", o.out, c, q);
+    fmt::print("paper: running {} with {}{} ...\n", c, q, label);
+    std::fflush(stdout);
+    run_outcome out = run_named_case(r);
+    fmt::print("paper: {} {} done, {} steps, {:.1f} s\n", c, q, count(out.summary, "steps"), number(out.summary, "wall_s"));
+    summary[fmt::format("{}-{}", c, q)] = std::move(out.summary);
+  };
   for (const auto& c : chosen)
-    for (const std::string_view q : {quadrature::q4::name, quadrature::q2::name}) {
-      run_request r;
-      r.case_name = c;
-      r.quadrature = std::string(q);
-      r.resolution = o.resolution;
-      r.plots = o.plots;
-      r.out_dir = fmt::format("{}/{}-{}", o.out, c, q);
-      fmt::print("paper: running {} with {} ...\n", c, q);
-      std::fflush(stdout);
-      run_outcome out = run_named_case(r);
-      fmt::print("paper: {} {} done, {} steps, {:.1f} s\n", c, q, count(out.summary, "steps"), number(out.summary, "wall_s"));
-      summary[fmt::format("{}-{}", c, q)] = out.summary;
-    }
+    for (const std::string_view q : {quadrature::q4::name, quadrature::q2::name}) run(c, std::string(q), "");
   // Beyond the paper: the same cases with the other integration rules (docs/method.md section 3).
   for (const auto& c : chosen)
-    for (const auto& q : o.rules) {
-      run_request r;
-      r.case_name = c;
-      r.quadrature = q;
-      r.resolution = o.resolution;
-      r.plots = o.plots;
-      r.out_dir = fmt::format("{}/{}-{}", o.out, c, q);
-      fmt::print("paper: running {} with {} (beyond the paper) ...\n", c, q);
-      std::fflush(stdout);
-      run_outcome out = run_named_case(r);
-      fmt::print("paper: {} {} done, {} steps, {:.1f} s\n", c, q, count(out.summary, "steps"), number(out.summary, "wall_s"));
-      summary[fmt::format("{}-{}", c, q)] = std::move(out.summary);
-    }
+    for (const auto& q : o.rules) run(c, q, " (beyond the paper)");
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::string md = "# rkpm: the paper's tables, reproduced\n\n";

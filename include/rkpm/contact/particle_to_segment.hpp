@@ -19,6 +19,9 @@
 // applied), the largest penetration before correction and the number of slave particles in
 // contact. The work of the contact forces is booked by the solver's energy ledger
 // (solver/energy.hpp, impulse_work), the same formula as for the constraints.
+// Then, when asked for, the pairs of deformable bodies (body_contact.hpp: a body's slaves against
+// another's surface) and the tools' vertices against the bodies' surfaces
+// (tool_vertex_contact.hpp), each on the configuration the previous pass left.
 // enforce() does not allocate: setup() sizes every buffer.
 
 #include <algorithm>
@@ -37,6 +40,7 @@
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/segment_search.hpp>
+#include <rkpm/contact/surface_scratch.hpp>
 #include <rkpm/contact/tool_vertex_contact.hpp>
 #include <rkpm/contact/shared_effective_mass.hpp>
 #include <rkpm/core/error.hpp>
@@ -133,10 +137,7 @@ class particle_to_segment {
     in_contact_.assign(ns, 0);
     m_shared_.assign(ns * nt, 0.0);
     shared_mass_.setup(np);
-    dforce_.assign(np, vec2::Zero());
-    touched_flag_.assign(np, 0);
-    touched_.assign(np, 0);
-    touched_count_ = 0;
+    increments_.resize(np);
     reaction_.assign(nt, vec2::Zero());
     bodies_.setup(body, slave_);
     if (tool_vertex_slaves_) {
@@ -212,39 +213,21 @@ class particle_to_segment {
         const vec2 df = (fn - p.normal_force) * p.normal + (ft - p.tangential_force);
         p.normal_force = fn;
         p.tangential_force = ft;
-        for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {  // (P7)
-          const index_t I = table_.neighbor[e];
-          dforce_[I] += table_.N[e] * df;
-          if (!touched_flag_[I]) {
-            touched_flag_[I] = 1;
-            touched_[touched_count_++] = I;
-          }
-        }
+        increments_.spread(table_, j, 1.0, df);  // (P7)
       }
-      for (index_t s = 0; s < touched_count_; ++s) {
-        const index_t I = touched_[s];
-        const vec2 da = dforce_[I] / m[I];
-        v[I] += dt * da;
-        d[I] += dt * dt * da;
-        dforce_[I].setZero();
-      }
+      increments_.apply(m, dt, d, v);
     }
 
     for (index_t q = 0; q < pairs_; ++q) {
       reaction_[pair_[q].tool] -= pair_[q].force();
       in_contact_[pair_[q].slave] = 0;
     }
-    for (index_t s = 0; s < touched_count_; ++s) {
-      const index_t I = touched_[s];
-      touched_flag_[I] = 0;
-    }
     // Then the pairs of deformable bodies (body_contact.hpp).
     bodies_.enforce(body, dt, enforcement_, friction_, d, v, result);
     tool_vertices_.enforce(body, tools_, u_now_, v_tool_, dt, enforcement_, friction_, d, v, result, reaction_);
     // Remember where the slaves ended up, for the crossing test of the next call.
-    if (touched_count_ > 0 || !bodies_.empty() || tool_vertices_.enabled())
+    if (pairs_ > 0 || !bodies_.empty() || tool_vertices_.enabled())
       for (index_t j = 0; j < ns; ++j) x_[j] = X[slave_[j]] + table_.interpolate(j, d);
-    touched_count_ = 0;
     std::swap(x_prev_, x_);
     for (index_t k = 0; k < nt; ++k) u_prev_[k] = u_now_[k];
     return result;
@@ -292,10 +275,7 @@ class particle_to_segment {
   std::vector<char> in_contact_;               // #slaves
   std::vector<double> m_shared_;               // m_sh (61a) of each active pair, capacity #tools x #slaves
   shared_effective_mass shared_mass_;
-  std::vector<vec2> dforce_;                   // #particles
-  std::vector<char> touched_flag_;             // #particles
-  std::vector<index_t> touched_;               // #particles
-  index_t touched_count_ = 0;
+  coefficient_increments increments_;          // #particles
   std::vector<vec2> reaction_;                 // #tools
 };
 

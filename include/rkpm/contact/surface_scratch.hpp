@@ -3,7 +3,8 @@
 // docs/method.md section 6.9): the physical positions and velocities of surface particles, the
 // row of a contact point on a segment a-b, c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b), the
 // shared effective mass (61a) over such rows, and the force increments spread to the
-// coefficients through rows and applied as (60). Per-particle scratch sized once, so a step
+// coefficients through rows and applied as (60) (coefficient_increments, which the rigid tools'
+// pass of particle_to_segment.hpp uses too). Per-particle scratch sized once, so a step
 // allocates nothing.
 
 #include <cmath>
@@ -16,16 +17,58 @@
 
 namespace rkpm::contact {
 
+// Force increments on the coefficients, gathered through shape-function rows and applied as
+// (60); only the coefficients touched are visited. Used by every contact pass.
+class coefficient_increments {
+ public:
+  void resize(index_t particles) {
+    dforce_.assign(particles, vec2::Zero());
+    touched_flag_.assign(particles, 0);
+    touched_.assign(particles, 0);
+    touched_count_ = 0;
+  }
+
+  // f_I += scale N_I(X_J) df over row J of `rows`.
+  void spread(const shape_table<2>& rows, index_t J, double scale, const vec2& df) {
+    if (scale == 0.0) return;
+    for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
+      const index_t I = rows.neighbor[e];
+      dforce_[I] += scale * rows.N[e] * df;
+      if (!touched_flag_[I]) {
+        touched_flag_[I] = 1;
+        touched_[touched_count_++] = I;
+      }
+    }
+  }
+
+  // (60): v_I += dt f_I / m_I, d_I += dt^2 f_I / m_I for the coefficients spread to; then zero.
+  void apply(std::span<const double> m, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
+    for (index_t s = 0; s < touched_count_; ++s) {
+      const index_t I = touched_[s];
+      const vec2 da = dforce_[I] / m[I];
+      v[I] += dt * da;
+      d[I] += dt * dt * da;
+      dforce_[I].setZero();
+      touched_flag_[I] = 0;
+    }
+    touched_count_ = 0;
+  }
+
+ private:
+  std::vector<vec2> dforce_;
+  std::vector<char> touched_flag_;
+  std::vector<index_t> touched_;
+  index_t touched_count_ = 0;
+};
+
 class surface_scratch {
  public:
   void resize(index_t particles) {
     x.assign(particles, vec2::Zero());
     w.assign(particles, vec2::Zero());
-    dforce_.assign(particles, vec2::Zero());
     coefficient_.assign(particles, 0.0);
     coverage_.assign(particles, 0.0);
-    touched_flag_.assign(particles, 0);
-    touched_.assign(particles, 0);
+    increments_.resize(particles);
   }
 
   // x_I = X_I + sum_J N_J(X_I) d_J and w_I = sum_J N_J(X_I) v_J.
@@ -67,40 +110,18 @@ class surface_scratch {
     for (index_t q = first; q < end; ++q) visit_row(q, [&](index_t I, double) { coverage_[I] = 0.0; });
   }
 
-  // f_I += scale N_I(X_J) df over the row of particle J.
   void spread(const shape_table<2>& rows, index_t J, double scale, const vec2& df) {
-    if (scale == 0.0) return;
-    for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
-      const index_t I = rows.neighbor[e];
-      dforce_[I] += scale * rows.N[e] * df;
-      if (!touched_flag_[I]) {
-        touched_flag_[I] = 1;
-        touched_[touched_count_++] = I;
-      }
-    }
+    increments_.spread(rows, J, scale, df);
   }
-
-  // (60): v_I += dt f_I / m_I, d_I += dt^2 f_I / m_I for the coefficients spread to; then zero.
   void apply(std::span<const double> m, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
-    for (index_t s = 0; s < touched_count_; ++s) {
-      const index_t I = touched_[s];
-      const vec2 da = dforce_[I] / m[I];
-      v[I] += dt * da;
-      d[I] += dt * dt * da;
-      dforce_[I].setZero();
-      touched_flag_[I] = 0;
-    }
-    touched_count_ = 0;
+    increments_.apply(m, dt, d, v);
   }
 
   std::vector<vec2> x, w;  // physical positions and velocities (surface particles only)
 
  private:
-  std::vector<vec2> dforce_;
   std::vector<double> coefficient_, coverage_;
-  std::vector<char> touched_flag_;
-  std::vector<index_t> touched_;
-  index_t touched_count_ = 0;
+  coefficient_increments increments_;
 };
 
 }  // namespace rkpm::contact
