@@ -63,6 +63,8 @@ struct power_law {
   double slope(double eps_p) const {
     return coefficient * exponent * std::pow(base(eps_p), exponent - 1.0);
   }
+  // The same at a strain whose flow stress is known, without a second pow.
+  double slope(double eps_p, double flow) const { return exponent * flow / base(eps_p); }
   double integral(double from, double to) const {
     const double m = exponent + 1.0;
     return coefficient / m * (std::pow(base(to), m) - std::pow(base(from), m));

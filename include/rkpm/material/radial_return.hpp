@@ -27,8 +27,18 @@ struct radial_return_result {
 template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
                                    double eps_p_n, double tolerance, int max_iterations) {
+  double sigma = 0.0;  // sigma_y at the last residual's dgamma
   const auto residual = [&](double dg) {
-    return q_trial - three_mu * dg - hardening.flow_stress(eps_p_n + dg);
+    sigma = hardening.flow_stress(eps_p_n + dg);
+    return q_trial - three_mu * dg - sigma;
+  };
+  // The slope where the flow stress sigma is already known: a law may reuse it (power_law's
+  // slope is n sigma / (eps0 + eps_p), which saves a pow per Newton update).
+  const auto slope = [&](double eps_p, double flow) {
+    if constexpr (requires { hardening.slope(eps_p, flow); })
+      return hardening.slope(eps_p, flow);
+    else
+      return hardening.slope(eps_p);
   };
   if constexpr (std::same_as<H, hardening::linear>) {
     const double dg = (q_trial - hardening.flow_stress(eps_p_n)) / (three_mu + hardening.modulus);
@@ -47,7 +57,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
              "{}); raise max_newton_iterations or loosen newton_tolerance",
              H::name, r, it, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
-      const double next = dg + r / (three_mu + hardening.slope(eps_p_n + dg));
+      const double next = dg + r / (three_mu + slope(eps_p_n + dg, sigma));
       // Newton left the bracket (or made no progress while unconverged): bisect instead.
       dg = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
       r = residual(dg);

@@ -39,6 +39,8 @@ TEST_CASE("power-law hardening: wheel aluminium, 576.79 MPa (0.01658 + eps_p)^0.
     const double fd =
         576.79e6 * (std::pow(base + d, 0.3593) - std::pow(base - d, 0.3593)) / (2 * d);
     CHECK(law.slope(e) == doctest::Approx(fd).epsilon(1e-8));
+    // The form the return mapping uses, from a known flow stress: the same slope.
+    CHECK(law.slope(e, law.flow_stress(e)) == doctest::Approx(fd).epsilon(1e-8));
   }
   // Work integral against composite Simpson on [0.01, 0.4].
   const int n = 2000;
