@@ -13,6 +13,7 @@
 
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
@@ -39,10 +40,12 @@ struct wheel_forging_parameters {
   int axial_particles = 30;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e11;
-  // 1: every particle is a contact slave, not only the boundary ones. The punch's convex
-  // corners (r = 12 and 24 mm) otherwise slip between two surface particles and drag the
-  // particles behind them into the punch (about 1 mm deep by the end of the stroke).
-  bool all_particles_slaves = true;
+  // Contact slaves: the particles within this many cell layers of the slug's surface (1: the
+  // surface only), 0: every particle. The punch's convex corners (r = 12 and 24 mm) cut the
+  // chord between two surface particles as the material flows round them, and with surface
+  // slaves only they drag the particles just below into the punch (about 1 mm deep by the end of
+  // the stroke); the particles of the layers below then meet the punch's faces as slaves.
+  int slave_layers = 0;
   // 1: the tools' vertices are also checked as slaves against the body's surface (two-pass tool
   // contact, docs/method.md section 6.9), which keeps the punch's corners out with surface slaves.
   bool tool_vertex_slaves = false;
@@ -68,7 +71,7 @@ struct wheel_forging_parameters {
       parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles, 2},
       parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
       parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy", &P::penalty_stiffness_N_m},
-      parameter<P>{"all_particles_slaves", "0/1", "1: every particle is checked against the tools", &P::all_particles_slaves},
+      parameter<P>{"slave_layers", "-", "contact slaves: the particles within this many cell layers of the surface (0: all)", &P::slave_layers, 0},
       parameter<P>{"tool_vertex_slaves", "0/1", "1: the tools' vertices are checked against the body's surface too", &P::tool_vertex_slaves},
       parameter<P>{"contact_depth_m", "m", "deepest penetration a tool face acts on", &P::contact_depth_m},
   };
@@ -115,8 +118,10 @@ struct wheel_forging {
         .initial_velocity = {},
     };
     pr.contact.set_tool_vertex_slaves(p.tool_vertex_slaves);
-    if (p.all_particles_slaves)
+    if (p.slave_layers == 0)
       for (index_t I = 0; I < pr.particles.size(); ++I) pr.slave_particles.push_back(I);
+    else  // the particles are the mesh nodes; the axis r = 0 is not a surface
+      pr.slave_particles = surface_layers(pr.mesh, p.slave_layers, [&](index_t I) { return pr.particles.position[I][0] <= 0.0; });
     return pr;
   }
 

@@ -9,6 +9,7 @@
 //                    boundaries run counter-clockwise, holes clockwise); edges on the axis of an
 //                    axisymmetric body are not surface, and the loop they cut is an open chain
 //                    from the axis round to the axis.
+//   surface_layers   the nodes within k cell layers of those chains
 // Any cell mesh works, not only grids. A node where two parts of the boundary meet (cells that
 // touch at a corner only) has no single successor and is refused with the node's position.
 
@@ -105,6 +106,40 @@ inline std::vector<boundary_chain> boundary_chains(const background_mesh& mesh,
   for (index_t a : starts)
     if (!used[a]) trace(a);
   return chains;
+}
+
+// The nodes within `layers` cell layers of the surface: layer 1 is the chains' nodes, layer k + 1
+// the nodes sharing a cell with layer k. Sorted. Contact slaves that reach under the surface,
+// for tools whose convex corners cut the chord between two surface particles (the particles just
+// below the surface there meet the tool's faces; docs/method.md section 6.9).
+inline std::vector<index_t> surface_layers(const background_mesh& mesh, int layers,
+                                           const std::function<bool(index_t)>& on_axis = {}) {
+  if (layers < 1) fail("surface layers: {} layers; give at least 1 (the surface itself)", layers);
+  std::vector<int> layer(mesh.node.size(), 0);
+  std::vector<index_t> front;
+  for (const boundary_chain& c : boundary_chains(mesh, on_axis))
+    for (index_t n : c.node)
+      if (!layer[n]) {
+        layer[n] = 1;
+        front.push_back(n);
+      }
+  for (int k = 1; k < layers && !front.empty(); ++k) {
+    std::vector<index_t> next;
+    for (const auto& cell : mesh.cell) {
+      const bool touches = std::any_of(cell.begin(), cell.end(), [&](index_t n) { return layer[n] == k; });
+      if (!touches) continue;
+      for (index_t n : cell)
+        if (!layer[n]) {
+          layer[n] = k + 1;
+          next.push_back(n);
+        }
+    }
+    front = std::move(next);
+  }
+  std::vector<index_t> out;
+  for (index_t n = 0; n < static_cast<index_t>(layer.size()); ++n)
+    if (layer[n]) out.push_back(n);
+  return out;
 }
 
 }  // namespace rkpm

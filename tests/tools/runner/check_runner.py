@@ -59,7 +59,7 @@ def bad_options(rkpm_run, work):
         ["taylor_bar", "--threads", "2x"],
         ["taylor_bar", "--contact", "sticky"],
         ["taylor_bar", "--set", "radial_particles=1"],
-        ["wheel_forging", "--set", "all_particles_slaves=0.5"],
+        ["wheel_forging", "--set", "tool_vertex_slaves=0.5"],
         ["paper", "--resolution", "2x"],
         ["paper", "--threads", "0"],
         ["paper", "--cases", "taylor_bar,nosuch_case"],

@@ -124,3 +124,32 @@ TEST_CASE("cells that touch at a corner only are refused, naming the node") {
   CHECK(e.find("node 4 at (1, 1)") != std::string::npos);
   CHECK(e.find("touch at a corner") != std::string::npos);
 }
+
+TEST_CASE("surface layers: the nodes within k cell layers of the surface, as the grid's index distance says") {
+  // On an nx x ny grid the node (i, j) lies in layer 1 + min(i, j, nx-1-i, ny-1-j): layers
+  // 1..k hold nx ny - (nx - 2k)(ny - 2k) nodes, those of layer k + 1 and beyond are inside.
+  const Eigen::Vector2i n(9, 7);
+  const background_mesh m = make_grid_mesh(vec2(0.0, 0.0), vec2(4.0, 3.0), n);
+  for (int k = 1; k <= 4; ++k) {
+    CAPTURE(k);
+    const auto nodes = surface_layers(m, k);
+    const int inner = std::max(0, n[0] - 2 * k) * std::max(0, n[1] - 2 * k);
+    CHECK(static_cast<int>(nodes.size()) == n[0] * n[1] - inner);
+    for (index_t v : nodes) {
+      const int i = static_cast<int>(v % n[0]), j = static_cast<int>(v / n[0]);
+      CHECK(std::min({i, j, n[0] - 1 - i, n[1] - 1 - j}) < k);
+    }
+    CHECK(std::is_sorted(nodes.begin(), nodes.end()));
+  }
+  // With the axis x = 0 no surface, the layers are counted from the other three sides.
+  const auto axis = surface_layers(m, 2, [&](index_t v) { return m.node[v][0] < 1e-12; });
+  std::size_t expected = 0;
+  for (int j = 0; j < n[1]; ++j)
+    for (int i = 0; i < n[0]; ++i) {
+      // The axis nodes at the top and bottom rows are ends of the open chain.
+      const int depth = std::min({j, n[0] - 1 - i, n[1] - 1 - j});
+      expected += depth < 2 ? 1 : 0;
+    }
+  CHECK(axis.size() == expected);
+  CHECK(test::error_message([&] { (void)surface_layers(m, 0); }).find("at least 1") != std::string::npos);
+}
