@@ -66,6 +66,13 @@ struct body_description {
   std::string at;
 };
 
+// Two deformable bodies in contact, by name: the slave body's slave particles against the
+// master body's surface (contact/body_contact.hpp).
+struct body_pair_description {
+  std::string slave, master;
+  std::string at;
+};
+
 // ---- tools ------------------------------------------------------------------------------
 struct tool_motion_description {
   std::string type = "fixed";  // "fixed", "constant_velocity", "velocity_table"
@@ -134,8 +141,10 @@ struct case_description {
   method_choice method;
   double support_factor = 2.0;
   double end_time = 0.0;
-  std::vector<body_description> bodies;  // exactly one today
+  std::vector<body_description> bodies;  // one or more, numbered in the file's order
   std::vector<tool_description> tools;
+  std::vector<body_pair_description> body_pairs;  // "contact": {"pairs": [...]}
+  bool two_pass = false;  // each pair also with the roles swapped
   double friction = 0.0;
   std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
   int snapshots = 20, history_rows = 400;
