@@ -120,10 +120,14 @@ struct probe_history {  // the particle nearest to a reference point
 struct max_plastic_strain_history { std::string body; };
 struct max_penetration_history {};
 struct volume_change_history { std::string body; };  // sum J w / sum w - 1
+struct momentum_history {  // sum_I m_I v_I over the body's particles (N s, per metre in plane strain)
+  std::string body;
+  int component = 1;
+};
 
 using history_kind = std::variant<extent_history, tool_gap_history, tool_force_history, tool_displacement_history,
                                   probe_history, max_plastic_strain_history, max_penetration_history,
-                                  volume_change_history>;
+                                  volume_change_history, momentum_history>;
 
 struct history_description {
   std::string name;

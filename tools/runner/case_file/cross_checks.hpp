@@ -122,7 +122,7 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
   for (const auto& h : c.histories) {
     const auto kind_at = [&](std::string_view field) {
       const std::string_view kinds[] = {"extent", "tool_gap", "tool_force", "tool_displacement", "probe",
-                                        "max_plastic_strain", "max_penetration", "volume_change"};
+                                        "max_plastic_strain", "max_penetration", "volume_change", "momentum"};
       return child_pointer(child_pointer(h.at, kinds[h.kind.index()]), field);
     };
     std::visit(

@@ -139,6 +139,11 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
           return eps_p;
         } else if constexpr (std::is_same_v<H, max_penetration_history>) {
           return s.max_penetration();
+        } else if constexpr (std::is_same_v<H, momentum_history>) {
+          const auto body = body_particles(s, c, h.body);
+          double P = 0.0;
+          for (index_t I = body.first; I < body.last; ++I) P += s.mass()[I] * s.coefficient_velocities()[I][h.component];
+          return P;
         } else {
           const auto in_body = of_body(s, c, h.body);
           double v0 = 0.0, v = 0.0;
