@@ -23,6 +23,7 @@
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/io/checkpoint.hpp>
+#include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/constraints.hpp>
 #include <rkpm/solver/discrete_model.hpp>
@@ -43,17 +44,18 @@ class explicit_solver {
   using state_type = typename M::state_type;
 
   explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options)
-      : model_(std::move(model)), material_(std::move(prob.material)), contact_(std::move(prob.contact)),
+      : model_(std::move(model)),
+        materials_(model_, std::move(prob.material), std::move(prob.body_materials)),
+        contact_(std::move(prob.contact)),
         options_(options) {
     options_.validate();
-    material_.constants().validate();
     const index_t n = model_.particle_count();
-    mass_ = lumped_masses(model_, material_.density());
+    mass_ = materials_.lumped_masses(model_);
     d_.assign(n, vec2::Zero());
     v_ = a_ = d_prev_ = v_before_ = v_half_prev_ = f_int_ = f_int_prev_ = d_;
     f_ext_.resize(n);
     for (index_t I = 0; I < n; ++I) f_ext_[I] = mass_[I] * prob.body_force;
-    points_ = point_materials<G, M>(model_, material_);
+    points_ = point_materials<G, M>(model_, materials_);
 
     add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
     constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
@@ -69,7 +71,7 @@ class explicit_solver {
 
     compute_internal_force();
     for (index_t I = 0; I < n; ++I) a_[I] = (f_ext_[I] - f_int_[I]) / mass_[I];
-    dt_ = clock_.start(model_, material_.constants(), mass_, points_.deformation_gradients(), options_);
+    dt_ = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
     check_step_budget();
     energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
     energy_.record();
@@ -122,7 +124,7 @@ class explicit_solver {
     energy_.kinetic = kinetic_energy();
     energy_.record();
     if (steps_ % options_.time_step_update_interval == 0)
-      dt_ = clock_.update(model_, material_.constants(), mass_, points_.deformation_gradients(),
+      dt_ = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, time_, steps_);
   }
 
@@ -167,7 +169,11 @@ class explicit_solver {
   const energy_balance& energy() const { return energy_; }
   const run_options& options() const { return options_; }
   const discrete_model& model() const { return model_; }
-  const M& material() const { return material_; }
+  // The material of body b (problem::body_materials[b]; body 0: problem::material when the
+  // problem gave no body_materials), the bodies and the body of particle I.
+  const M& material(index_t b = 0) const { return materials_.of_body(b); }
+  index_t bodies() const { return materials_.bodies(); }
+  index_t body_of_particle(index_t I) const { return materials_.body_of_particle(I); }
   const Ct& contact() const { return contact_; }
   Ct& contact() { return contact_; }
   const contact_result& last_contact() const { return last_contact_; }
@@ -227,7 +233,7 @@ class explicit_solver {
   }
 
   void compute_internal_force() {
-    points_.internal_force(model_, material_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});
+    points_.internal_force(model_, materials_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});
     energy_.plastic = points_.plastic_work();
   }
 
@@ -242,7 +248,7 @@ class explicit_solver {
   }
 
   discrete_model model_;
-  M material_;
+  materials_by_body<M> materials_;
   Ct contact_;
   run_options options_;
   std::vector<double> mass_;

@@ -18,6 +18,7 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
+#include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_forces.hpp>
 
@@ -35,20 +36,22 @@ class point_materials {
   using state_type = typename M::state_type;
 
   point_materials() = default;
-  point_materials(const discrete_model& m, const M& material)
-      : state_(m.point_count(), material.initial_state()),
+  point_materials(const discrete_model& m, const materials_by_body<M>& material)
+      : state_(m.point_count(), material.of_body(0).initial_state()),
         tau_(m.point_count(), mat3::Zero()),
         F_(m.point_count(), mat3::Identity()),
         det_F_(m.point_count(), 1.0),
         stretch_(m.point_count(), 1.0),
         failed_(m.point_count(), 0) {
+    if (material.bodies() > 1)
+      for (index_t q = 0; q < m.point_count(); ++q) state_[q] = material.at_point(q).initial_state();
     support_inverse_.setZero();
     for (const vec2& a : m.particles.support) support_inverse_ += a;
     support_inverse_ = (support_inverse_ / static_cast<double>(m.particle_count())).cwiseInverse();
   }
 
   // f_int at coefficients d; advances the material states to the new F.
-  void internal_force(const discrete_model& m, const M& material, const std::vector<vec2>& d,
+  void internal_force(const discrete_model& m, const materials_by_body<M>& material, const std::vector<vec2>& d,
                       std::vector<vec2>& f_int, step_context where) {
     assemble_point_forces<G>(m, d, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
       const vec2& X = m.points.position[q];
@@ -64,7 +67,7 @@ class point_materials {
         return;
       }
       try {
-        tau_[q] = material.kirchhoff_stress(F, state_[q]);
+        tau_[q] = material.at_point(q).kirchhoff_stress(F, state_[q]);
       } catch (const std::exception& ex) {
         failed_[q] = 2;
 #pragma omp critical(rkpm_material_error)

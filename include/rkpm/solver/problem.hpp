@@ -2,11 +2,16 @@
 // problem: the run-time description of one simulation that a case builds for any
 // configuration type (docs/method.md section 9.1): particles, cells, material, contact (with its
 // tools), initial velocity, constraints and body force; and run_options for the stepping.
+// Several bodies (docs/method.md section 3.1) are the connected parts of the cells; add_body
+// appends one with its own material constants and returns its number.
 
 #include <functional>
+#include <utility>
 #include <vector>
 
+#include <rkpm/core/error.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/solver/constraints.hpp>
 
@@ -29,7 +34,31 @@ struct problem {
   // Contact slave particles; empty means the boundary nodes of the mesh when the mesh nodes are
   // the particles (make_grid_mesh + make_grid_particles), else none.
   std::vector<index_t> slave_particles;
+  // Material constants per body: body_materials[b] is body b's, the bodies numbered as
+  // partition_bodies numbers them, from 0 in the order of their first cells (the order append_body
+  // or add_body added them; add_body returns the number). Empty: every body is `material`;
+  // otherwise one per body, and `material` is not used.
+  std::vector<Material> body_materials;
 };
+
+// Appends a body (its particles and its cells, which must be connected: one body) with its own
+// material, and returns its number, the one contact::body_pair and body_materials use. Every
+// body of the problem must come with its material: add all of them with add_body.
+template <class Material, class Contact>
+index_t add_body(problem<Material, Contact>& p, const particle_set<2>& particles, const background_mesh& cells,
+                 Material material) {
+  index_t before = 0, parts = 0;
+  if (p.mesh.cells() > 0) cell_bodies(p.mesh, &before);
+  cell_bodies(cells, &parts);
+  if (before != static_cast<index_t>(p.body_materials.size()))
+    fail("add_body: the problem already has {} bodies but {} body_materials; add every body with add_body", before,
+         p.body_materials.size());
+  if (parts != 1)
+    fail("add_body: the cells given form {} separate bodies; add each connected part with its own add_body", parts);
+  append_body(p.particles, p.mesh, particles, cells);
+  p.body_materials.push_back(std::move(material));
+  return before;
+}
 
 struct run_options {
   double end_time = 0.0;            // s

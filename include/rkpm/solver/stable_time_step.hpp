@@ -9,7 +9,10 @@
 // Power iteration finds omega_max; it approaches it from below, so callers keep a safety
 // fraction. Warm-started from the previous run's vector, a few iterations follow the spectrum
 // as the body deforms (the Taylor bar's impact face is crushed to a tenth of its spacing).
+// With several bodies of different constants (point_moduli) K is block diagonal, one block per
+// body, so omega_max is the largest over the bodies: the fastest body governs the step.
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -26,13 +29,24 @@ struct stiffness_workspace {
   explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()) {}
 };
 
+// The Lame moduli (lambda, mu) at each quadrature point: one pair per body and the body of
+// each point (solver/body_materials.hpp fills them; empty point_body: one body everywhere).
+struct point_moduli {
+  std::vector<std::array<double, 2>> body;  // lambda, mu (Pa) of body b
+  std::vector<index_t> point_body;          // #points, or empty
+
+  point_moduli() = default;
+  explicit point_moduli(const material::elastic_constants& c) : body{{c.lame_lambda(), c.shear_modulus()}} {}
+  const std::array<double, 2>& at(index_t q) const { return point_body.empty() ? body[0] : body[point_body[q]]; }
+};
+
 // out = K x about the configuration F (#points; empty: the reference configuration).
 template <Geometry G>
-void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out) {
-  const double lambda = c.lame_lambda(), mu = c.shear_modulus();
+void apply_elastic_stiffness(const discrete_model& m, const point_moduli& moduli, const std::vector<mat3>& F,
+                             const std::vector<vec2>& x, std::vector<vec2>& out) {
   const bool reference = F.empty();
   assemble_point_forces<G>(m, x, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
+    const auto [lambda, mu] = moduli.at(q);
     const vec2& X = m.points.position[q];
     const mat2 Fi = reference ? mat2::Identity() : mat2(F[q].topLeftCorner<2, 2>().inverse());
     const double F33 = reference ? 1.0 : F[q](2, 2);
@@ -45,6 +59,11 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
     S = J * ds * Fi.transpose() * m.points.weight[q];
     hoop = G::is_axisymmetric ? J * (lambda * tr + 2.0 * mu * de33) / F33 * m.points.weight[q] / X[0] : 0.0;
   });
+}
+template <Geometry G>
+void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
+                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out) {
+  apply_elastic_stiffness<G>(m, point_moduli(c), F, x, out);
 }
 
 // Reference configuration: out = K0 x.
@@ -76,9 +95,9 @@ inline void power_iteration_start(std::vector<vec2>& x) {
 
 // omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation.
 template <Geometry G>
-double largest_frequency_squared(const discrete_model& m, const material::elastic_constants& c,
-                                 const std::vector<mat3>& F, const std::vector<double>& mass,
-                                 std::vector<vec2>& x, stiffness_workspace& w, int iterations) {
+double largest_frequency_squared(const discrete_model& m, const point_moduli& c, const std::vector<mat3>& F,
+                                 const std::vector<double>& mass, std::vector<vec2>& x, stiffness_workspace& w,
+                                 int iterations) {
   const index_t n = m.particle_count();
   double omega2 = 0.0;
   for (int it = 0; it < iterations; ++it) {
@@ -110,7 +129,7 @@ double reference_stable_time_step(const discrete_model& m, const material::elast
   power_iteration_start(x);
   stiffness_workspace w(m);
   static const std::vector<mat3> reference;
-  return 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, reference, mass, x, w, iterations));
+  return 2.0 / std::sqrt(largest_frequency_squared<G>(m, point_moduli(c), reference, mass, x, w, iterations));
 }
 
 }  // namespace rkpm

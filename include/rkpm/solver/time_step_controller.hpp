@@ -5,7 +5,8 @@
 // 10%, or every 500 steps, a short power iteration on the current elastic tangent (warm-started,
 // with the fixed start vector mixed back in so that a newly dominant mode is not missed)
 // measures it again. The stretch rule alone is safe but, with the Taylor bar's 4:1 supports
-// crushed at the impact face, 3 to 4 times too pessimistic.
+// crushed at the impact face, 3 to 4 times too pessimistic. The moduli are per point
+// (point_moduli), so with several bodies the stiffest, lightest one sets the step.
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ class time_step_controller {
 
   // Measures the reference stable step (100 power iterations about F, the configuration at
   // t = 0) and returns the first step.
-  double start(const discrete_model& m, const material::elastic_constants& c, const std::vector<double>& mass,
+  double start(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass,
                const std::vector<mat3>& F, const run_options& options) {
     start_.resize(m.particle_count());
     power_iteration_start(start_);
@@ -42,7 +43,7 @@ class time_step_controller {
   }
 
   // The step after `steps` steps at `time`, with the supports narrowed to min_stretch.
-  double update(const discrete_model& m, const material::elastic_constants& c, const std::vector<double>& mass,
+  double update(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass,
                 const std::vector<mat3>& F, double min_stretch, const run_options& options, double time,
                 index_t steps) {
     const double drift = min_stretch / estimate_stretch_;

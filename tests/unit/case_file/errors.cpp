@@ -131,14 +131,6 @@ TEST_CASE("unknown edge, body and tool names") {
   CHECK(reports(e, "/histories/3/tool_force/tool", "no tool 'wal'; did you mean 'wall'?"));
 }
 
-TEST_CASE("one deformable body only") {
-  case_json doc = taylor();
-  doc["bodies"].push_back(doc["bodies"][0]);
-  doc["bodies"][1]["name"] = "second";
-  CHECK(reports(load_error(doc), "/bodies", "2 bodies given, but the solver has one deformable body"));
-  CHECK(contains(load_error(doc), "model the others as rigid \"tools\""));
-}
-
 TEST_CASE("bodies without area: degenerate rectangle, flat, crossed or clockwise polygon, r < 0") {
   case_json doc = taylor();
   doc["bodies"][0]["shape"]["rectangle"]["upper_right_m"] = {3.2e-3, 0};

@@ -1,11 +1,13 @@
 #pragma once
 // build_problem<Contact>(case, resolution): the rkpm::problem a case file describes, for any
-// contact policy. Resolution K refines as the typed cases do (cases/parameters.hpp): a
+// contact policy: each body discretized and added with its own material (add_body), its
+// constraints, initial velocity and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do (cases/parameters.hpp): a
 // rectangle of n particles per direction gets (n - 1) K + 1, a polygon's spacing is divided by
 // K (gmsh_bodies.hpp). A rectangle builds exactly the particles and cells of make_grid_particles and
 // make_grid_mesh, in the same order, so a paper case file reproduces its typed case bit for
 // bit.
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <utility>
@@ -15,6 +17,7 @@
 
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/solver/problem.hpp>
 
@@ -88,33 +91,127 @@ inline std::vector<velocity_constraint> make_constraints(const case_description&
   return out;
 }
 
+// The file's pairs of bodies in contact as body numbers (the file's order), with each pair's
+// roles swapped too for two passes.
+inline std::vector<contact::body_pair> make_body_pairs(const case_description& c) {
+  const auto number = [&](const std::string& name) {
+    for (std::size_t k = 0; k < c.bodies.size(); ++k)
+      if (c.bodies[k].name == name) return static_cast<index_t>(k);
+    fail("case file: no body '{}' (was the file checked by load_case_file?)", name);
+  };
+  std::vector<contact::body_pair> pairs;
+  const auto add = [&](index_t slave, index_t master) {
+    for (const auto& p : pairs)
+      if (p.slave == slave && p.master == master) return;
+    pairs.push_back({slave, master});
+  };
+  for (const auto& p : c.body_pairs) add(number(p.slave), number(p.master));
+  if (c.two_pass)
+    for (const auto& p : c.body_pairs) add(number(p.master), number(p.slave));
+  return pairs;
+}
+
+// Refuses body k if it overlaps an earlier body at t = 0, with the test the solver makes on the
+// cells (partition_bodies: a node or cell centre of one strictly inside a cell of the other),
+// so that the message can name both bodies and point at the file.
+inline void check_apart(const case_description& c, const std::vector<std::pair<particle_set<2>, background_mesh>>& bodies,
+                        std::size_t k) {
+  const auto box = [](const background_mesh& m) {
+    vec2 lo = m.node.front(), hi = m.node.front();
+    for (const vec2& x : m.node) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    return std::pair{lo, hi};
+  };
+  const auto [lo_k, hi_k] = box(bodies[k].second);
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto [lo_j, hi_j] = box(bodies[j].second);
+    if ((lo_k.array() >= hi_j.array()).any() || (lo_j.array() >= hi_k.array()).any()) continue;
+    particle_set<2> particles;
+    background_mesh mesh;
+    append_body(particles, mesh, bodies[j].first, bodies[j].second);
+    append_body(particles, mesh, bodies[k].first, bodies[k].second);
+    try {
+      partition_bodies(particles.position, mesh);
+    } catch (const error&) {
+      fail_at(c, child_pointer(c.bodies[k].at, "shape"),
+              fmt::format("body '{}' overlaps body '{}' at t = 0 (a cell of one reaches inside the other); move "
+                          "them apart: bodies may touch along their boundaries, not overlap",
+                          c.bodies[k].name, c.bodies[j].name));
+    }
+  }
+}
+
 }  // namespace detail
 
+// Bodies are added in the file's order (add_body), so body k of the problem is the file's
+// /bodies/k; one body gives exactly the problem of a file without bodies (problem::material).
 template <class Contact>
 problem<material_type, Contact> build_problem(const case_description& c, int resolution) {
   if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
-  if (c.bodies.size() != 1)
-    fail_at(c, "/bodies", fmt::format("{} bodies; the solver has exactly one deformable body", c.bodies.size()));
-  const body_description& b = c.bodies.front();
+  if (c.bodies.empty()) fail_at(c, "/bodies", "no body; give the deformable body");
+  const body_description& first = c.bodies.front();
   if constexpr (requires { typename Contact::enforcement_type; })
     if (std::is_same_v<typename Contact::enforcement_type, contact::enforcement::penalty> && !c.penalty_stiffness)
       fail_at(c, "/contact", "the penalty enforcement needs a stiffness; add \"penalty_stiffness_N_m\": 1e11 to "
                              "\"contact\"");
-  auto [particles, mesh] = detail::discretize(c, b, resolution);
-  std::vector<velocity_constraint> constraints = detail::make_constraints(c, b, particles.position);
   problem<material_type, Contact> pr{
-      .particles = std::move(particles),
-      .mesh = std::move(mesh),
-      .material = make_material(b.material),
-      .contact = cases::make_contact<Contact>(make_tools(c), c.friction, c.penalty_stiffness.value_or(0.0)),
+      .particles = {},
+      .mesh = {},
+      .material = make_material(first.material),
+      .contact = cases::make_contact<Contact>(make_tools(c), c.friction, c.penalty_stiffness.value_or(0.0),
+                                              detail::make_body_pairs(c)),
       .initial_velocity = {},
-      .constraints = std::move(constraints),
-      .body_force = b.body_force,
+      .constraints = {},
+      .body_force = first.body_force,
       .slave_particles = {},
   };
-  if (b.initial_velocity != vec2::Zero()) pr.initial_velocity = [v = b.initial_velocity](const vec2&) { return v; };
-  if (b.all_slaves)
-    for (index_t I = 0; I < pr.particles.size(); ++I) pr.slave_particles.push_back(I);
+  std::vector<std::pair<particle_set<2>, background_mesh>> parts;
+  std::vector<index_t> start;  // first particle of each body
+  bool any_all_slaves = false, one_velocity = true;
+  for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+    const body_description& b = c.bodies[k];
+    if (b.body_force != first.body_force)
+      fail_at(c, child_pointer(b.at, "body_force_m_s2"),
+              fmt::format("body '{}' has another body force than body '{}'; the solver takes one acceleration for "
+                          "all bodies (gravity): give them the same", b.name, first.name));
+    parts.push_back(detail::discretize(c, b, resolution));
+    detail::check_apart(c, parts, k);
+    const auto offset = static_cast<index_t>(pr.particles.size());
+    start.push_back(offset);
+    for (velocity_constraint& vc : detail::make_constraints(c, b, parts[k].first.position)) {
+      vc.particle += offset;
+      pr.constraints.push_back(std::move(vc));
+    }
+    try {
+      add_body(pr, parts[k].first, parts[k].second, make_material(b.material));
+    } catch (const error& e) {
+      fail_at(c, child_pointer(b.at, "shape"), e.what());
+    }
+    any_all_slaves = any_all_slaves || b.all_slaves;
+    one_velocity = one_velocity && b.initial_velocity == first.initial_velocity;
+  }
+  start.push_back(static_cast<index_t>(pr.particles.size()));
+  if (c.bodies.size() == 1) pr.body_materials.clear();
+  if (one_velocity) {
+    if (first.initial_velocity != vec2::Zero()) pr.initial_velocity = [v = first.initial_velocity](const vec2&) { return v; };
+  } else {
+    std::vector<vec2> v0;
+    for (const auto& b : c.bodies) v0.push_back(b.initial_velocity);
+    pr.initial_particle_velocity = [v0, start](index_t I, const vec2&) {
+      const auto k = std::upper_bound(start.begin(), start.end(), I) - start.begin() - 1;
+      return v0[static_cast<std::size_t>(k)];
+    };
+  }
+  // Slaves: none given means every body's boundary nodes; a body with "all" lists them all.
+  if (any_all_slaves)
+    for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+      if (c.bodies[k].all_slaves)
+        for (index_t I = start[k]; I < start[k + 1]; ++I) pr.slave_particles.push_back(I);
+      else
+        for (index_t I : parts[k].second.boundary_nodes()) pr.slave_particles.push_back(start[k] + I);
+    }
   return pr;
 }
 

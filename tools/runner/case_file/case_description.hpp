@@ -66,6 +66,13 @@ struct body_description {
   std::string at;
 };
 
+// Two deformable bodies in contact, by name: the slave body's slave particles against the
+// master body's surface (contact/body_contact.hpp).
+struct body_pair_description {
+  std::string slave, master;
+  std::string at;
+};
+
 // ---- tools ------------------------------------------------------------------------------
 struct tool_motion_description {
   std::string type = "fixed";  // "fixed", "constant_velocity", "velocity_table"
@@ -113,10 +120,14 @@ struct probe_history {  // the particle nearest to a reference point
 struct max_plastic_strain_history { std::string body; };
 struct max_penetration_history {};
 struct volume_change_history { std::string body; };  // sum J w / sum w - 1
+struct momentum_history {  // sum_I m_I v_I over the body's particles (N s, per metre in plane strain)
+  std::string body;
+  int component = 1;
+};
 
 using history_kind = std::variant<extent_history, tool_gap_history, tool_force_history, tool_displacement_history,
                                   probe_history, max_plastic_strain_history, max_penetration_history,
-                                  volume_change_history>;
+                                  volume_change_history, momentum_history>;
 
 struct history_description {
   std::string name;
@@ -134,8 +145,10 @@ struct case_description {
   method_choice method;
   double support_factor = 2.0;
   double end_time = 0.0;
-  std::vector<body_description> bodies;  // exactly one today
+  std::vector<body_description> bodies;  // one or more, numbered in the file's order
   std::vector<tool_description> tools;
+  std::vector<body_pair_description> body_pairs;  // "contact": {"pairs": [...]}
+  bool two_pass = false;  // each pair also with the roles swapped
   double friction = 0.0;
   std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
   int snapshots = 20, history_rows = 400;

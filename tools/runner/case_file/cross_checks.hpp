@@ -1,8 +1,9 @@
 #pragma once
 // The checks of a case file that look at more than one field: a body's shape has an area (a
 // polygon is simple and counter-clockwise), an axisymmetric body lies at r >= 0, names of
-// edges, bodies and tools exist, no tool starts inside the body, the penalty enforcement has
-// its stiffness. Run after read_case found no error, so that every field read is sound.
+// edges, bodies and tools exist and are unique, pairs of bodies in contact name two bodies, no
+// tool starts inside a body, the penalty enforcement has its stiffness. (Bodies that overlap
+// are found when the problem is built, on their cells: build_problem.hpp.) Run after read_case found no error, so that every field read is sound.
 
 #include <algorithm>
 #include <cmath>
@@ -121,7 +122,7 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
   for (const auto& h : c.histories) {
     const auto kind_at = [&](std::string_view field) {
       const std::string_view kinds[] = {"extent", "tool_gap", "tool_force", "tool_displacement", "probe",
-                                        "max_plastic_strain", "max_penetration", "volume_change"};
+                                        "max_plastic_strain", "max_penetration", "volume_change", "momentum"};
       return child_pointer(child_pointer(h.at, kinds[h.kind.index()]), field);
     };
     std::visit(
@@ -134,15 +135,31 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
             check_name(d, kind_at("to"), k.to, tools, "tool");
           }
           if constexpr (std::is_same_v<K, extent_history>) {
-            if (k.on_edge.empty() || c.bodies.empty()) return;
-            const auto names = edge_names(c.bodies.front());
+            const auto body = std::find(bodies.begin(), bodies.end(), k.body);
+            if (k.on_edge.empty() || body == bodies.end()) return;
+            const body_description& b = c.bodies[static_cast<std::size_t>(body - bodies.begin())];
+            const auto names = edge_names(b);
             if (std::find(names.begin(), names.end(), k.on_edge) == names.end())
-              d.error(kind_at("on_edge"), fmt::format("body '{}' has no edge '{}'; {}", c.bodies.front().name,
-                                                      k.on_edge, suggest(k.on_edge, names, "its edges are")));
+              d.error(kind_at("on_edge"), fmt::format("body '{}' has no edge '{}'; {}", b.name, k.on_edge,
+                                                      suggest(k.on_edge, names, "its edges are")));
           }
         },
         h.kind);
   }
+}
+
+// The pairs of bodies in contact name two different bodies of the file.
+inline void check_body_pairs(diagnostics& d, const case_description& c, const std::vector<std::string>& bodies) {
+  for (const auto& p : c.body_pairs) {
+    check_name(d, child_pointer(p.at, "slave"), p.slave, bodies, "body");
+    check_name(d, child_pointer(p.at, "master"), p.master, bodies, "body");
+    if (p.slave == p.master)
+      d.error(p.at, fmt::format("body '{}' is paired with itself; self-contact is not supported: name two different "
+                                "bodies", p.slave));
+  }
+  if (c.two_pass && c.body_pairs.empty())
+    d.error("/contact/two_pass", "two passes of what? no \"pairs\" of bodies in contact are given; add \"pairs\": "
+                                 "[{\"slave\": \"plate\", \"master\": \"projectile\"}] or remove two_pass");
 }
 
 }  // namespace detail
@@ -153,8 +170,11 @@ inline void cross_check(diagnostics& d, const case_description& c) {
   for (const auto& b : c.bodies) {
     detail::check_shape(d, b, axisymmetric);
     detail::check_constraints(d, b, axisymmetric);
+    if (std::find(bodies.begin(), bodies.end(), b.name) != bodies.end())
+      d.error(child_pointer(b.at, "name"), fmt::format("a second body named '{}'; give each body its own name", b.name));
     bodies.push_back(b.name);
   }
+  detail::check_body_pairs(d, c, bodies);
   for (const auto& t : c.tools) {
     if (std::find(tools.begin(), tools.end(), t.name) != tools.end())
       d.error(child_pointer(t.at, "name"), fmt::format("a second tool named '{}'; give each tool its own name", t.name));

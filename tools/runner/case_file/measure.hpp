@@ -3,7 +3,8 @@
 // its current time, in the file's order, as (name, value) pairs like the typed cases'
 // measure(). The arithmetic is theirs (a maximum over the same particles, a gap as reference
 // gap plus relative displacement, a force as the runner's mean over the last output
-// interval), so that the paper case files give the typed cases' numbers bit for bit.
+// interval), so that the paper case files give the typed cases' numbers bit for bit. With
+// several bodies each measure that names a body looks at that body's particles or points only.
 //   mean_tool_force  #tools list of the tools' reactions averaged over the last interval (N
 //                    or N/m, as the runner passes them to every case's measure)
 
@@ -33,17 +34,38 @@ std::size_t tool_index(const Solver& s, const std::string& name) {
   fail("case file: the solver has no tool '{}' (was it built from this case file?)", name);
 }
 
+// The particles [first, last) of the body called `name`: build_problem adds the bodies in the
+// file's order, each one's particles after the previous ones'.
+struct particle_range {
+  index_t first = 0, last = 0;
+};
+template <class Solver>
+particle_range body_particles(const Solver& s, const case_description& c, const std::string& name) {
+  const auto n = s.model().particle_count();
+  if (c.bodies.size() == 1) return {0, n};
+  index_t k = 0;
+  while (static_cast<std::size_t>(k) < c.bodies.size() && c.bodies[k].name != name) ++k;
+  particle_range r{n, n};
+  for (index_t I = 0; I < n; ++I)
+    if (s.body_of_particle(I) == k) {
+      r.first = std::min(r.first, I);
+      r.last = I + 1;
+    }
+  return r;
+}
+
 // Largest, smallest or spread of the current x or y of the particles selected; 0 if none is
 // (as the typed wheel's rim height before material reaches the recess).
 template <class Solver>
-double extent_of(const Solver& s, const body_description& b, const extent_history& h, const std::vector<vec2>& x) {
+double extent_of(const Solver& s, const body_description& b, particle_range body, const extent_history& h,
+                 const std::vector<vec2>& x) {
   const auto& X = s.model().particles.position;
   std::vector<index_t> chosen;
   if (h.on_edge.empty()) {
-    chosen.resize(x.size());
-    for (std::size_t I = 0; I < x.size(); ++I) chosen[I] = static_cast<index_t>(I);
-  } else {
-    chosen = particles_on_edge(b, X, h.on_edge);
+    for (index_t I = body.first; I < body.last; ++I) chosen.push_back(I);
+  } else {  // the body's own particles: edges are named per body
+    const std::vector<vec2> own(X.begin() + body.first, X.begin() + body.last);
+    for (index_t I : particles_on_edge(b, own, h.on_edge)) chosen.push_back(body.first + I);
   }
   const int k = h.of.back() == 'x' ? 0 : 1;
   bool any = false;
@@ -62,6 +84,18 @@ double extent_of(const Solver& s, const body_description& b, const extent_histor
   return hi - lo;
 }
 
+// Whether quadrature point q belongs to the body called `name` (kernels never reach across
+// bodies, so a point's body is that of any particle in its row).
+template <class Solver>
+auto of_body(const Solver& s, const case_description& c, const std::string& name) {
+  const auto body = body_particles(s, c, name);
+  const auto& rows = s.model().at_points;
+  return [body, &rows](std::size_t q) {
+    const index_t I = rows.neighbor[rows.offset[q]];
+    return I >= body.first && I < body.last;
+  };
+}
+
 template <class Solver>
 double evaluate(const Solver& s, const case_description& c, const history_kind& kind,
                 const std::vector<vec2>& mean_tool_force, const std::vector<vec2>& x) {
@@ -69,7 +103,10 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
       [&](const auto& h) -> double {
         using H = std::decay_t<decltype(h)>;
         if constexpr (std::is_same_v<H, extent_history>) {
-          return extent_of(s, c.bodies.front(), h, x);
+          const auto body = body_particles(s, c, h.body);
+          for (const auto& b : c.bodies)
+            if (b.name == h.body) return extent_of(s, b, body, h, x);
+          fail("case file: no body '{}'", h.body);
         } else if constexpr (std::is_same_v<H, tool_gap_history>) {
           const auto& from = s.contact().tools()[tool_index(s, h.from)];
           const auto& to = s.contact().tools()[tool_index(s, h.to)];
@@ -87,22 +124,32 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
           return s.contact().tools()[tool_index(s, h.tool)].displacement(s.time())[h.component];
         } else if constexpr (std::is_same_v<H, probe_history>) {
           const auto& X = s.model().particles.position;
-          std::size_t nearest = 0;
-          for (std::size_t I = 1; I < X.size(); ++I)
+          const auto body = body_particles(s, c, h.body);
+          auto nearest = static_cast<std::size_t>(body.first);
+          for (auto I = nearest + 1; I < static_cast<std::size_t>(body.last); ++I)
             if ((X[I] - h.point).squaredNorm() < (X[nearest] - h.point).squaredNorm()) nearest = I;
           if (h.quantity == "position") return x[nearest][h.component];
           const auto values = h.quantity == "velocity" ? s.particle_velocities() : s.particle_displacements();
           return values[nearest][h.component];
         } else if constexpr (std::is_same_v<H, max_plastic_strain_history>) {
+          const auto in_body = of_body(s, c, h.body);
           double eps_p = 0.0;
-          for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
+          for (std::size_t q = 0; q < s.point_states().size(); ++q)
+            if (in_body(q)) eps_p = std::max(eps_p, s.point_states()[q].equivalent_plastic_strain);
           return eps_p;
         } else if constexpr (std::is_same_v<H, max_penetration_history>) {
           return s.max_penetration();
+        } else if constexpr (std::is_same_v<H, momentum_history>) {
+          const auto body = body_particles(s, c, h.body);
+          double P = 0.0;
+          for (index_t I = body.first; I < body.last; ++I) P += s.mass()[I] * s.coefficient_velocities()[I][h.component];
+          return P;
         } else {
+          const auto in_body = of_body(s, c, h.body);
           double v0 = 0.0, v = 0.0;
           const auto& w = s.model().points.weight;
           for (std::size_t q = 0; q < w.size(); ++q) {
+            if (!in_body(q)) continue;
             v0 += w[q];
             v += w[q] * s.point_det_F()[q];
           }

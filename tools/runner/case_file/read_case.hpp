@@ -49,6 +49,11 @@ auto read_list(diagnostics& d, const json& value, const std::string& at, std::st
   return out;
 }
 
+inline body_pair_description read_body_pair(diagnostics& d, const json& value, const std::string& at) {
+  object_reader r(d, value, at, {"slave", "master"});
+  return {r.text("slave", "plate").value_or(""), r.text("master", "projectile").value_or(""), at};
+}
+
 }  // namespace detail
 
 inline case_description read_case(diagnostics& d, const json& document, const std::filesystem::path& file) {
@@ -79,16 +84,16 @@ inline case_description read_case(diagnostics& d, const json& document, const st
                                    return read_body(dd, v, at, folder);
                                  });
     if (b->is_array() && b->empty()) d.error(r.at("bodies"), "the list is empty; give the deformable body");
-    if (c.bodies.size() > 1)
-      d.error(r.at("bodies"), fmt::format("{} bodies given, but the solver has one deformable body (several bodies in "
-                                          "contact is a later issue); model the others as rigid \"tools\"",
-                                          c.bodies.size()));
   }
   if (const json* t = r.find("tools"))
     c.tools = detail::read_list(d, *t, r.at("tools"), "[{\"name\": \"wall\", \"polyline_m\": ...}]", read_tool);
   if (const json* k = r.find("contact")) {
-    object_reader cr(d, *k, r.at("contact"), {"friction", "penalty_stiffness_N_m"});
+    object_reader cr(d, *k, r.at("contact"), {"friction", "penalty_stiffness_N_m", "pairs", "two_pass"});
     c.friction = cr.number_or("friction", 0.0);
+    if (const json* pairs = cr.find("pairs"))
+      c.body_pairs = detail::read_list(d, *pairs, cr.at("pairs"), "[{\"slave\": \"plate\", \"master\": \"projectile\"}]",
+                                       detail::read_body_pair);
+    c.two_pass = cr.boolean_or("two_pass", false);
     check_non_negative(d, cr.at("friction"), c.friction, "0.2 (Coulomb coefficient; 0 is frictionless)");
     if (cr.find("penalty_stiffness_N_m")) {
       c.penalty_stiffness = cr.number_or("penalty_stiffness_N_m", 1e11);

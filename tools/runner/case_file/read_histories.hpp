@@ -10,6 +10,7 @@
 //   max_plastic_strain  largest equivalent plastic strain of the quadrature points
 //   max_penetration     deepest penetration of a tool so far
 //   volume_change       sum_q J_q w_q / sum_q w_q - 1
+//   momentum            a body's linear momentum, sum_I m_I v_I (x or y)
 // Every kind takes "scale" (default 1: 1e3 turns m into mm). Names of bodies, tools and edges
 // are checked against the case in cross_checks.hpp.
 
@@ -27,9 +28,9 @@
 
 namespace rkpm::runner::case_file {
 
-inline constexpr std::array<std::string_view, 8> history_kinds{
+inline constexpr std::array<std::string_view, 9> history_kinds{
     "extent", "tool_gap", "tool_force", "tool_displacement", "probe", "max_plastic_strain", "max_penetration",
-    "volume_change"};
+    "volume_change", "momentum"};
 
 namespace detail {
 
@@ -70,6 +71,7 @@ inline history_kind read_history_kind(const object_reader& r, std::string_view k
   }
   if (kind == "max_plastic_strain") return max_plastic_strain_history{r.text("body", "bar").value_or("")};
   if (kind == "max_penetration") return max_penetration_history{};
+  if (kind == "momentum") return momentum_history{r.text("body", "bar").value_or(""), read_component(r)};
   return volume_change_history{r.text("body", "slug").value_or("")};
 }
 
@@ -81,6 +83,7 @@ inline std::vector<std::string_view> history_fields(std::string_view kind) {
   if (kind == "tool_displacement") return {"tool", "component"};
   if (kind == "probe") return {"body", "point_m", "quantity", "component"};
   if (kind == "max_penetration") return {};
+  if (kind == "momentum") return {"body", "component"};
   return {"body"};
 }
 
