@@ -45,7 +45,7 @@ struct wheel_forging_parameters {
   // chord between two surface particles as the material flows round them, and with surface
   // slaves only they drag the particles just below into the punch (about 1 mm deep by the end of
   // the stroke); the particles of the layers below then meet the punch's faces as slaves.
-  int slave_layers = 0;
+  int slave_layers = 3;
   // 1: the tools' vertices are also checked as slaves against the body's surface (two-pass tool
   // contact, docs/method.md section 6.9), which keeps the punch's corners out with surface slaves.
   bool tool_vertex_slaves = false;
