@@ -99,6 +99,11 @@ TEST_CASE("wrong types and values out of range") {
   case_json poly = polygon_taylor({{0, 0}, {1e-2, 0}, {0, 1e-2}});
   poly["bodies"][0]["shape"]["polygon"]["spacing_m"] = 0;
   CHECK(reports(load_error(poly), "/bodies/0/shape/polygon/spacing_m", "0 must be positive"));
+  case_json layers = taylor();
+  layers["bodies"][0]["slaves"] = {{"layers", 0}};
+  CHECK(reports(load_error(layers), "/bodies/0/slaves/layers", "give at least 1"));
+  layers["bodies"][0]["slaves"] = {{"layers", 2.5}};
+  CHECK(reports(load_error(layers), "/bodies/0/slaves/layers", "whole number"));
 }
 
 TEST_CASE("unknown policy, law and choice names list the choices") {

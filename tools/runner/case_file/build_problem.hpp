@@ -18,6 +18,7 @@
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/body_partition.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/solver/problem.hpp>
 
@@ -169,7 +170,7 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
   };
   std::vector<std::pair<particle_set<2>, background_mesh>> parts;
   std::vector<index_t> start;  // first particle of each body
-  bool any_all_slaves = false, one_velocity = true;
+  bool listed_slaves = false, one_velocity = true;
   for (std::size_t k = 0; k < c.bodies.size(); ++k) {
     const body_description& b = c.bodies[k];
     if (b.body_force != first.body_force)
@@ -189,7 +190,7 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
     } catch (const error& e) {
       fail_at(c, child_pointer(b.at, "shape"), e.what());
     }
-    any_all_slaves = any_all_slaves || b.all_slaves;
+    listed_slaves = listed_slaves || b.slave_layers != 1;
     one_velocity = one_velocity && b.initial_velocity == first.initial_velocity;
   }
   start.push_back(static_cast<index_t>(pr.particles.size()));
@@ -204,13 +205,22 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
       return v0[static_cast<std::size_t>(k)];
     };
   }
-  // Slaves: none given means every body's boundary nodes; a body with "all" lists them all.
-  if (any_all_slaves)
+  // Slaves: none given means every body's boundary nodes; "all" lists a body's every particle,
+  // {"layers": K} those within K cell layers of its surface (the axis is not surface).
+  if (listed_slaves)
     for (std::size_t k = 0; k < c.bodies.size(); ++k) {
-      if (c.bodies[k].all_slaves)
-        for (index_t I = start[k]; I < start[k + 1]; ++I) pr.slave_particles.push_back(I);
+      const int layers = c.bodies[k].slave_layers;
+      const auto& [particles, mesh] = parts[k];
+      std::vector<index_t> local;
+      if (layers == 0)
+        for (index_t I = 0; I < particles.size(); ++I) local.push_back(I);
+      else if (layers == 1)
+        local = mesh.boundary_nodes();
       else
-        for (index_t I : parts[k].second.boundary_nodes()) pr.slave_particles.push_back(start[k] + I);
+        local = surface_layers(mesh, layers, [&](index_t I) {
+          return c.geometry == "axisymmetric" && particles.position[I][0] <= 0.0;
+        });
+      for (index_t I : local) pr.slave_particles.push_back(start[k] + I);
     }
   return pr;
 }

@@ -62,7 +62,9 @@ struct body_description {
   vec2 initial_velocity = vec2::Zero();
   vec2 body_force = vec2::Zero();  // acceleration, m/s^2
   std::vector<constraint_description> constraints;
-  bool all_slaves = false;  // "slaves": "all" (else "boundary")
+  // "slaves": "boundary" (1), "all" (0) or {"layers": K}: the particles within K cell layers of
+  // the surface (discretization/boundary_chains.hpp surface_layers).
+  int slave_layers = 1;
   std::string at;
 };
 

@@ -198,8 +198,17 @@ inline body_description read_body(diagnostics& d, const json& value, const std::
         if (auto c = detail::read_constraint(d, (*cs)[i], child_pointer(r.at("constraints"), i)))
           b.constraints.push_back(*c);
   }
-  const std::array<std::string_view, 2> slaves{"boundary", "all"};
-  b.all_slaves = r.choice("slaves", slaves, "slave choice", "boundary").value_or("boundary") == "all";
+  if (const json* s = r.find("slaves"); s && s->is_object()) {
+    object_reader layers(d, *s, r.at("slaves"), {"layers"});
+    const auto k = layers.integer("layers", "3");
+    if (k && *k < 1)
+      d.error(layers.at("layers"), fmt::format("{} layers; give at least 1 (1: the surface particles), or \"all\"", *k));
+    else if (k)
+      b.slave_layers = *k;
+  } else {
+    const std::array<std::string_view, 2> slaves{"boundary", "all"};
+    b.slave_layers = r.choice("slaves", slaves, "slave choice", "boundary").value_or("boundary") == "all" ? 0 : 1;
+  }
   return b;
 }
 
