@@ -11,6 +11,9 @@
 // as the body deforms (the Taylor bar's impact face is crushed to a tenth of its spacing).
 
 #include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
@@ -26,17 +29,22 @@ struct stiffness_workspace {
   explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()) {}
 };
 
-// out = K x about the configuration F (#points; empty: the reference configuration).
-template <Geometry G>
-void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out) {
+namespace detail {
+
+// out = K x about the configuration F_at(q) (a callable q -> mat3), or the reference one
+// (F_at = nullptr).
+template <Geometry G, class PointF>
+void elastic_stiffness(const discrete_model& m, const material::elastic_constants& c, const PointF& F_at,
+                       const std::vector<vec2>& x, std::vector<vec2>& out) {
   const double lambda = c.lame_lambda(), mu = c.shear_modulus();
-  const bool reference = F.empty();
+  constexpr bool reference = std::is_same_v<PointF, std::nullptr_t>;
   assemble_point_forces<G>(m, x, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
     const vec2& X = m.points.position[q];
-    const mat2 Fi = reference ? mat2::Identity() : mat2(F[q].topLeftCorner<2, 2>().inverse());
-    const double F33 = reference ? 1.0 : F[q](2, 2);
-    const double J = reference ? 1.0 : F[q].determinant();
+    mat3 F = mat3::Identity();
+    if constexpr (!reference) F = F_at(q);
+    const mat2 Fi = reference ? mat2::Identity() : mat2(F.topLeftCorner<2, 2>().inverse());
+    const double F33 = reference ? 1.0 : F(2, 2);
+    const double J = reference ? 1.0 : F.determinant();
     const mat2 L = g.H * Fi;
     const mat2 de = 0.5 * (L + L.transpose());
     const double de33 = (G::out_of_plane_stretch(g.u, X) - 1.0) / F33;
@@ -45,6 +53,23 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
     S = J * ds * Fi.transpose() * m.points.weight[q];
     hoop = G::is_axisymmetric ? J * (lambda * tr + 2.0 * mu * de33) / F33 * m.points.weight[q] / X[0] : 0.0;
   });
+}
+
+}  // namespace detail
+
+// out = K x about the configuration F (#points; empty: the reference configuration).
+template <Geometry G>
+void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
+                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out) {
+  if (F.empty()) detail::elastic_stiffness<G>(m, c, nullptr, x, out);
+  else detail::elastic_stiffness<G>(m, c, [&](index_t q) -> const mat3& { return F[q]; }, x, out);
+}
+
+// out = K x about the configuration F_at(q), a callable (point_materials::deformation_gradients()).
+template <Geometry G, std::invocable<index_t> PointF>
+void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c, const PointF& F_at,
+                             const std::vector<vec2>& x, std::vector<vec2>& out) {
+  detail::elastic_stiffness<G>(m, c, F_at, x, out);
 }
 
 // Reference configuration: out = K0 x.
@@ -74,10 +99,11 @@ inline void power_iteration_start(std::vector<vec2>& x) {
     x[I] = vec2(std::sin(12.9898 * static_cast<double>(I) + 1.0), std::cos(78.233 * static_cast<double>(I) + 2.0));
 }
 
-// omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation.
-template <Geometry G>
+// omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation. F: a
+// std::vector<mat3> (empty: the reference configuration) or a callable q -> mat3.
+template <Geometry G, class PointF>
 double largest_frequency_squared(const discrete_model& m, const material::elastic_constants& c,
-                                 const std::vector<mat3>& F, const std::vector<double>& mass,
+                                 const PointF& F, const std::vector<double>& mass,
                                  std::vector<vec2>& x, stiffness_workspace& w, int iterations) {
   const index_t n = m.particle_count();
   double omega2 = 0.0;

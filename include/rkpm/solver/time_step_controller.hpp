@@ -28,9 +28,11 @@ class time_step_controller {
   time_step_controller() = default;
 
   // Measures the reference stable step (100 power iterations about F, the configuration at
-  // t = 0) and returns the first step.
+  // t = 0) and returns the first step. F: the deformation gradient at every point, a callable
+  // q -> mat3 (point_materials::deformation_gradients()) or a std::vector<mat3>.
+  template <class PointF>
   double start(const discrete_model& m, const material::elastic_constants& c, const std::vector<double>& mass,
-               const std::vector<mat3>& F, const run_options& options) {
+               const PointF& F, const run_options& options) {
     start_.resize(m.particle_count());
     power_iteration_start(start_);
     mode_ = start_;
@@ -42,8 +44,9 @@ class time_step_controller {
   }
 
   // The step after `steps` steps at `time`, with the supports narrowed to min_stretch.
+  template <class PointF>
   double update(const discrete_model& m, const material::elastic_constants& c, const std::vector<double>& mass,
-                const std::vector<mat3>& F, double min_stretch, const run_options& options, double time,
+                const PointF& F, double min_stretch, const run_options& options, double time,
                 index_t steps) {
     const double drift = min_stretch / estimate_stretch_;
     if (steps > 0 && (drift < 0.9 || drift > 1.25 || steps - estimate_step_ >= 500)) {
