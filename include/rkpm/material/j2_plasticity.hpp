@@ -76,9 +76,11 @@ class j2_plasticity {
   // s.previous_deformation to F and returns the Kirchhoff stress.
   mat3 kirchhoff_stress(const mat3& F, state_type& s) const {
     check_deformation_gradient(F, "material::j2_plasticity");
-    const mat3 f = F * block_inverse(s.previous_deformation.full());
-    const mat3 b_trial = f * s.elastic_left_cauchy_green.full() * f.transpose();
-    const principal_frame frame = principal_frame::of(b_trial);
+    // In block arithmetic (core/block_matrix.hpp): the values of the mat3 products, a third
+    // of their cost.
+    const block_matrix f = block_matrix::of(F) * inverse(s.previous_deformation);
+    const block_matrix b_trial = f * s.elastic_left_cauchy_green * f.transpose();
+    const principal_frame frame = principal_frame::of(b_trial.full());
     const vec3 eps = principal_log_strains(frame.values);
     const double volumetric = eps.sum();
     vec3 dev = eps - vec3::Constant(volumetric / 3.0);
@@ -95,7 +97,7 @@ class j2_plasticity {
       const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
       s.elastic_left_cauchy_green = block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));
     } else {
-      s.elastic_left_cauchy_green = block_matrix::of(b_trial);
+      s.elastic_left_cauchy_green = b_trial;
     }
     s.previous_deformation = block_matrix::of(F);
     const vec3 tau = vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev;

@@ -63,7 +63,7 @@ class point_materials {
       mat3 F = mat3::Identity();
       F.topLeftCorner<2, 2>() += g.H;
       F(2, 2) = G::out_of_plane_stretch(g.u, X);
-      const double J = F.determinant();
+      const double J = block_matrix::of(F).determinant();  // F.determinant()'s value, fewer flops
       if constexpr (!state_records_F) F_[q] = block_matrix::of(F);
       det_F_[q] = J;
       failed_[q] = 0;
