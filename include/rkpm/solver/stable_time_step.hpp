@@ -93,10 +93,13 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
   apply_elastic_stiffness<G>(m, c, x, out);
 }
 
-// A start vector with every frequency present (deterministic, so runs repeat exactly).
+// A start vector with every frequency present (deterministic, so runs repeat exactly); its
+// entry I alone, for callers that mix it back in without keeping a copy.
+inline vec2 power_iteration_start(std::size_t I) {
+  return vec2(std::sin(12.9898 * static_cast<double>(I) + 1.0), std::cos(78.233 * static_cast<double>(I) + 2.0));
+}
 inline void power_iteration_start(std::vector<vec2>& x) {
-  for (std::size_t I = 0; I < x.size(); ++I)
-    x[I] = vec2(std::sin(12.9898 * static_cast<double>(I) + 1.0), std::cos(78.233 * static_cast<double>(I) + 2.0));
+  for (std::size_t I = 0; I < x.size(); ++I) x[I] = power_iteration_start(I);
 }
 
 // omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation. F: a

@@ -33,9 +33,8 @@ class time_step_controller {
   template <class PointF>
   double start(const discrete_model& m, const material::elastic_constants& c, const std::vector<double>& mass,
                const PointF& F, const run_options& options) {
-    start_.resize(m.particle_count());
-    power_iteration_start(start_);
-    mode_ = start_;
+    mode_.resize(m.particle_count());
+    power_iteration_start(mode_);
     workspace_ = stiffness_workspace(m);
     reference_dt_ = estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 100));
     estimate_stretch_ = 1.0;
@@ -52,7 +51,8 @@ class time_step_controller {
     if (steps > 0 && (drift < 0.9 || drift > 1.25 || steps - estimate_step_ >= 500)) {
       double norm = 0.0;
       for (const vec2& x : mode_) norm = std::max(norm, x.cwiseAbs().maxCoeff());
-      for (std::size_t I = 0; I < mode_.size(); ++I) mode_[I] = mode_[I] / norm + 0.3 * start_[I];
+      // The start vector recomputed, not stored (16 bytes per particle): the same values.
+      for (std::size_t I = 0; I < mode_.size(); ++I) mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(I);
       estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 20));
       estimate_stretch_ = min_stretch;
       estimate_step_ = steps;
@@ -71,7 +71,6 @@ class time_step_controller {
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
     a.array("clock.mode", s.mode_);
-    a.array("clock.start", s.start_);
     a.value("clock.reference_dt", s.reference_dt_);
     a.value("clock.estimate_dt", s.estimate_dt_);
     a.value("clock.estimate_stretch", s.estimate_stretch_);
@@ -88,7 +87,7 @@ class time_step_controller {
     return options.fixed_time_step;
   }
 
-  std::vector<vec2> mode_, start_;  // power-iteration vector and its fixed start
+  std::vector<vec2> mode_;  // power-iteration vector
   stiffness_workspace workspace_{discrete_model{}};
   double reference_dt_ = 0.0, estimate_dt_ = 0.0, estimate_stretch_ = 1.0;
   index_t estimate_step_ = 0;
