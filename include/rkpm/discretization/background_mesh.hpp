@@ -8,7 +8,7 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -55,14 +55,25 @@ struct background_mesh {
   // The boundary edges (those that belong to one cell only), in cell order, each traversed as
   // its cell traverses it (counter-clockwise cells: the body to the left, the outward normal to
   // the right).
+  // The edges are counted in a sorted array of 64-bit keys (8 bytes per cell side), not a
+  // std::map (about 110 bytes per node): built while the solver is set up, with the tables
+  // already in memory, the map was the run's peak.
   std::vector<std::array<index_t, 2>> boundary_edges() const {
-    std::map<std::pair<index_t, index_t>, int> count;
+    const auto key = [](index_t a, index_t b) {
+      const auto [lo, hi] = std::minmax(a, b);
+      return static_cast<std::uint64_t>(lo) << 32 | static_cast<std::uint64_t>(hi);
+    };
+    std::vector<std::uint64_t> sides;
+    sides.reserve(4 * cell.size());
     for (const auto& c : cell)
-      for (int k = 0; k < 4; ++k) ++count[std::minmax(c[k], c[(k + 1) % 4])];
+      for (int k = 0; k < 4; ++k) sides.push_back(key(c[k], c[(k + 1) % 4]));
+    std::sort(sides.begin(), sides.end());
     std::vector<std::array<index_t, 2>> edges;
     for (const auto& c : cell)
-      for (int k = 0; k < 4; ++k)
-        if (count[std::minmax(c[k], c[(k + 1) % 4])] == 1) edges.push_back({c[k], c[(k + 1) % 4]});
+      for (int k = 0; k < 4; ++k) {
+        const auto [first, last] = std::equal_range(sides.begin(), sides.end(), key(c[k], c[(k + 1) % 4]));
+        if (last - first == 1) edges.push_back({c[k], c[(k + 1) % 4]});
+      }
     return edges;
   }
 

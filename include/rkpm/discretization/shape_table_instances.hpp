@@ -20,13 +20,14 @@
 #define RKPM_SHAPE_TABLE_INSTANCE(K, C) \
   template class rk_shape_functions<K, C, 2>; \
   template shape_table<2> build_shape_table<K, C, 2>(const neighbor_search<2>&, const std::vector<vec<2>>&, \
-                                                      const rk_shape_functions<K, C, 2>&);
+                                                      const rk_shape_functions<K, C, 2>&, shape_table_contents);
 #elif defined(RKPM_EXTERN_SHAPE_TABLES)
 #define RKPM_SHAPE_TABLE_INSTANCE(K, C) \
   extern template class rk_shape_functions<K, C, 2>; \
   extern template shape_table<2> build_shape_table<K, C, 2>(const neighbor_search<2>&, \
                                                              const std::vector<vec<2>>&, \
-                                                             const rk_shape_functions<K, C, 2>&);
+                                                             const rk_shape_functions<K, C, 2>&, \
+                                                             shape_table_contents);
 #endif
 
 #ifdef RKPM_SHAPE_TABLE_INSTANCE

@@ -58,7 +58,7 @@ inline void append_row(const shape_table<2>& from, index_t row, const std::vecto
   for (index_t e = from.offset[row]; e < from.offset[row + 1]; ++e) {
     to.neighbor.push_back(global[from.neighbor[e]]);
     to.N.push_back(from.N[e]);
-    to.grad.push_back(from.grad[e]);
+    if (!from.grad.empty()) to.grad.push_back(from.grad[e]);
   }
   to.offset.push_back(static_cast<index_t>(to.neighbor.size()));
 }

@@ -56,7 +56,6 @@ inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t
     for (index_t e = src.offset[J]; e < src.offset[J + 1]; ++e) {
       t.neighbor.push_back(src.neighbor[e]);
       t.N.push_back(src.N[e]);
-      t.grad.push_back(src.grad[e]);
     }
     t.offset.push_back(static_cast<index_t>(t.neighbor.size()));
   }

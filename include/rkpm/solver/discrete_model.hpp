@@ -7,7 +7,8 @@
 //   at_points            N_I(X_q), grad N_I(X_q)
 //   traversal            the tiles and colours the force loop visits the points in (gather,
 //                        point rule and scatter in one pass, discretization/point_traversal.hpp)
-//   at_particles         N_J(X_I): physical values at the particles
+//   at_particles         N_J(X_I): physical values at the particles (values only, entries with
+//                        |N_J| < 1e-30 left out: shape_table_contents values_only)
 //   lumped_volume        V_I = sum_q N_I(X_q) w_q (mass = rho0 V_I, docs/method.md (38))
 //   test_gradient        corrected test-function gradients g_I(X_q), parallel to at_points.grad,
 //                        for a rule with variationally consistent integration (vci<Rule>,
@@ -88,7 +89,7 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
   const neighbor_search<2> search(particles);
   const rk_shape_functions<K, C, 2> rk(max_condition);
   m.at_points = build_shape_table<K, C, 2>(search, m.points.position, rk);
-  m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk);
+  m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk, values_only);
   m.traversal = make_point_traversal(m.at_points, particles.size());
   m.lumped_volume = lumped_volumes(particles, m.points, m.at_points);
   m.particles = std::move(particles);

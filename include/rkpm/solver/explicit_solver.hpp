@@ -192,7 +192,7 @@ class explicit_solver {
   }
 
   // Cauchy stress sigma = tau / J at quadrature point q.
-  mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stresses()[q] / points_.det_F()[q]; }
+  mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(q) / points_.det_F()[q]; }
   // Physical displacements, velocities and current positions x_I = X_I + u(X_I).
   std::vector<vec2> particle_displacements() const { return values_at_particles(model_, d_); }
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }

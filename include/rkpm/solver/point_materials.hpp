@@ -5,7 +5,10 @@
 //   S_q = tau_q F_q^-T w_q (in-plane),  h_q = tau33_q / F33_q w_q / R_q (axisymmetric),
 // scattered by the force loop (solver/point_forces.hpp) into f_int. It also records what the
 // time-step controller and the energy ledger read: the narrowest support stretch and the
-// plastic work. A point with det F <= 0 or a failed material update stops the run with an
+// plastic work. F and tau are kept per point as their block entries (core/block_matrix.hpp);
+// F not at all when the material state already records it (J2's F_n, the F of the last
+// accepted update, which is this evaluation's F): the stable-step re-estimates and checkpoints
+// read it there. A point with det F <= 0 or a failed material update stops the run with an
 // error naming the point, its position and the step.
 
 #include <algorithm>
@@ -16,6 +19,7 @@
 
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/material.hpp>
+#include <rkpm/core/block_matrix.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/solver/body_materials.hpp>
@@ -34,12 +38,16 @@ template <Geometry G, Material M>
 class point_materials {
  public:
   using state_type = typename M::state_type;
+  // The state holds the F of its last update (material/j2_plasticity.hpp): no second copy.
+  static constexpr bool state_records_F = requires(const state_type& s) {
+    { s.previous_deformation } -> std::convertible_to<block_matrix>;
+  };
 
   point_materials() = default;
   point_materials(const discrete_model& m, const materials_by_body<M>& material)
       : state_(m.point_count(), material.of_body(0).initial_state()),
-        tau_(m.point_count(), mat3::Zero()),
-        F_(m.point_count(), mat3::Identity()),
+        tau_(m.point_count(), block_matrix::of(mat3::Zero())),
+        F_(state_records_F ? 0 : m.point_count()),
         det_F_(m.point_count(), 1.0),
         stretch_(m.point_count(), 1.0),
         failed_(m.point_count(), 0) {
@@ -58,25 +66,27 @@ class point_materials {
       mat3 F = mat3::Identity();
       F.topLeftCorner<2, 2>() += g.H;
       F(2, 2) = G::out_of_plane_stretch(g.u, X);
-      const double J = F.determinant();
-      F_[q] = F;
+      const double J = block_matrix::of(F).determinant();  // F.determinant()'s value, fewer flops
+      if constexpr (!state_records_F) F_[q] = block_matrix::of(F);
       det_F_[q] = J;
       failed_[q] = 0;
       if (!(J > 0.0) || !std::isfinite(J)) {
         failed_[q] = 1;
         return;
       }
+      mat3 tau;
       try {
-        tau_[q] = material.at_point(q).kirchhoff_stress(F, state_[q]);
+        tau = material.at_point(q).kirchhoff_stress(F, state_[q]);
       } catch (const std::exception& ex) {
         failed_[q] = 2;
 #pragma omp critical(rkpm_material_error)
         if (error_.empty()) error_ = ex.what();
         return;
       }
+      tau_[q] = block_matrix::of(tau);
       const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
-      S = tau_[q].topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
-      hoop = G::is_axisymmetric ? tau_[q](2, 2) / F(2, 2) * m.points.weight[q] / X[0] : 0.0;
+      S = tau.topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
+      hoop = G::is_axisymmetric ? tau(2, 2) / F(2, 2) * m.points.weight[q] / X[0] : 0.0;
       stretch_[q] = std::min(support_stretch(Fi), F(2, 2));
     });
     // Serial reductions: the same sums whatever the thread count.
@@ -95,9 +105,17 @@ class point_materials {
   // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
   double plastic_work() const { return plastic_work_; }
   const std::vector<state_type>& states() const { return state_; }
-  const std::vector<mat3>& deformation_gradients() const { return F_; }
+  // F and tau at point q at the last evaluation.
+  mat3 deformation_gradient(index_t q) const {
+    if constexpr (state_records_F) return state_[q].previous_deformation.full();
+    else return F_[q].full();
+  }
+  mat3 kirchhoff_stress(index_t q) const { return tau_[q].full(); }
+  // F at every point, as the time-step controller reads it (q -> mat3).
+  auto deformation_gradients() const {
+    return [this](index_t q) { return deformation_gradient(q); };
+  }
   const std::vector<double>& det_F() const { return det_F_; }
-  const std::vector<mat3>& kirchhoff_stresses() const { return tau_; }
 
   // Checkpoint (io/checkpoint.hpp): the states and what the last force evaluation left.
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
@@ -111,7 +129,7 @@ class point_materials {
                   "doubles, integers or fixed-size Eigen matrices (core/bitwise.hpp)");
     a.array("points.state", s.state_);
     a.array("points.tau", s.tau_);
-    a.array("points.F", s.F_);
+    if constexpr (!state_records_F) a.array("points.F", s.F_);
     a.array("points.det_F", s.det_F_);
     a.array("points.stretch", s.stretch_);
     a.value("points.min_stretch", s.min_stretch_);
@@ -145,7 +163,7 @@ class point_materials {
   }
 
   std::vector<state_type> state_;
-  std::vector<mat3> tau_, F_;
+  std::vector<block_matrix> tau_, F_;  // F_ empty when the state records F
   std::vector<double> det_F_, stretch_;
   std::vector<char> failed_;  // 1: det F <= 0, 2: material update threw
   std::string error_;

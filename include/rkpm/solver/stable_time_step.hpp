@@ -14,6 +14,9 @@
 
 #include <array>
 #include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
@@ -40,17 +43,22 @@ struct point_moduli {
   const std::array<double, 2>& at(index_t q) const { return point_body.empty() ? body[0] : body[point_body[q]]; }
 };
 
-// out = K x about the configuration F (#points; empty: the reference configuration).
-template <Geometry G>
-void apply_elastic_stiffness(const discrete_model& m, const point_moduli& moduli, const std::vector<mat3>& F,
-                             const std::vector<vec2>& x, std::vector<vec2>& out) {
-  const bool reference = F.empty();
+namespace detail {
+
+// out = K x about the configuration F_at(q) (a callable q -> mat3), or the reference one
+// (F_at = nullptr).
+template <Geometry G, class PointF>
+void elastic_stiffness(const discrete_model& m, const point_moduli& moduli, const PointF& F_at,
+                       const std::vector<vec2>& x, std::vector<vec2>& out) {
+  constexpr bool reference = std::is_same_v<PointF, std::nullptr_t>;
   assemble_point_forces<G>(m, x, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
     const auto [lambda, mu] = moduli.at(q);
     const vec2& X = m.points.position[q];
-    const mat2 Fi = reference ? mat2::Identity() : mat2(F[q].topLeftCorner<2, 2>().inverse());
-    const double F33 = reference ? 1.0 : F[q](2, 2);
-    const double J = reference ? 1.0 : F[q].determinant();
+    mat3 F = mat3::Identity();
+    if constexpr (!reference) F = F_at(q);
+    const mat2 Fi = reference ? mat2::Identity() : mat2(F.topLeftCorner<2, 2>().inverse());
+    const double F33 = reference ? 1.0 : F(2, 2);
+    const double J = reference ? 1.0 : F.determinant();
     const mat2 L = g.H * Fi;
     const mat2 de = 0.5 * (L + L.transpose());
     const double de33 = (G::out_of_plane_stretch(g.u, X) - 1.0) / F33;
@@ -60,10 +68,27 @@ void apply_elastic_stiffness(const discrete_model& m, const point_moduli& moduli
     hoop = G::is_axisymmetric ? J * (lambda * tr + 2.0 * mu * de33) / F33 * m.points.weight[q] / X[0] : 0.0;
   });
 }
+
+}  // namespace detail
+
+// out = K x about the configuration F (#points; empty: the reference configuration).
+template <Geometry G>
+void apply_elastic_stiffness(const discrete_model& m, const point_moduli& moduli, const std::vector<mat3>& F,
+                             const std::vector<vec2>& x, std::vector<vec2>& out) {
+  if (F.empty()) detail::elastic_stiffness<G>(m, moduli, nullptr, x, out);
+  else detail::elastic_stiffness<G>(m, moduli, [&](index_t q) -> const mat3& { return F[q]; }, x, out);
+}
 template <Geometry G>
 void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
                              const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out) {
   apply_elastic_stiffness<G>(m, point_moduli(c), F, x, out);
+}
+
+// out = K x about the configuration F_at(q), a callable (point_materials::deformation_gradients()).
+template <Geometry G, std::invocable<index_t> PointF>
+void apply_elastic_stiffness(const discrete_model& m, const point_moduli& moduli, const PointF& F_at,
+                             const std::vector<vec2>& x, std::vector<vec2>& out) {
+  detail::elastic_stiffness<G>(m, moduli, F_at, x, out);
 }
 
 // Reference configuration: out = K0 x.
@@ -87,15 +112,19 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
   apply_elastic_stiffness<G>(m, c, x, out);
 }
 
-// A start vector with every frequency present (deterministic, so runs repeat exactly).
+// A start vector with every frequency present (deterministic, so runs repeat exactly); its
+// entry I alone, for callers that mix it back in without keeping a copy.
+inline vec2 power_iteration_start(std::size_t I) {
+  return vec2(std::sin(12.9898 * static_cast<double>(I) + 1.0), std::cos(78.233 * static_cast<double>(I) + 2.0));
+}
 inline void power_iteration_start(std::vector<vec2>& x) {
-  for (std::size_t I = 0; I < x.size(); ++I)
-    x[I] = vec2(std::sin(12.9898 * static_cast<double>(I) + 1.0), std::cos(78.233 * static_cast<double>(I) + 2.0));
+  for (std::size_t I = 0; I < x.size(); ++I) x[I] = power_iteration_start(I);
 }
 
-// omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation.
-template <Geometry G>
-double largest_frequency_squared(const discrete_model& m, const point_moduli& c, const std::vector<mat3>& F,
+// omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation. F: a
+// std::vector<mat3> (empty: the reference configuration) or a callable q -> mat3.
+template <Geometry G, class PointF>
+double largest_frequency_squared(const discrete_model& m, const point_moduli& c, const PointF& F,
                                  const std::vector<double>& mass, std::vector<vec2>& x, stiffness_workspace& w,
                                  int iterations) {
   const index_t n = m.particle_count();

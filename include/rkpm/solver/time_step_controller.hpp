@@ -29,12 +29,13 @@ class time_step_controller {
   time_step_controller() = default;
 
   // Measures the reference stable step (100 power iterations about F, the configuration at
-  // t = 0) and returns the first step.
-  double start(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass,
-               const std::vector<mat3>& F, const run_options& options) {
-    start_.resize(m.particle_count());
-    power_iteration_start(start_);
-    mode_ = start_;
+  // t = 0) and returns the first step. F: the deformation gradient at every point, a callable
+  // q -> mat3 (point_materials::deformation_gradients()) or a std::vector<mat3>.
+  template <class PointF>
+  double start(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass, const PointF& F,
+               const run_options& options) {
+    mode_.resize(m.particle_count());
+    power_iteration_start(mode_);
     workspace_ = stiffness_workspace(m);
     reference_dt_ = estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 100));
     estimate_stretch_ = 1.0;
@@ -43,14 +44,16 @@ class time_step_controller {
   }
 
   // The step after `steps` steps at `time`, with the supports narrowed to min_stretch.
-  double update(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass,
-                const std::vector<mat3>& F, double min_stretch, const run_options& options, double time,
+  template <class PointF>
+  double update(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass, const PointF& F,
+                double min_stretch, const run_options& options, double time,
                 index_t steps) {
     const double drift = min_stretch / estimate_stretch_;
     if (steps > 0 && (drift < 0.9 || drift > 1.25 || steps - estimate_step_ >= 500)) {
       double norm = 0.0;
       for (const vec2& x : mode_) norm = std::max(norm, x.cwiseAbs().maxCoeff());
-      for (std::size_t I = 0; I < mode_.size(); ++I) mode_[I] = mode_[I] / norm + 0.3 * start_[I];
+      // The start vector recomputed, not stored (16 bytes per particle): the same values.
+      for (std::size_t I = 0; I < mode_.size(); ++I) mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(I);
       estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 20));
       estimate_stretch_ = min_stretch;
       estimate_step_ = steps;
@@ -69,7 +72,6 @@ class time_step_controller {
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
     a.array("clock.mode", s.mode_);
-    a.array("clock.start", s.start_);
     a.value("clock.reference_dt", s.reference_dt_);
     a.value("clock.estimate_dt", s.estimate_dt_);
     a.value("clock.estimate_stretch", s.estimate_stretch_);
@@ -86,7 +88,7 @@ class time_step_controller {
     return options.fixed_time_step;
   }
 
-  std::vector<vec2> mode_, start_;  // power-iteration vector and its fixed start
+  std::vector<vec2> mode_;  // power-iteration vector
   stiffness_workspace workspace_{discrete_model{}};
   double reference_dt_ = 0.0, estimate_dt_ = 0.0, estimate_stretch_ = 1.0;
   index_t estimate_step_ = 0;

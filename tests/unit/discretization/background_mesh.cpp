@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
@@ -44,4 +45,36 @@ TEST_CASE("shoelace area of a general quadrilateral and orientation") {
   CHECK_THROWS_WITH_AS(m.validate(), doctest::Contains("no cells"), error);
   CHECK_THROWS_WITH_AS(make_grid_mesh(vec2(0, 0), vec2(1, 1), Eigen::Vector2i(1, 3)), doctest::Contains("at least 2"),
                        error);
+}
+
+// boundary_edges() (counted in a sorted array since the map was the solver set-up's memory
+// peak): on a 4 x 4-cell grid with the middle 2 x 2 cells removed, the outer square has 16
+// edges and the hole 8, each an edge of exactly one cell, traversed as its cell traverses it.
+TEST_CASE("boundary edges of a grid with a hole") {
+  auto m = make_grid_mesh(vec2(0, 0), vec2(4, 4), Eigen::Vector2i(5, 5));
+  std::erase_if(m.cell, [&](const auto& c) {
+    const vec2 centre = 0.25 * (m.node[c[0]] + m.node[c[1]] + m.node[c[2]] + m.node[c[3]]);
+    return centre[0] > 1 && centre[0] < 3 && centre[1] > 1 && centre[1] < 3;
+  });
+  REQUIRE(m.cells() == 12);
+  const auto edges = m.boundary_edges();
+  CHECK(edges.size() == 16 + 8);
+  int outer = 0, hole = 0;
+  for (const auto& [a, b] : edges) {
+    const vec2 mid = 0.5 * (m.node[a] + m.node[b]);
+    const bool on_outer = mid[0] == 0 || mid[0] == 4 || mid[1] == 0 || mid[1] == 4;
+    const bool on_hole = std::max(std::abs(mid[0] - 2), std::abs(mid[1] - 2)) == 1;
+    outer += on_outer;
+    hole += on_hole;
+    // The cell that has this side traverses it a -> b.
+    int cells_with_side = 0;
+    for (const auto& c : m.cell)
+      for (int k = 0; k < 4; ++k) {
+        cells_with_side += (c[k] == a && c[(k + 1) % 4] == b);
+        CHECK_FALSE((c[k] == b && c[(k + 1) % 4] == a));
+      }
+    CHECK(cells_with_side == 1);
+  }
+  CHECK(outer == 16);
+  CHECK(hole == 8);
 }

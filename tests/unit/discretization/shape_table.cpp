@@ -1,9 +1,11 @@
 // shape_table (docs/method.md section 9.3): the compressed rows agree with point-by-point evaluation,
 // the transpose lists every entry exactly once under its particle, and interpolate()
 // reproduces linear fields (scalar and vector) exactly, as the linear RK basis promises.
+// A values-only table (the one at the particles) keeps the full table's weighted entries exactly.
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -128,4 +130,46 @@ TEST_CASE_TEMPLATE("interpolate reproduces linear fields", K, cubic_spline, quar
   for (const vec2& X : g.particles.position) dw.push_back(w(X));
   for (index_t p = 0; p < tq.points(); ++p)
     CHECK(tq.interpolate(p, dw) == doctest::Approx(w(g.points[p])).epsilon(1e-12));
+}
+
+// The table at the particles keeps values only and leaves out entries with |N_I| < 1e-30
+// (shape_table_contents values_only): on a regular grid those are the particles exactly one
+// support away, inside the support by rounding. What it keeps is the full table's entries,
+// bit for bit and in order, and its rows still reproduce constants and linear fields.
+TEST_CASE_TEMPLATE("values_only: the weightless entries left out, reproduction kept", K, cubic_spline, quartic_spline) {
+  const vec2 lo(0, 0), hi(3.2e-3, 6.48e-3);
+  const auto particles = rkpm::make_grid_particles<2>(lo, hi, {21, 11}, 2.0);
+  const rkpm::neighbor_search<2> search(particles);
+  const rkpm::rk_shape_functions<K, linear, 2> rk;
+  const auto full = rkpm::build_shape_table(search, particles.position, rk);
+  const auto t = rkpm::build_shape_table(search, particles.position, rk, rkpm::values_only);
+  REQUIRE(t.points() == full.points());
+  CHECK(t.grad.empty());
+  index_t dropped = 0;
+  for (index_t p = 0; p < t.points(); ++p) {
+    index_t e = t.offset[p];
+    for (index_t f = full.offset[p]; f < full.offset[p + 1]; ++f) {
+      if (std::abs(full.N[f]) < 1e-30) {
+        ++dropped;
+        continue;
+      }
+      REQUIRE(e < t.offset[p + 1]);
+      CHECK(t.neighbor[e] == full.neighbor[f]);
+      CHECK(t.N[e] == full.N[f]);
+      ++e;
+    }
+    CHECK(e == t.offset[p + 1]);
+    // Reproducing conditions on the kept entries: sum N_I = 1, sum N_I X_I = X_p.
+    double sum = 0.0;
+    vec2 x = vec2::Zero();
+    for (index_t k = t.offset[p]; k < t.offset[p + 1]; ++k) {
+      sum += t.N[k];
+      x += t.N[k] * particles.position[t.neighbor[k]];
+    }
+    CHECK(std::abs(sum - 1.0) < 1e-13);
+    CHECK((x - particles.position[p]).norm() < 1e-13 * hi.norm());
+  }
+  // The grid has particles exactly one support away (2 spacings in x and in y): the case is met.
+  CHECK(dropped > 0);
+  CHECK(t.entries() + dropped == full.entries());
 }

@@ -117,7 +117,7 @@ TEST_CASE("uniaxial strain, linear hardening: loading and reverse yielding in cl
     const double ep = state.equivalent_plastic_strain;
     CHECK(state.plastic_work == doctest::Approx(s0 * ep + 0.5 * H * ep * ep).epsilon(1e-11));
     // Plastic incompressibility: det b_e = J^2 = exp(2 e).
-    CHECK(state.elastic_left_cauchy_green.determinant() ==
+    CHECK(state.elastic_left_cauchy_green.full().determinant() ==
           doctest::Approx(std::exp(2 * e)).epsilon(1e-13));
   }
   CHECK(plastic_steps > 30);
@@ -146,7 +146,7 @@ TEST_CASE("uniaxial stress, linear hardening: sigma = s0 + E_t (eps - s0 / E) in
     // Elastic volume change only: ln J = tr(eps_e) = sigma / (3 K), and det(b_e)^(1/2) = J.
     const double J = std::exp(eps) * lateral * lateral;
     CHECK(std::log(J) == doctest::Approx(sigma / (3 * K)).epsilon(1e-8));
-    CHECK(std::sqrt(state.elastic_left_cauchy_green.determinant()) ==
+    CHECK(std::sqrt(state.elastic_left_cauchy_green.full().determinant()) ==
           doctest::Approx(J).epsilon(1e-13));
     if (state.equivalent_plastic_strain > eps_p_before) {
       ++plastic_steps;

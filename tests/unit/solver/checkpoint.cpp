@@ -218,8 +218,10 @@ TEST_CASE("a checkpoint that does not fit is refused with the reason") {
   CHECK(refusal(write("cut.rkpmcp", bytes.substr(0, bytes.size() - 1))).find("is truncated") != std::string::npos);
   CHECK(refusal(write("notes.txt", "t = 1 ms\n")).find("is not an rkpm checkpoint file") != std::string::npos);
   std::string later = bytes;
-  later[8] = 2;  // the format version follows the 8-byte magic
-  CHECK(refusal(write("v2.rkpmcp", later)).find("format version 2, this build reads version 1") != std::string::npos);
+  later[8] = static_cast<char>(io::checkpoint_format_version + 1);  // the format version follows the 8-byte magic
+  CHECK(refusal(write("later.rkpmcp", later))
+            .find(fmt::format("format version {}, this build reads version {}", io::checkpoint_format_version + 1,
+                              io::checkpoint_format_version)) != std::string::npos);
   CHECK(refusal(dir / "missing.rkpmcp").find("does not exist") != std::string::npos);
   std::string renamed = bytes;  // a section another build would write in its place
   renamed.replace(renamed.find("solver.d"), 8, "solver.q");
