@@ -69,6 +69,10 @@ struct power_law {
     const double m = exponent + 1.0;
     return coefficient / m * (std::pow(base(to), m) - std::pow(base(from), m));
   }
+  // The same from the flow stresses at both ends, without a pow: K b^(n+1) = b sigma_y(b).
+  double integral(double from, double to, double flow_from, double flow_to) const {
+    return (base(to) * flow_to - base(from) * flow_from) / (exponent + 1.0);
+  }
 
  private:
   // eps0 + eps_p must stay positive: a negative base would turn pow() into NaN silently.

@@ -87,12 +87,13 @@ class j2_plasticity {
     const double q_trial = std::sqrt(1.5) * 2.0 * mu_ * dev.norm();
 
     const double eps_p = s.equivalent_plastic_strain;
-    if (q_trial > hardening_.flow_stress(eps_p)) {
-      const double dgamma =
-          radial_return(hardening_, q_trial, 3.0 * mu_, eps_p, tolerance_, max_iterations_)
-              .increment;
+    const double yield = hardening_.flow_stress(eps_p);
+    if (q_trial > yield) {
+      const radial_return_result rr =
+          radial_return(hardening_, q_trial, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield);
+      const double dgamma = rr.increment;
       dev *= 1.0 - 3.0 * mu_ * dgamma / q_trial;
-      s.plastic_work += plastic_work_increment(eps_p, dgamma);
+      s.plastic_work += plastic_work_increment(eps_p, dgamma, yield, rr.flow_stress);
       s.equivalent_plastic_strain = eps_p + dgamma;
       const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
       s.elastic_left_cauchy_green = block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));
@@ -110,14 +111,18 @@ class j2_plasticity {
   const H& hardening() const { return hardening_; }
 
  private:
-  double plastic_work_increment(double eps_p, double dgamma) const {
+  // flow_from, flow_to: sigma_y at both ends, known from the return mapping.
+  double plastic_work_increment(double eps_p, double dgamma, double flow_from, double flow_to) const {
     if constexpr (requires {
-                    { hardening_.integral(eps_p, eps_p) } -> std::convertible_to<double>;
+                    { hardening_.integral(eps_p, eps_p, flow_from, flow_to) } -> std::convertible_to<double>;
                   })
+      return hardening_.integral(eps_p, eps_p + dgamma, flow_from, flow_to);
+    else if constexpr (requires {
+                         { hardening_.integral(eps_p, eps_p) } -> std::convertible_to<double>;
+                       })
       return hardening_.integral(eps_p, eps_p + dgamma);
     else
-      return 0.5 * (hardening_.flow_stress(eps_p) + hardening_.flow_stress(eps_p + dgamma)) *
-             dgamma;
+      return 0.5 * (flow_from + flow_to) * dgamma;
   }
 
   elastic_constants constants_;

@@ -18,16 +18,18 @@
 namespace rkpm::material {
 
 struct radial_return_result {
-  double increment;  // dgamma, the increment of the equivalent plastic strain
-  int iterations;    // Newton updates taken (0 for the closed form)
-  double residual;   // r(dgamma) in Pa
+  double increment;    // dgamma, the increment of the equivalent plastic strain
+  int iterations;      // Newton updates taken (0 for the closed form)
+  double residual;     // r(dgamma) in Pa
+  double flow_stress;  // sigma_y(eps_p_n + dgamma) in Pa
 };
 
-// tolerance is relative: converged when |r| <= tolerance * q_trial.
+// tolerance is relative: converged when |r| <= tolerance * q_trial. flow_at_start is
+// sigma_y(eps_p_n), which the caller has from its yield check (one pow less per update).
 template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
-                                   double eps_p_n, double tolerance, int max_iterations) {
-  double sigma = 0.0;  // sigma_y at the last residual's dgamma
+                                   double eps_p_n, double tolerance, int max_iterations, double flow_at_start) {
+  double sigma = flow_at_start;  // sigma_y at the last residual's dgamma
   const auto residual = [&](double dg) {
     sigma = hardening.flow_stress(eps_p_n + dg);
     return q_trial - three_mu * dg - sigma;
@@ -41,16 +43,17 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
       return hardening.slope(eps_p);
   };
   if constexpr (std::same_as<H, hardening::linear>) {
-    const double dg = (q_trial - hardening.flow_stress(eps_p_n)) / (three_mu + hardening.modulus);
-    return {dg, 0, residual(dg)};
+    const double dg = (q_trial - flow_at_start) / (three_mu + hardening.modulus);
+    const double r = residual(dg);
+    return {dg, 0, r, sigma};
   } else {
     const double limit = tolerance * q_trial;
     double lo = 0.0;
     double hi = q_trial / three_mu;
     double dg = 0.0;
-    double r = residual(dg);
+    double r = q_trial - flow_at_start;  // r(0), sigma = sigma_y(eps_p_n)
     for (int it = 0;; ++it) {
-      if (std::abs(r) <= limit) return {dg, it, r};
+      if (std::abs(r) <= limit) return {dg, it, r, sigma};
       if (it == max_iterations || !std::isfinite(r))
         fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
              "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
@@ -63,6 +66,13 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
       r = residual(dg);
     }
   }
+}
+
+template <Hardening H>
+radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
+                                   double eps_p_n, double tolerance, int max_iterations) {
+  return radial_return(hardening, q_trial, three_mu, eps_p_n, tolerance, max_iterations,
+                       hardening.flow_stress(eps_p_n));
 }
 
 }  // namespace rkpm::material

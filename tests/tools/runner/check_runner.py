@@ -117,11 +117,11 @@ def step_budget(rkpm_run, work):
     r = run([rkpm_run, "taylor_bar", "--max-steps", "0"])
     check(r.returncode != 0 and "max-steps" in r.stderr, f"--max-steps 0 accepted: {r.stderr!r}")
     # A problem larger than the memory available is warned about before it is built (the
-    # available memory forced small; 21 x 51 particles at about 2.8 KB each need 3 MB).
+    # available memory forced small; 21 x 51 particles at about 1.8 KB each need 2 MB).
     out = os.path.join(work, "budget")
     r = subprocess.run([rkpm_run, "taylor_bar", "--end-time", "1e-7", "--out", out, "--no-plots", "--quiet"],
                        capture_output=True, text=True, timeout=120, env=dict(os.environ, RKPM_AVAILABLE_MEMORY_BYTES="1e6"))
-    check(r.returncode == 0 and "warning: 1071 particles need about 3 MB" in r.stderr and "only 1 MB" in r.stderr,
+    check(r.returncode == 0 and "warning: 1071 particles need about 2 MB" in r.stderr and "only 1 MB" in r.stderr,
           f"no memory warning: {r.stderr!r}")
     r = run([rkpm_run, "taylor_bar", "--end-time", "1e-7", "--out", out, "--no-plots", "--quiet"])
     check("warning" not in r.stderr, f"a memory warning on a small run: {r.stderr!r}")

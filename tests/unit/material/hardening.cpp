@@ -49,6 +49,8 @@ TEST_CASE("power-law hardening: wheel aluminium, 576.79 MPa (0.01658 + eps_p)^0.
   for (int i = 1; i < n; ++i) simpson += (i % 2 ? 4.0 : 2.0) * law.flow_stress(a + i * step);
   simpson *= step / 3.0;
   CHECK(law.integral(a, b) == doctest::Approx(simpson).epsilon(1e-12));
+  // From the flow stresses at the ends (the form j2_plasticity uses): the same integral.
+  CHECK(law.integral(a, b, law.flow_stress(a), law.flow_stress(b)) == doctest::Approx(simpson).epsilon(1e-12));
 }
 
 TEST_CASE("power-law with exponent 0 is perfectly plastic") {

@@ -61,6 +61,9 @@ TEST_CASE("power law: Newton converges in a few iterations over the whole range"
       CHECK(std::abs(r.residual) <= 1e-12 * q_trial);
       CHECK(r.increment > 0.0);
       CHECK(r.increment == doctest::Approx(bisection_root(wheel, q_trial, eps_p)).epsilon(1e-10));
+      // The flow stress it returns is the law's at the new strain (j2_plasticity's plastic work
+      // reads it instead of evaluating the law again).
+      CHECK(r.flow_stress == doctest::Approx(wheel.flow_stress(eps_p + r.increment)).epsilon(1e-15));
       worst = std::max(worst, r.iterations);
     }
   }
