@@ -57,6 +57,16 @@ TEST_CASE("linear hardening: bit for bit j2_plasticity<hardening::linear>") {
                   runner::case_file::material_type(aluminium, hardening_law::of(h)));
 }
 
+TEST_CASE("the case file's linear law takes the closed-form return, as hardening::linear does") {
+  // j2_plasticity calls radial_return unqualified: the case file's overload must be found (with
+  // the library's signature) and hand a linear law to the closed form, not to Newton.
+  const hardening_law law = hardening_law::of(material::hardening::linear{132e6, 300e6});
+  const double three_mu = 3.0 * aluminium.shear_modulus(), q = 2.0 * law.flow_stress(0.1);
+  const auto r = radial_return(law, q, three_mu, 0.1, 1e-12, 50, law.flow_stress(0.1));
+  CHECK(r.iterations == 0);
+  CHECK(r.increment == (q - law.flow_stress(0.1)) / (three_mu + 300e6));
+}
+
 TEST_CASE("power-law hardening: bit for bit j2_plasticity<hardening::power_law>") {
   const material::hardening::power_law h{576.79e6, 0.01658, 0.3593};
   check_identical(material::j2_plasticity<material::hardening::power_law>(aluminium, h),

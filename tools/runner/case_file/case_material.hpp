@@ -58,18 +58,27 @@ struct hardening_law {
       default: return 0.0;
     }
   }
+  // The forms that reuse known flow stresses (material/hardening.hpp), so that a case file's
+  // law gives the typed law's arithmetic bit for bit.
+  double slope(double eps_p, double flow) const {
+    return law == kind::power ? power.slope(eps_p, flow) : slope(eps_p);
+  }
+  double integral(double from, double to, double flow_from, double flow_to) const {
+    return law == kind::power ? power.integral(from, to, flow_from, flow_to) : integral(from, to);
+  }
 };
 
 // Found by argument-dependent lookup from j2_plasticity (a non-template beats the library's
 // template): linear hardening keeps its closed form, as radial_return<hardening::linear> does,
 // instead of the Newton iteration a law unknown to the library would get.
 inline material::radial_return_result radial_return(const hardening_law& h, double q_trial, double three_mu,
-                                                    double eps_p_n, double tolerance, int max_iterations) {
+                                                    double eps_p_n, double tolerance, int max_iterations,
+                                                    double flow_at_start) {
   switch (h.law) {
     case hardening_law::kind::linear:
-      return material::radial_return(h.linear, q_trial, three_mu, eps_p_n, tolerance, max_iterations);
+      return material::radial_return(h.linear, q_trial, three_mu, eps_p_n, tolerance, max_iterations, flow_at_start);
     case hardening_law::kind::power:
-      return material::radial_return(h.power, q_trial, three_mu, eps_p_n, tolerance, max_iterations);
+      return material::radial_return(h.power, q_trial, three_mu, eps_p_n, tolerance, max_iterations, flow_at_start);
     default:
       fail("case-file material: a return mapping was asked of a material that never yields (q_trial = {} Pa)",
            q_trial);
