@@ -58,4 +58,14 @@ inline std::string load_error(const case_json& doc, const runner::case_file::ove
   return error_message([&] { load_document(doc, overrides); });
 }
 
+// The message has a line for `pointer` in case.json that contains `fix`.
+inline bool reports(const std::string& message, const std::string& pointer, const std::string& fix) {
+  const std::string head = "case.json: " + pointer + ": ";
+  for (std::size_t at = message.find(head); at != std::string::npos; at = message.find(head, at + 1)) {
+    const std::string line = message.substr(at, message.find('\n', at) - at);
+    if (contains(line, fix)) return true;
+  }
+  return false;
+}
+
 }  // namespace rkpm::test

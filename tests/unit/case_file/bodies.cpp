@@ -24,6 +24,7 @@
 using namespace rkpm;
 using test::case_json;
 using test::contains;
+using test::reports;
 
 namespace {
 
@@ -63,15 +64,6 @@ double measured(const std::vector<std::pair<std::string, double>>& m, const std:
     if (key == name) return value;
   FAIL("no measure " << name);
   return 0.0;
-}
-
-bool reports(const std::string& message, const std::string& pointer, const std::string& fix) {
-  const std::string head = "case.json: " + pointer + ": ";
-  for (std::size_t at = message.find(head); at != std::string::npos; at = message.find(head, at + 1)) {
-    const std::string line = message.substr(at, message.find('\n', at) - at);
-    if (contains(line, fix)) return true;
-  }
-  return false;
 }
 
 }  // namespace

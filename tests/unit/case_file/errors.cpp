@@ -11,21 +11,12 @@
 using namespace rkpm;
 using test::case_json;
 using test::contains;
+using test::reports;
 using test::load_error;
 
 namespace {
 
 case_json taylor() { return test::paper_case_document("taylor_bar"); }
-
-// The message has a line for `pointer` in case.json that contains `fix`.
-bool reports(const std::string& message, const std::string& pointer, const std::string& fix) {
-  const std::string head = "case.json: " + pointer + ": ";
-  for (std::size_t at = message.find(head); at != std::string::npos; at = message.find(head, at + 1)) {
-    const std::string line = message.substr(at, message.find('\n', at) - at);
-    if (contains(line, fix)) return true;
-  }
-  return false;
-}
 
 std::size_t lines(const std::string& message) {
   return message.empty() ? 0 : 1 + std::count(message.begin(), message.end(), '\n');
