@@ -50,7 +50,7 @@ struct test_set {
 };
 
 template <class C>
-double support_factor() {
+double reproduction_support_factor() {
   return C::order == 1 ? 2.0 : 2.5;
 }
 
@@ -173,7 +173,7 @@ std::vector<monomial> monomials(int order) {
 }
 
 template <class K, class C>
-struct combo {
+struct reproduction_combo {
   using kernel = K;
   using correction = C;
 };
@@ -226,11 +226,11 @@ void check_reproduction(const test_set& s) {
 }  // namespace
 
 TEST_CASE_TEMPLATE("RK reproduction of monomials and their gradients", T,
-                   combo<cubic_spline, linear>, combo<cubic_spline, quadratic>,
-                   combo<quartic_spline, linear>, combo<quartic_spline, quadratic>) {
+                   reproduction_combo<cubic_spline, linear>, reproduction_combo<cubic_spline, quadratic>,
+                   reproduction_combo<quartic_spline, linear>, reproduction_combo<quartic_spline, quadratic>) {
   using K = typename T::kernel;
   using C = typename T::correction;
-  const double s = support_factor<C>();
+  const double s = reproduction_support_factor<C>();
   SUBCASE("uniform") { check_reproduction<K, C>(uniform_set(s)); }
   SUBCASE("perturbed") { check_reproduction<K, C>(perturbed_set(s)); }
   SUBCASE("taylor") { check_reproduction<K, C>(taylor_set(s)); }
@@ -238,12 +238,12 @@ TEST_CASE_TEMPLATE("RK reproduction of monomials and their gradients", T,
 }
 
 TEST_CASE_TEMPLATE("RK reproduction in 1D (11 particles on [0, 1], ends included)", T,
-                   combo<cubic_spline, linear>, combo<cubic_spline, quadratic>,
-                   combo<quartic_spline, linear>, combo<quartic_spline, quadratic>) {
+                   reproduction_combo<cubic_spline, linear>, reproduction_combo<cubic_spline, quadratic>,
+                   reproduction_combo<quartic_spline, linear>, reproduction_combo<quartic_spline, quadratic>) {
   using K = typename T::kernel;
   using C = typename T::correction;
   const auto p = rkpm::make_grid_particles<1>(vec<1>(0.0), vec<1>(1.0),
-                                              Eigen::Matrix<int, 1, 1>(11), support_factor<C>());
+                                              Eigen::Matrix<int, 1, 1>(11), reproduction_support_factor<C>());
   const rkpm::neighbor_search<1> search(p);
   const rkpm::rk_shape_functions<K, C, 1> rk;
   std::vector<index_t> nbr;

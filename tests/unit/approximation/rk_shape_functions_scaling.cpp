@@ -25,7 +25,7 @@ using rkpm::particle_set;
 using rkpm::vec2;
 
 template <class K, class C>
-struct combo {
+struct scaling_combo {
   using kernel = K;
   using correction = C;
 };
@@ -93,8 +93,8 @@ using rkpm::kernel::cubic_spline;
 using rkpm::kernel::quartic_spline;
 
 TEST_CASE_TEMPLATE("RK shape functions: same N and grad N / f in scaled units", T,
-                   combo<cubic_spline, linear>, combo<cubic_spline, quadratic>,
-                   combo<quartic_spline, linear>, combo<quartic_spline, quadratic>) {
+                   scaling_combo<cubic_spline, linear>, scaling_combo<cubic_spline, quadratic>,
+                   scaling_combo<quartic_spline, linear>, scaling_combo<quartic_spline, quadratic>) {
   using K = typename T::kernel;
   using C = typename T::correction;
   const double s = C::order == 1 ? 2.0 : 2.5;

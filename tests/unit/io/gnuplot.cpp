@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() { return fs::temp_directory_path() / ("rkpm_unit_io_gnuplot_" + std::to_string(::getpid())); }
+fs::path figure_scratch() { return fs::temp_directory_path() / ("rkpm_unit_io_gnuplot_" + std::to_string(::getpid())); }
 
 // Checks the 8-byte PNG signature and returns (width, height) from the IHDR chunk.
 std::pair<std::uint32_t, std::uint32_t> png_size(const fs::path& p) {
@@ -53,7 +53,7 @@ TEST_CASE("gnuplot_figure from arrays: columns, rows and blocks") {
       {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, {{2, 0}, {3, 0}, {3, 1}, {2, 1}, {2, 0}}};
   const std::vector<std::pair<double, double>> points{{0.5, 0.5}, {2.5, 0.5}};
 
-  const auto png = scratch() / "figs" / "it's a sine.png";  // quote in the name on purpose
+  const auto png = figure_scratch() / "figs" / "it's a sine.png";  // quote in the name on purpose
   {
     rkpm::io::gnuplot_figure fig(png, {.width = 640, .height = 480});
     fig << "set multiplot layout 1,2\nset xlabel 'x'\n"
@@ -70,16 +70,16 @@ TEST_CASE("gnuplot_figure from arrays: columns, rows and blocks") {
   CHECK(h == 480);
   CHECK(fs::file_size(png) > 2000);  // axes, labels and curves, not an empty image
   CHECK_FALSE(fs::exists(fs::path(png) += ".log"));  // gnuplot's log removed after success
-  fs::remove_all(scratch());
+  fs::remove_all(figure_scratch());
 }
 
 TEST_CASE("gnuplot_png from a CSV time history") {
-  const auto csv_path = scratch() / "history.csv";
+  const auto csv_path = figure_scratch() / "history.csv";
   {
     rkpm::io::csv_writer csv(csv_path, {"t", "kinetic", "internal"});
     for (int i = 0; i <= 50; ++i) csv.row({i * 1e-6, 1.0 - i / 50.0, i / 50.0});
   }
-  const auto png = scratch() / "energy.png";
+  const auto png = figure_scratch() / "energy.png";
   rkpm::io::gnuplot_png(png,
                         "set datafile separator ','\nset key autotitle columnhead\n"
                         "plot '" + csv_path.string() + "' using 1:2 with lines, '' using 1:3 with lines\n");
@@ -87,11 +87,11 @@ TEST_CASE("gnuplot_png from a CSV time history") {
   CHECK(w == 800);
   CHECK(h == 600);
   CHECK(fs::file_size(png) > 2000);
-  fs::remove_all(scratch());
+  fs::remove_all(figure_scratch());
 }
 
 TEST_CASE("gnuplot errors: a bad script or missing data reports gnuplot's message; no gnuplot names the package") {
-  const auto png = scratch() / "bad.png";
+  const auto png = figure_scratch() / "bad.png";
   try {
     rkpm::io::gnuplot_png(png, "plot $nosuchblock using 1:2\n");
     FAIL("no exception");
@@ -124,5 +124,5 @@ TEST_CASE("gnuplot errors: a bad script or missing data reports gnuplot's messag
     ::setenv("PATH", saved.c_str(), 1);
     CHECK(std::string(e.what()).find("apt-get install gnuplot-nox") != std::string::npos);
   }
-  fs::remove_all(scratch());
+  fs::remove_all(figure_scratch());
 }

@@ -67,7 +67,7 @@ snapshot make(int n) {
   return s;
 }
 
-fs::path scratch() {
+fs::path vtk_scratch() {
   auto dir = fs::temp_directory_path() / ("rkpm_unit_io_vtk_" + std::to_string(::getpid()));
   return dir;
 }
@@ -91,7 +91,7 @@ TEST_CASE("vtu: this build compresses (zlib1g-dev is a listed package)") {
 }
 
 TEST_CASE("vtu: meshio reads points, vertex cells and scalar/vector/tensor arrays exactly") {
-  const auto dir = scratch();
+  const auto dir = vtk_scratch();
   std::vector<vtu_compression> compressions{vtu_compression::none};
   if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
   for (auto encoding : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii}) {
@@ -113,7 +113,7 @@ TEST_CASE("vtu: meshio reads points, vertex cells and scalar/vector/tensor array
 }
 
 TEST_CASE("vtu: appended raw is smaller than base64, zlib smaller still, ascii largest") {
-  const auto dir = scratch() / "sizes";
+  const auto dir = vtk_scratch() / "sizes";
   const auto s = make(4100);
   auto size = [&](vtu_format f) {
     const auto path = dir / fmt::format("{}_{}.vtu", name(f.encoding), name(f.compression));
@@ -147,19 +147,19 @@ TEST_CASE("vtu: an array of the wrong length is refused, naming the array") {
   rkpm::io::point_data bad;
   bad.add("pressure", std::vector<double>(3, 1.0));
   try {
-    rkpm::io::write_vtu(scratch() / "bad.vtu", s.points, bad);
+    rkpm::io::write_vtu(vtk_scratch() / "bad.vtu", s.points, bad);
     FAIL("no exception");
   } catch (const rkpm::error& e) {
     CHECK(std::string(e.what()).find("pressure") != std::string::npos);
   }
-  CHECK_FALSE(fs::exists(scratch() / "bad.vtu"));
+  CHECK_FALSE(fs::exists(vtk_scratch() / "bad.vtu"));
   rkpm::io::point_data twice;
   twice.add("a", std::vector<double>(4, 0.0));
   CHECK_THROWS_AS(twice.add("a", std::vector<double>(4, 0.0)), rkpm::error);
 }
 
 TEST_CASE("pvd: the index is valid after every addition and lists each added file") {
-  const auto dir = scratch() / "series";
+  const auto dir = vtk_scratch() / "series";
   rkpm::io::pvd_series pvd(dir / "run.pvd");
   // Valid (empty) collection before any snapshot.
   check_with_meshio(fmt::format("pvd '{}'", pvd.path().string()));
@@ -184,5 +184,5 @@ TEST_CASE("pvd: the index is valid after every addition and lists each added fil
   CHECK(pvd.size() == 4);
   check_with_meshio(fmt::format("pvd '{}'{} 4e-06,3", pvd.path().string(), expect));
   CHECK_FALSE(fs::exists(dir / "run.pvd.tmp"));
-  fs::remove_all(scratch());
+  fs::remove_all(vtk_scratch());
 }
