@@ -47,7 +47,8 @@ struct wheel_forging_parameters {
   // the stroke); the particles of the layers below then meet the punch's faces as slaves.
   int slave_layers = 3;
   // 1: the tools' vertices are also checked as slaves against the body's surface (two-pass tool
-  // contact, docs/method.md section 6.9), which keeps the punch's corners out with surface slaves.
+  // contact, docs/method.md section 6.10), which keeps the punch's corners out of the chords
+  // between surface particles but holds material flowing round a corner back by a spacing.
   bool tool_vertex_slaves = false;
   // Deepest penetration a tool face still acts on. The default of rigid_tool (half the
   // shortest segment: 18 mm for the die) would make every particle within 18 mm of the floor a
