@@ -88,14 +88,7 @@ class body_contact {
       if (pairs_[k].slave == pairs_[k].master)
         fail("contact pair {}: body {} against itself; self-contact is not supported, name two bodies", k,
              pairs_[k].slave);
-    if (static_cast<index_t>(mesh.node.size()) != n)
-      fail("contact between bodies: the master surfaces' vertices must be particles, but the mesh has {} nodes "
-           "for {} particles; give the particles at the mesh nodes",
-           mesh.node.size(), n);
-    double size = 0.0;
-    for (const vec2& x : X) size = std::max(size, x.cwiseAbs().maxCoeff());
-    const double axis = 1e-9 * size;
-    const auto chains = boundary_chains(mesh, [&](index_t i) { return body.axisymmetric && X[i][0] <= axis; });
+    const auto chains = surface_chains(body, "contact between bodies");
 
     segment_.assign(pairs_.size(), {});
     slave_.assign(pairs_.size(), {});

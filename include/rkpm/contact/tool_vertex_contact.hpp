@@ -38,17 +38,11 @@ class tool_vertex_contact {
            "solver passes them in contact_body");
     const std::span<const vec2> X = body.reference_position;
     const auto n = static_cast<index_t>(X.size());
-    if (static_cast<index_t>(body.mesh->node.size()) != n)
-      fail("tool vertices as slaves: the bodies' surface vertices must be particles, but the mesh has {} nodes for "
-           "{} particles; give the particles at the mesh nodes",
-           body.mesh->node.size(), n);
-    double size = 0.0;
-    for (const vec2& x : X) size = std::max(size, x.cwiseAbs().maxCoeff());
-    const double axis = 1e-9 * size;
+    const auto chains = surface_chains(body, "tool vertices as slaves");
     segment_.clear();
     std::vector<char> surface(n, 0);
     double shortest = INFINITY;
-    for (const auto& c : boundary_chains(*body.mesh, [&](index_t i) { return body.axisymmetric && X[i][0] <= axis; }))
+    for (const auto& c : chains)
       for (index_t s = 0; s < c.segments(); ++s) {
         const auto seg = c.segment(s);
         segment_.push_back(seg);

@@ -78,6 +78,39 @@ shape_table_transpose transpose(const shape_table<Dim>& table, index_t particles
   return t;
 }
 
+// One row's scratch: the neighbours found and their RK values and gradients.
+template <int Dim>
+struct row_scratch {
+  std::vector<index_t> nbr;
+  std::vector<double> val;
+  std::vector<vec<Dim>> grd;
+};
+
+namespace detail {
+
+// row(p, scratch) for every point p in parallel, each thread with its own scratch; the first
+// error a row throws is thrown again after the loop (an exception may not leave a parallel region).
+template <int Dim, class Row>
+void for_each_point_row(index_t points, Row&& row) {
+  std::string first_error;
+#pragma omp parallel
+  {
+    row_scratch<Dim> scratch;
+#pragma omp for schedule(dynamic, 64)
+    for (index_t p = 0; p < points; ++p) {
+      try {
+        row(p, scratch);
+      } catch (const error& e) {
+#pragma omp critical(rkpm_shape_table_error)
+        if (first_error.empty()) first_error = e.what();
+      }
+    }
+  }
+  if (!first_error.empty()) throw error(first_error);
+}
+
+}  // namespace detail
+
 // Builds the table at `points` for the particles of `search`. Two passes: the neighbour counts
 // first (the cell-list query alone) so that the rows are laid out once at their final size,
 // then the RK functions of each row written in place: no per-point vectors, no regrowth, so the
@@ -96,58 +129,33 @@ shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
   t.offset.assign(np + 1, 0);
   const bool dropping = contents.drop_below > 0.0;
   const auto kept = [&](double value) { return !dropping || std::abs(value) >= contents.drop_below; };
-  std::string first_error;
-#pragma omp parallel
-  {
-    std::vector<index_t> nbr;
-    std::vector<double> val;
-    std::vector<vec<Dim>> grd;
-#pragma omp for schedule(dynamic, 64)
-    for (index_t p = 0; p < np; ++p) {
-      search.query(points[p], nbr);
-      if (!dropping) {
-        t.offset[p + 1] = static_cast<index_t>(nbr.size());
-        continue;
-      }
-      try {
-        rk.evaluate(points[p], search.particles(), nbr, val, grd);
-        t.offset[p + 1] = static_cast<index_t>(std::ranges::count_if(val, kept));
-      } catch (const error& e) {
-#pragma omp critical(rkpm_shape_table_error)
-        if (first_error.empty()) first_error = e.what();
-      }
+  // Pass 1: the row lengths.
+  detail::for_each_point_row<Dim>(np, [&](index_t p, row_scratch<Dim>& r) {
+    search.query(points[p], r.nbr);
+    if (!dropping) {
+      t.offset[p + 1] = static_cast<index_t>(r.nbr.size());
+      return;
     }
-  }
-  if (!first_error.empty()) throw error(first_error);
+    rk.evaluate(points[p], search.particles(), r.nbr, r.val, r.grd);
+    t.offset[p + 1] = static_cast<index_t>(std::ranges::count_if(r.val, kept));
+  });
   for (index_t p = 0; p < np; ++p) t.offset[p + 1] += t.offset[p];
   t.neighbor.resize(t.offset[np]);
   t.N.resize(t.offset[np]);
   if (contents.gradients) t.grad.resize(t.offset[np]);
-#pragma omp parallel
-  {
-    std::vector<index_t> nbr;
-    std::vector<double> val;
-    std::vector<vec<Dim>> grd;
-#pragma omp for schedule(dynamic, 64)
-    for (index_t p = 0; p < np; ++p) {
-      try {
-        search.query(points[p], nbr);
-        rk.evaluate(points[p], search.particles(), nbr, val, grd);
-        index_t e = t.offset[p];
-        for (std::size_t j = 0; j < nbr.size(); ++j) {
-          if (!kept(val[j])) continue;
-          t.neighbor[e] = static_cast<particle_index>(nbr[j]);
-          t.N[e] = val[j];
-          if (contents.gradients) t.grad[e] = grd[j];
-          ++e;
-        }
-      } catch (const error& e) {
-#pragma omp critical(rkpm_shape_table_error)
-        if (first_error.empty()) first_error = e.what();
-      }
+  // Pass 2: the rows, in place.
+  detail::for_each_point_row<Dim>(np, [&](index_t p, row_scratch<Dim>& r) {
+    search.query(points[p], r.nbr);
+    rk.evaluate(points[p], search.particles(), r.nbr, r.val, r.grd);
+    index_t e = t.offset[p];
+    for (std::size_t j = 0; j < r.nbr.size(); ++j) {
+      if (!kept(r.val[j])) continue;
+      t.neighbor[e] = static_cast<particle_index>(r.nbr[j]);
+      t.N[e] = r.val[j];
+      if (contents.gradients) t.grad[e] = r.grd[j];
+      ++e;
     }
-  }
-  if (!first_error.empty()) throw error(first_error);
+  });
   return t;
 }
 

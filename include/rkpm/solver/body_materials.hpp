@@ -42,20 +42,20 @@ class materials_by_body {
         particle_body_ = part.particle_body;
         // Kernels never reach across bodies (solver/body_models.hpp): a point's body is that of
         // any particle in its row.
-        point_body_.resize(m.point_count());
+        moduli_.point_body.resize(m.point_count());
         for (index_t q = 0; q < m.point_count(); ++q)
-          point_body_[q] = particle_body_[m.at_points.neighbor[m.at_points.offset[q]]];
+          moduli_.point_body[q] = particle_body_[m.at_points.neighbor[m.at_points.offset[q]]];
       }
     }
-    moduli_.body.clear();
     for (const M& mat : material_)
       moduli_.body.push_back({mat.constants().lame_lambda(), mat.constants().shear_modulus()});
-    moduli_.point_body = point_body_;
   }
 
   index_t bodies() const { return static_cast<index_t>(material_.size()); }
   const M& of_body(index_t b) const { return material_[b]; }
-  const M& at_point(index_t q) const { return point_body_.empty() ? material_[0] : material_[point_body_[q]]; }
+  const M& at_point(index_t q) const {
+    return moduli_.point_body.empty() ? material_[0] : material_[moduli_.point_body[q]];
+  }
   index_t body_of_particle(index_t I) const { return particle_body_.empty() ? 0 : particle_body_[I]; }
   // The moduli the stable step is estimated with (solver/time_step_controller.hpp).
   const point_moduli& moduli() const { return moduli_; }
@@ -81,8 +81,8 @@ class materials_by_body {
   }
 
   std::vector<M> material_;
-  std::vector<index_t> particle_body_, point_body_;  // empty: one material everywhere
-  point_moduli moduli_;
+  std::vector<index_t> particle_body_;  // empty: one material everywhere
+  point_moduli moduli_;                 // also each point's body (point_body; empty: one body)
 };
 
 }  // namespace rkpm
