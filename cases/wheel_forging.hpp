@@ -142,7 +142,7 @@ struct wheel_forging {
     const auto& w = s.model().points.weight;
     for (std::size_t q = 0; q < w.size(); ++q) {
       v0 += w[q];
-      v += w[q] * s.point_det_F()[q];
+      v += w[q] * s.point_det_F(q);
     }
     return {{"max_penetration_mm", s.max_penetration() * 1e3},
             {"volume_change", v / v0 - 1.0},

@@ -90,7 +90,7 @@ TEST_CASE_TEMPLATE("block forging to 20%: tools not crossed, volume kept, barrel
   double area0 = 0.0, area = 0.0;
   for (index_t q = 0; q < s.model().point_count(); ++q) {
     area0 += s.model().points.weight[q];
-    area += s.model().points.weight[q] * s.point_det_F()[q];
+    area += s.model().points.weight[q] * s.point_det_F(q);
   }
   // Widths of the face rows and of the middle row (reference rows of particles).
   auto row_width = [&](double y_ref) {

@@ -89,7 +89,7 @@ TEST_CASE("wheel forging, 4 mm stroke: volume kept, punch and die not crossed, o
   double v0 = 0.0, v = 0.0;
   for (index_t q = 0; q < s.model().point_count(); ++q) {
     v0 += s.model().points.weight[q];
-    v += s.model().points.weight[q] * s.point_det_F()[q];
+    v += s.model().points.weight[q] * s.point_det_F(q);
   }
   const auto x = s.particle_positions();
   const auto& X = s.model().particles.position;

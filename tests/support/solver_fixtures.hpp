@@ -227,7 +227,7 @@ energy_balance check_combination(int steps = 40, double time_step_fraction = 0.0
   for (const vec2& v : s.coefficient_velocities()) finite = finite && v.allFinite();
   CHECK(finite);
   double min_det = 1e300;
-  for (double J : s.point_det_F()) min_det = std::min(min_det, J);
+  for (index_t q = 0; q < s.model().point_count(); ++q) min_det = std::min(min_det, s.point_det_F(q));
   CHECK(min_det > 0.5);
   CHECK(s.time() > 0.0);
   const auto& e = s.energy();

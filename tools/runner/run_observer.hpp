@@ -36,7 +36,7 @@ io::point_data snapshot_fields(const Solver& s) {
   data.add("equivalent_plastic_strain", s.template project_to_particles<double>([&](index_t q) {
     return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
   }));
-  data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F()[q]; }));
+  data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); }));
   return data;
 }
 

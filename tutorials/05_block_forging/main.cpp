@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
     double area0 = 0.0, area = 0.0;
     for (index_t q = 0; q < solver.model().point_count(); ++q) {
       area0 += solver.model().points.weight[q];
-      area += solver.model().points.weight[q] * solver.point_det_F()[q];
+      area += solver.model().points.weight[q] * solver.point_det_F(q);
     }
     const auto m = block_forging::measure(solver, params, {});
     fmt::print("\nafter {} steps ({:.0f}% compression):\n", solver.steps(),

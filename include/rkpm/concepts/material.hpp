@@ -8,6 +8,9 @@
 // accepted F to this one and returns the Kirchhoff stress tau = J sigma with the same block
 // structure. The state exposes the equivalent plastic strain and the cumulative plastic work
 // per unit REFERENCE volume (J/m^3) for output and the energy balance.
+// Optional: `current_kirchhoff_stress(F, s)` (const, s const), the stress the last
+// kirchhoff_stress(F, s) returned, recomputed from its F and the state it left; with it the
+// solver stores no stress per point (solver/point_materials.hpp).
 //
 // Hardening: the flow stress sigma_y(eps_p) in Pa and its slope, for J2 return mappings.
 

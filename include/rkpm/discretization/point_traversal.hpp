@@ -2,8 +2,8 @@
 // point_traversal: the order in which the force loop (solver/point_forces.hpp) visits the
 // quadrature points so that it can gather, update and scatter in one pass, in parallel,
 // without atomics and with sums that do not depend on the thread count.
-//   tile_start  #tiles+1: tile t is the points tile_start[t] .. tile_start[t+1]-1 (fixed size,
-//               whatever the thread count)
+//   tile_start  #tiles+1: tile t is the points tile_start[t] .. tile_start[t+1]-1 (fixed size
+//               tile_points, the last one shorter, whatever the thread count)
 //   tile        the tiles grouped by colour; colour c is tile[colour_start[c] .. colour_start[c+1]-1]
 //   serial_from colours from this one on are visited one tile after the other (tiles of such a
 //               colour may share particles); below it, tiles of one colour share no particle
@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <rkpm/core/error.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
@@ -25,9 +26,13 @@ struct point_traversal {
   std::vector<index_t> tile;
   std::vector<index_t> colour_start{0};
   index_t serial_from = 0;
+  index_t tile_points = 1;
 
   index_t tiles() const { return static_cast<index_t>(tile_start.size()) - 1; }
   index_t colours() const { return static_cast<index_t>(colour_start.size()) - 1; }
+  // The tile of point q: a point's tile is visited by one thread, its points in order, so
+  // per-tile sums (point_materials' reductions) are race-free and in a fixed order.
+  index_t tile_of(index_t q) const { return q / tile_points; }
 };
 
 // Points per tile: large enough that a tile's particles are mostly its own (few colours), small
@@ -39,7 +44,9 @@ template <int Dim>
 point_traversal make_point_traversal(const shape_table<Dim>& table, index_t particles,
                                      index_t tile_points = traversal_tile_points) {
   constexpr int parallel_colours = 63;  // colour 63 collects the tiles that find no free colour
+  if (tile_points < 1) fail("point traversal: tile_points = {} must be at least 1", tile_points);
   point_traversal t;
+  t.tile_points = tile_points;
   const index_t np = table.points();
   const index_t tiles = (np + tile_points - 1) / tile_points;
   t.tile_start.resize(tiles + 1);

@@ -33,7 +33,8 @@ static_assert(std::endian::native == std::endian::little, "checkpoints store raw
 inline constexpr std::string_view checkpoint_magic = "RKPMCKPT";
 // Raise whenever the header or a section is added, removed, reordered or changes its value type.
 // 2: F, tau and the J2 state as block entries (core/block_matrix.hpp), no points.F for J2.
-inline constexpr std::uint32_t checkpoint_format_version = 2;
+// 3: no points.det_F and points.stretch; no points.tau when the material recomputes tau.
+inline constexpr std::uint32_t checkpoint_format_version = 3;
 inline constexpr std::string_view checkpoint_extension = ".rkpmcp";
 
 // What a checkpoint must match to be read into a solver.

@@ -40,6 +40,13 @@ class elastic {
     return frame.assemble(tau);
   }
 
+  // The stress at F (path-independent: the same bits as kirchhoff_stress(F, s)), so the solver
+  // need not store it.
+  mat3 current_kirchhoff_stress(const mat3& F, const state_type& s) const {
+    state_type unchanged = s;
+    return kirchhoff_stress(F, unchanged);
+  }
+
   double density() const { return constants_.density; }
   double dilatational_wave_speed() const { return constants_.dilatational_wave_speed(); }
   const elastic_constants& constants() const { return constants_; }

@@ -105,6 +105,19 @@ class j2_plasticity {
     return frame.assemble(tau);
   }
 
+  // The stress the last kirchhoff_stress(F, s) returned, from the state it left: tau =
+  // Hencky(b_e). The solver asks for it at output instead of storing tau at every point (80
+  // bytes a particle). Points that stayed elastic get the same bits (b_e is the trial tensor
+  // the update decomposed); after a return the principal frame is found again from b_e =
+  // sum exp(2 eps_e_i) n_i n_i^T, which agrees to rounding.
+  mat3 current_kirchhoff_stress(const mat3& /*F*/, const state_type& s) const {
+    const principal_frame frame = principal_frame::of(s.elastic_left_cauchy_green.full());
+    const vec3 eps = principal_log_strains(frame.values);
+    const double volumetric = eps.sum();
+    const vec3 dev = eps - vec3::Constant(volumetric / 3.0);
+    return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
+  }
+
   double density() const { return constants_.density; }
   double dilatational_wave_speed() const { return constants_.dilatational_wave_speed(); }
   const elastic_constants& constants() const { return constants_; }

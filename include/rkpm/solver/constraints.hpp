@@ -8,6 +8,7 @@
 // whose small dense matrix is constant in the Lagrangian setting and factored once.
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -59,6 +60,9 @@ class constraint_projector {
       }
       for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) row[column_[e]] = 0.0;
     }
+    touched_ = column_;
+    std::sort(touched_.begin(), touched_.end());
+    touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
     llt_.emplace(A);
     if (llt_->info() != Eigen::Success)
       fail("the {} velocity constraints are linearly dependent (a particle or direction given twice?)", n);
@@ -67,6 +71,9 @@ class constraint_projector {
 
   index_t size() const { return static_cast<index_t>(constraints_.size()); }
   const std::vector<velocity_constraint>& constraints() const { return constraints_; }
+  // The particles whose coefficient velocities apply() can change (in increasing order): the
+  // columns of the rows; every other velocity it leaves as it is, bit for bit.
+  const std::vector<index_t>& touched() const { return touched_; }
 
   // Projects the coefficient velocities v onto the constraints at time t. No allocation.
   void apply(double t, std::vector<vec2>& v) {
@@ -88,7 +95,7 @@ class constraint_projector {
 
  private:
   std::vector<velocity_constraint> constraints_;
-  std::vector<index_t> offset_, column_;
+  std::vector<index_t> offset_, column_, touched_;
   std::vector<double> value_, value_over_mass_;
   // Engaged only once factored: a default-constructed Eigen::LLT leaves its ComputationInfo
   // uninitialized, so copying or moving an empty projector (as the solver's constructor does)

@@ -50,27 +50,21 @@ inline double kinetic_energy(const std::vector<double>& mass, const std::vector<
 // with the mean of the half-step velocities around t(n), v_after and v_half_prev (the
 // previous half-step velocity), as the trapezoidal internal work does for f_int, keeps the
 // discrete energy balance exact to O(dt^2).
+inline double impulse_work_at(double mass, const vec2& v_after, const vec2& v_before, const vec2& v_half_prev) {
+  return 0.5 * mass * (v_after - v_before).dot(v_after + v_half_prev);
+}
 inline double impulse_work(const std::vector<double>& mass, const std::vector<vec2>& v_after,
                            const std::vector<vec2>& v_before, const std::vector<vec2>& v_half_prev) {
   double w = 0.0;
   for (std::size_t I = 0; I < mass.size(); ++I)
-    w += 0.5 * mass[I] * (v_after[I] - v_before[I]).dot(v_after[I] + v_half_prev[I]);
+    w += impulse_work_at(mass[I], v_after[I], v_before[I], v_half_prev[I]);
   return w;
 }
 
-// Trapezoidal work of the internal forces and work of the (constant) external forces over
-// the step d_prev -> d: adds them to the ledger.
-inline void add_force_work(energy_balance& e, const std::vector<vec2>& f_int_prev, const std::vector<vec2>& f_int,
-                           const std::vector<vec2>& f_ext, const std::vector<vec2>& d_prev,
-                           const std::vector<vec2>& d) {
-  double internal = 0.0, external = 0.0;
-  for (std::size_t I = 0; I < d.size(); ++I) {
-    const vec2 dd = d[I] - d_prev[I];
-    internal += 0.5 * (f_int_prev[I] + f_int[I]).dot(dd);
-    external += f_ext[I].dot(dd);
-  }
-  e.internal += internal;
-  e.external += external;
-}
+// The work of the internal forces over a step is the trapezoidal rule,
+//   internal += 1/2 (f_int(n) + f_int(n+1)) . (d(n+1) - d(n)),  external += f_ext . (d(n+1) - d(n)),
+// which explicit_solver::step() books in two halves around the force evaluation, with
+// d(n+1) - d(n) = dt v(n+1/2) (exact in exact arithmetic, and not a difference of two large
+// coefficients in floating point).
 
 }  // namespace rkpm

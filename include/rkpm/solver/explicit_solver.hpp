@@ -22,6 +22,7 @@
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/material.hpp>
+#include <rkpm/core/block_sums.hpp>
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/body_setup.hpp>
@@ -52,13 +53,15 @@ class explicit_solver {
     const index_t n = model_.particle_count();
     mass_ = materials_.lumped_masses(model_);
     d_.assign(n, vec2::Zero());
-    v_ = a_ = d_prev_ = v_before_ = v_half_prev_ = f_int_ = f_int_prev_ = d_;
-    f_ext_.resize(n);
-    for (index_t I = 0; I < n; ++I) f_ext_[I] = mass_[I] * prob.body_force;
+    v_ = a_ = v_half_prev_ = f_int_ = d_;
+    body_force_ = prob.body_force;
+    sums_ = block_sums<2>(n);
     points_ = point_materials<G, M>(model_, materials_);
 
     add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
     constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
+    d_start_.resize(constraints_.touched().size());
+    v_start_.resize(constraints_.touched().size());
     const contact_slaves slaves = select_slaves(model_, std::move(prob.slave_particles), has_tools());
     slave_ = slaves.particle;
     contact_.setup(body(), slaves);
@@ -70,7 +73,7 @@ class explicit_solver {
     v_half_prev_ = v_;
 
     compute_internal_force();
-    for (index_t I = 0; I < n; ++I) a_[I] = (f_ext_[I] - f_int_[I]) / mass_[I];
+    for (index_t I = 0; I < n; ++I) a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
     dt_ = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
     check_step_budget();
     energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
@@ -81,47 +84,58 @@ class explicit_solver {
   void step() {
     const double dt = dt_;
     step_dt_ = dt;  // errors raised inside the step name the step being taken
-    d_prev_ = d_;
     const index_t n = model_.particle_count();
+    const std::vector<index_t>& constrained = constraints_.touched();
+    for (std::size_t k = 0; k < constrained.size(); ++k) d_start_[k] = d_[constrained[k]];
 #pragma omp parallel for schedule(static)
     for (index_t I = 0; I < n; ++I) {
       v_[I] += 0.5 * dt * a_[I];
       d_[I] += dt * v_[I];
     }
     if (has_tools()) {
-      v_before_ = v_;
+      // a(n) is spent until a(n+1) is computed below: it holds the velocities before contact.
+      std::vector<vec2>& v_before = a_;
+#pragma omp parallel for schedule(static)
+      for (index_t I = 0; I < n; ++I) v_before[I] = v_[I];
       last_contact_ = contact_.enforce(body(), time_ + dt, dt, d_, v_);
-      energy_.contact += impulse_work(mass_, v_, v_before_, v_half_prev_);
+      energy_.contact += sums_([&](index_t I, block_sums<2>::sums& s) {
+        s[0] += impulse_work_at(mass_[I], v_[I], v_before[I], v_half_prev_[I]);
+      })[0];
       max_penetration_ = std::max(max_penetration_, last_contact_.max_penetration);
     }
     if (constraints_.size() > 0) {
-      v_before_ = v_;
-      constraints_.apply(time_ + 0.5 * dt, v_);
-      energy_.constraint += impulse_work(mass_, v_, v_before_, v_half_prev_);
-      for (index_t I = 0; I < n; ++I) d_[I] = d_prev_[I] + dt * v_[I];
+      energy_.constraint += apply_constraints(time_ + 0.5 * dt);
+      for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
     }
-    v_half_prev_ = v_;
+    // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
+    // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
+    const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
+      v_half_prev_[I] = v_[I];
+      const vec2 dd = dt * v_[I];
+      s[0] += 0.5 * f_int_[I].dot(dd);
+      s[1] += external_force(I).dot(dd);
+    });
 
-    std::swap(f_int_, f_int_prev_);
     compute_internal_force();
-    add_force_work(energy_, f_int_prev_, f_int_, f_ext_, d_prev_, d_);
 
-#pragma omp parallel for schedule(static)
-    for (index_t I = 0; I < n; ++I) {
-      a_[I] = (f_ext_[I] - f_int_[I]) / mass_[I];
+    const auto [work_after, kinetic] = sums_([&](index_t I, block_sums<2>::sums& s) {
+      s[0] += 0.5 * f_int_[I].dot(dt * v_[I]);
+      a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
       v_[I] += 0.5 * dt * a_[I];
-    }
+      s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
+    });
+    energy_.internal += work_before + work_after;
+    energy_.external += external;
+    energy_.kinetic = kinetic;
     if (constraints_.size() > 0) {
-      v_before_ = v_;
-      constraints_.apply(time_ + dt, v_);
-      energy_.constraint += impulse_work(mass_, v_, v_before_, v_half_prev_);
+      energy_.constraint += apply_constraints(time_ + dt);
+      energy_.kinetic = kinetic_energy();
     }
     time_ += dt;
     ++steps_;
     step_dt_ = 0.0;
     dt_min_ = std::min(dt_min_, dt);
     dt_max_ = std::max(dt_max_, dt);
-    energy_.kinetic = kinetic_energy();
     energy_.record();
     if (steps_ % options_.time_step_update_interval == 0)
       dt_ = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
@@ -183,7 +197,8 @@ class explicit_solver {
   const std::vector<vec2>& coefficient_velocities() const { return v_; }
   const std::vector<vec2>& internal_force() const { return f_int_; }
   const std::vector<state_type>& point_states() const { return points_.states(); }
-  const std::vector<double>& point_det_F() const { return points_.det_F(); }
+  // det F at quadrature point q at the last force evaluation.
+  double point_det_F(index_t q) const { return points_.det_F(q); }
   const constraint_projector& constraints() const { return constraints_; }
   const std::vector<index_t>& slave_particles() const { return slave_; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
@@ -192,7 +207,7 @@ class explicit_solver {
   }
 
   // Cauchy stress sigma = tau / J at quadrature point q.
-  mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(q) / points_.det_F()[q]; }
+  mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
   // Physical displacements, velocities and current positions x_I = X_I + u(X_I).
   std::vector<vec2> particle_displacements() const { return values_at_particles(model_, d_); }
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
@@ -205,10 +220,12 @@ class explicit_solver {
   std::vector<Value> project_to_particles(PointValue&& at_point) const {
     return rkpm::project_to_particles<Value>(model_, at_point);
   }
-  double kinetic_energy() const { return rkpm::kinetic_energy(mass_, v_); }
+  double kinetic_energy() const {
+    return sums_([&](index_t I, block_sums<2>::sums& s) { s[0] += 0.5 * mass_[I] * v_[I].squaredNorm(); })[0];
+  }
 
  private:
-  // Not saved: scratch of step() (d_prev_, v_before_, f_int_prev_, step_dt_) and the set-up.
+  // Not saved: scratch of step() (d_start_, v_start_, step_dt_) and the set-up.
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
     for (auto [name, field] : {std::pair{"solver.d", &s.d_}, {"solver.v", &s.v_}, {"solver.a", &s.a_},
@@ -232,6 +249,22 @@ class explicit_solver {
     return !std::ranges::empty(contact_.tools());
   }
 
+  vec2 external_force(index_t I) const { return mass_[I] * body_force_; }
+
+  // Projects v onto the constraints at time t; returns the work of the velocity jump
+  // (energy.hpp), summed over the particles the constraints can touch (zero elsewhere).
+  double apply_constraints(double t) {
+    const std::vector<index_t>& touched = constraints_.touched();
+    for (std::size_t k = 0; k < touched.size(); ++k) v_start_[k] = v_[touched[k]];
+    constraints_.apply(t, v_);
+    double work = 0.0;
+    for (std::size_t k = 0; k < touched.size(); ++k) {
+      const index_t I = touched[k];
+      work += impulse_work_at(mass_[I], v_[I], v_start_[k], v_half_prev_[I]);
+    }
+    return work;
+  }
+
   void compute_internal_force() {
     points_.internal_force(model_, materials_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});
     energy_.plastic = points_.plastic_work();
@@ -252,7 +285,10 @@ class explicit_solver {
   Ct contact_;
   run_options options_;
   std::vector<double> mass_;
-  std::vector<vec2> d_, v_, a_, d_prev_, v_before_, v_half_prev_, f_int_, f_int_prev_, f_ext_;
+  vec2 body_force_ = vec2::Zero();
+  std::vector<vec2> d_, v_, a_, v_half_prev_, f_int_;
+  std::vector<vec2> d_start_, v_start_;  // d and v at the constrained particles (constraints_.touched())
+  block_sums<2> sums_;
   point_materials<G, M> points_;
   time_step_controller<G> clock_;
   constraint_projector constraints_;

@@ -5,11 +5,14 @@
 //   S_q = tau_q F_q^-T w_q (in-plane),  h_q = tau33_q / F33_q w_q / R_q (axisymmetric),
 // scattered by the force loop (solver/point_forces.hpp) into f_int. It also records what the
 // time-step controller and the energy ledger read: the narrowest support stretch and the
-// plastic work. F and tau are kept per point as their block entries (core/block_matrix.hpp);
-// F not at all when the material state already records it (J2's F_n, the F of the last
-// accepted update, which is this evaluation's F): the stable-step re-estimates and checkpoints
-// read it there. A point with det F <= 0 or a failed material update stops the run with an
-// error naming the point, its position and the step.
+// plastic work, summed per tile of the traversal (discretization/point_traversal.hpp) inside
+// the parallel loop and then tile by tile, so the sums do not depend on the thread count.
+// Per point it keeps the material state and only what the state cannot give again: F (as its
+// block entries, core/block_matrix.hpp) unless the state records it (J2's F_n, the F of the
+// last accepted update, which is this evaluation's F), tau unless the material recomputes it
+// (current_kirchhoff_stress, concepts/material.hpp). det F and tau are computed from them when
+// asked for (output). A point with det F <= 0 or a failed material update stops the run with
+// an error naming the first such point, its position and the step.
 
 #include <algorithm>
 #include <cmath>
@@ -42,15 +45,18 @@ class point_materials {
   static constexpr bool state_records_F = requires(const state_type& s) {
     { s.previous_deformation } -> std::convertible_to<block_matrix>;
   };
+  // The material gives the stress again from F and its state (concepts/material.hpp): no
+  // stress stored per point.
+  static constexpr bool stress_recomputed = requires(const M& m, const mat3& F, const state_type& s) {
+    { m.current_kirchhoff_stress(F, s) } -> std::same_as<mat3>;
+  };
 
   point_materials() = default;
   point_materials(const discrete_model& m, const materials_by_body<M>& material)
       : state_(m.point_count(), material.of_body(0).initial_state()),
-        tau_(m.point_count(), block_matrix::of(mat3::Zero())),
+        tau_(stress_recomputed ? 0 : m.point_count(), block_matrix::of(mat3::Zero())),
         F_(state_records_F ? 0 : m.point_count()),
-        det_F_(m.point_count(), 1.0),
-        stretch_(m.point_count(), 1.0),
-        failed_(m.point_count(), 0) {
+        tile_(m.traversal.tiles()) {
     if (material.bodies() > 1)
       for (index_t q = 0; q < m.point_count(); ++q) state_[q] = material.at_point(q).initial_state();
     support_inverse_.setZero();
@@ -61,40 +67,47 @@ class point_materials {
   // f_int at coefficients d; advances the material states to the new F.
   void internal_force(const discrete_model& m, const materials_by_body<M>& material, const std::vector<vec2>& d,
                       std::vector<vec2>& f_int, step_context where) {
+    const point_traversal& tr = m.traversal;
+    if (static_cast<index_t>(tile_.size()) != tr.tiles()) tile_.assign(tr.tiles(), tile_summary{});
     assemble_point_forces<G>(m, d, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
+      // A tile's points are visited in order by one thread: its first point starts the tile's sums.
+      tile_summary& tile = tile_[tr.tile_of(q)];
+      if (q % tr.tile_points == 0) tile = tile_summary{};
       const vec2& X = m.points.position[q];
       mat3 F = mat3::Identity();
       F.topLeftCorner<2, 2>() += g.H;
       F(2, 2) = G::out_of_plane_stretch(g.u, X);
       const double J = block_matrix::of(F).determinant();  // F.determinant()'s value, fewer flops
-      if constexpr (!state_records_F) F_[q] = block_matrix::of(F);
-      det_F_[q] = J;
-      failed_[q] = 0;
       if (!(J > 0.0) || !std::isfinite(J)) {
-        failed_[q] = 1;
+        tile.fail(q, failure::inverted, J);
         return;
       }
+      if constexpr (!state_records_F) F_[q] = block_matrix::of(F);
       mat3 tau;
       try {
         tau = material.at_point(q).kirchhoff_stress(F, state_[q]);
       } catch (const std::exception& ex) {
-        failed_[q] = 2;
+        tile.fail(q, failure::material, J);
 #pragma omp critical(rkpm_material_error)
-        if (error_.empty()) error_ = ex.what();
+        if (error_.empty() || q < error_point_) {
+          error_ = ex.what();
+          error_point_ = q;
+        }
         return;
       }
-      tau_[q] = block_matrix::of(tau);
+      if constexpr (!stress_recomputed) tau_[q] = block_matrix::of(tau);
       const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
       S = tau.topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
       hoop = G::is_axisymmetric ? tau(2, 2) / F(2, 2) * m.points.weight[q] / X[0] : 0.0;
-      stretch_[q] = std::min(support_stretch(Fi), F(2, 2));
+      tile.narrowest = std::min(tile.narrowest, std::min(support_stretch(Fi), F(2, 2)));
+      tile.plastic += state_[q].plastic_work * m.points.weight[q];
     });
-    // Serial reductions: the same sums whatever the thread count.
+    // The tiles in order: the same sums and the same first failure whatever the thread count.
     double narrowest = std::numeric_limits<double>::infinity(), plastic = 0.0;
-    for (index_t q = 0; q < m.point_count(); ++q) {
-      if (failed_[q]) report_failure(m, q, where);
-      narrowest = std::min(narrowest, stretch_[q]);
-      plastic += state_[q].plastic_work * m.points.weight[q];
+    for (const tile_summary& tile : tile_) {
+      if (tile.failed != failure::none) report_failure(m, tile, where);
+      narrowest = std::min(narrowest, tile.narrowest);
+      plastic += tile.plastic;
     }
     min_stretch_ = narrowest;
     plastic_work_ = plastic;
@@ -105,40 +118,61 @@ class point_materials {
   // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
   double plastic_work() const { return plastic_work_; }
   const std::vector<state_type>& states() const { return state_; }
-  // F and tau at point q at the last evaluation.
-  mat3 deformation_gradient(index_t q) const {
-    if constexpr (state_records_F) return state_[q].previous_deformation.full();
-    else return F_[q].full();
+  // F, det F and tau at point q at the last evaluation (tau from the material, given `material`,
+  // when it can recompute it).
+  mat3 deformation_gradient(index_t q) const { return deformation_block(q).full(); }
+  double det_F(index_t q) const { return deformation_block(q).determinant(); }
+  mat3 kirchhoff_stress(const materials_by_body<M>& material, index_t q) const {
+    if constexpr (stress_recomputed) return material.at_point(q).current_kirchhoff_stress(deformation_gradient(q), state_[q]);
+    else return tau_[q].full();
   }
-  mat3 kirchhoff_stress(index_t q) const { return tau_[q].full(); }
   // F at every point, as the time-step controller reads it (q -> mat3).
   auto deformation_gradients() const {
     return [this](index_t q) { return deformation_gradient(q); };
   }
-  const std::vector<double>& det_F() const { return det_F_; }
 
   // Checkpoint (io/checkpoint.hpp): the states and what the last force evaluation left.
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) { sections(r, *this); }
 
  private:
+  enum class failure : char { none, inverted, material };
+  // What a tile's points left in the last evaluation.
+  struct tile_summary {
+    double narrowest = std::numeric_limits<double>::infinity();
+    double plastic = 0.0;
+    failure failed = failure::none;
+    index_t point = -1;  // the first failed point of the tile
+    double det = 0.0;    // its det F
+    void fail(index_t q, failure why, double J) {
+      if (failed != failure::none) return;
+      failed = why;
+      point = q;
+      det = J;
+    }
+  };
+
+  const block_matrix& deformation_block(index_t q) const {
+    if constexpr (state_records_F) return state_[q].previous_deformation;
+    else return F_[q];
+  }
+
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
     static_assert(bitwise_value<state_type>,
                   "checkpoints write material states as raw bytes: make the state an aggregate of at most 8 "
                   "doubles, integers or fixed-size Eigen matrices (core/bitwise.hpp)");
     a.array("points.state", s.state_);
-    a.array("points.tau", s.tau_);
+    if constexpr (!stress_recomputed) a.array("points.tau", s.tau_);
     if constexpr (!state_records_F) a.array("points.F", s.F_);
-    a.array("points.det_F", s.det_F_);
-    a.array("points.stretch", s.stretch_);
     a.value("points.min_stretch", s.min_stretch_);
     a.value("points.plastic_work", s.plastic_work_);
   }
 
-  [[noreturn]] void report_failure(const discrete_model& m, index_t q, step_context where) {
+  [[noreturn]] void report_failure(const discrete_model& m, const tile_summary& tile, step_context where) {
+    const index_t q = tile.point;
     const vec2& X = m.points.position[q];
-    if (failed_[q] == 2) {
+    if (tile.failed == failure::material) {
       std::string message;
       std::swap(message, error_);
       fail("step {}, t = {:.6g} s: the material update failed at quadrature point {} (X = {:.6g}, {:.6g}): {}",
@@ -147,7 +181,7 @@ class point_materials {
     fail("step {}, t = {:.6g} s: det F = {:.6g} at quadrature point {} (X = {:.6g}, {:.6g}): the body "
          "has inverted or the solution has blown up; reduce the time step fraction, refine the "
          "particles or check the boundary conditions. Output written so far is kept",
-         where.step, where.time, det_F_[q], q, X[0], X[1]);
+         where.step, where.time, tile.det, q, X[0], X[1]);
   }
 
   // How much the support has narrowed, as the highest frequency sees it: current gradients
@@ -163,10 +197,10 @@ class point_materials {
   }
 
   std::vector<state_type> state_;
-  std::vector<block_matrix> tau_, F_;  // F_ empty when the state records F
-  std::vector<double> det_F_, stretch_;
-  std::vector<char> failed_;  // 1: det F <= 0, 2: material update threw
-  std::string error_;
+  std::vector<block_matrix> tau_, F_;  // empty when the material recomputes tau / the state records F
+  std::vector<tile_summary> tile_;     // per tile of the traversal
+  std::string error_;                  // the first material error's message (of point error_point_)
+  index_t error_point_ = 0;
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
   double min_stretch_ = 1.0, plastic_work_ = 0.0;
 };

@@ -61,7 +61,7 @@ TEST_CASE("the F read from the J2 state is the deformation gradient of the coeff
     worst = std::max(worst, (stored - F[q]).cwiseAbs().maxCoeff());
     sheared = std::max(sheared, std::abs(F[q](0, 1)));
     plastic = std::max(plastic, s.point_states()[q].equivalent_plastic_strain);
-    CHECK(s.point_det_F()[q] == doctest::Approx(F[q].determinant()).epsilon(1e-13));
+    CHECK(s.point_det_F(q) == doctest::Approx(F[q].determinant()).epsilon(1e-13));
     const mat3 sigma = s.point_cauchy_stress(q);
     CHECK(sigma(0, 1) == sigma(1, 0));
     CHECK(sigma(0, 2) == 0.0);

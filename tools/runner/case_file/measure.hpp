@@ -151,7 +151,7 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
           for (std::size_t q = 0; q < w.size(); ++q) {
             if (!in_body(q)) continue;
             v0 += w[q];
-            v += w[q] * s.point_det_F()[q];
+            v += w[q] * s.point_det_F(q);
           }
           return v / v0 - 1.0;
         }
