@@ -137,7 +137,7 @@ class particle_to_segment {
     in_contact_.assign(ns, 0);
     m_shared_.assign(ns * nt, 0.0);
     shared_mass_.setup(np);
-    increments_.resize(np);
+    increments_.resize(np, reached_particles(table_, np));
     reaction_.assign(nt, vec2::Zero());
     bodies_.setup(body, slave_);
     if (tool_vertex_slaves_) {
@@ -242,6 +242,13 @@ class particle_to_segment {
     a.array("contact.reaction", s.reaction_);
   }
 
+  // How many particles the rows of `table` reach (the slaves' coefficients).
+  static index_t reached_particles(const shape_table<2>& table, index_t particles) {
+    std::vector<char> reached(particles, 0);
+    for (const particle_index I : table.neighbor) reached[I] = 1;
+    return std::ranges::count(reached, 1);
+  }
+
   void slave_state(std::span<const vec2> X, index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
     vec2 u = vec2::Zero(), w = vec2::Zero();
     for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {
@@ -275,7 +282,7 @@ class particle_to_segment {
   std::vector<char> in_contact_;               // #slaves
   std::vector<double> m_shared_;               // m_sh (61a) of each active pair, capacity #tools x #slaves
   shared_effective_mass shared_mass_;
-  coefficient_increments increments_;          // #particles
+  coefficient_increments increments_;          // #slaves' neighbours
   std::vector<vec2> reaction_;                 // #tools
 };
 

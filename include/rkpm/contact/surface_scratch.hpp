@@ -39,13 +39,17 @@ inline std::vector<boundary_chain> surface_chains(const contact_body& body, std:
 }
 
 // Force increments on the coefficients, gathered through shape-function rows and applied as
-// (60); only the coefficients touched are visited. Used by every contact pass.
+// (60); only the coefficients touched are visited. Used by every contact pass. Per particle it
+// keeps one 32-bit slot number; the increments themselves are stored only for as many
+// coefficients as the rows can reach (`capacity`: the slaves' neighbours for the rigid tools,
+// a few per cent of a large body).
 class coefficient_increments {
  public:
-  void resize(index_t particles) {
-    dforce_.assign(particles, vec2::Zero());
-    touched_flag_.assign(particles, 0);
-    touched_.assign(particles, 0);
+  void resize(index_t particles) { resize(particles, particles); }
+  void resize(index_t particles, index_t capacity) {
+    slot_.assign(particles, -1);
+    dforce_.assign(capacity, vec2::Zero());
+    touched_.assign(capacity, 0);
     touched_count_ = 0;
   }
 
@@ -54,11 +58,14 @@ class coefficient_increments {
     if (scale == 0.0) return;
     for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) {
       const index_t I = rows.neighbor[e];
-      dforce_[I] += scale * rows.N[e] * df;
-      if (!touched_flag_[I]) {
-        touched_flag_[I] = 1;
-        touched_[touched_count_++] = I;
+      stored_index& s = slot_[I];
+      if (s < 0) {
+        if (touched_count_ == static_cast<index_t>(touched_.size()))
+          fail("contact: more coefficients touched than the {} the increments were sized for", touched_.size());
+        s = static_cast<stored_index>(touched_count_);
+        touched_[touched_count_++] = static_cast<stored_index>(I);
       }
+      dforce_[s] += scale * rows.N[e] * df;
     }
   }
 
@@ -66,19 +73,19 @@ class coefficient_increments {
   void apply(std::span<const double> m, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
     for (index_t s = 0; s < touched_count_; ++s) {
       const index_t I = touched_[s];
-      const vec2 da = dforce_[I] / m[I];
+      const vec2 da = dforce_[s] / m[I];
       v[I] += dt * da;
       d[I] += dt * dt * da;
-      dforce_[I].setZero();
-      touched_flag_[I] = 0;
+      dforce_[s].setZero();
+      slot_[I] = -1;
     }
     touched_count_ = 0;
   }
 
  private:
-  std::vector<vec2> dforce_;
-  std::vector<char> touched_flag_;
-  std::vector<index_t> touched_;
+  std::vector<stored_index> slot_;     // #particles: where particle I's increment is, -1 if untouched
+  std::vector<vec2> dforce_;           // #capacity, in the order first touched
+  std::vector<stored_index> touched_;  // #capacity: the particle of each slot
   index_t touched_count_ = 0;
 };
 

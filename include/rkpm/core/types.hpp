@@ -4,10 +4,15 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 
 namespace rkpm {
 
 using index_t = std::ptrdiff_t;
+// An index stored once per table entry, quadrature point or cell (particle, node and cell
+// numbers, table offsets): 32 bits, since those arrays are most of a run's memory. Builders
+// refuse sizes past its range with an error.
+using stored_index = std::int32_t;
 
 template <int Dim>
 using vec = Eigen::Matrix<double, Dim, 1>;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -19,7 +20,7 @@ namespace rkpm {
 
 struct background_mesh {
   std::vector<vec2> node;
-  std::vector<std::array<index_t, 4>> cell;
+  std::vector<std::array<stored_index, 4>> cell;  // node numbers, counter-clockwise
 
   index_t cells() const { return static_cast<index_t>(cell.size()); }
 
@@ -42,6 +43,9 @@ struct background_mesh {
 
   void validate() const {
     if (cell.empty()) fail("background mesh has no cells: give the cells that cover the body");
+    if (node.size() > static_cast<std::size_t>(std::numeric_limits<stored_index>::max()))
+      fail("background mesh with {} nodes: at most {} (32-bit node numbers)", node.size(),
+           std::numeric_limits<stored_index>::max());
     for (index_t c = 0; c < cells(); ++c) {
       for (index_t n : cell[c])
         if (n < 0 || n >= static_cast<index_t>(node.size()))
@@ -93,12 +97,15 @@ inline background_mesh make_grid_mesh(const vec2& lo, const vec2& hi, const Eige
   if (counts[0] < 2 || counts[1] < 2) fail("grid mesh: need at least 2 nodes per direction");
   background_mesh m;
   const vec2 h((hi[0] - lo[0]) / (counts[0] - 1), (hi[1] - lo[1]) / (counts[1] - 1));
+  m.node.reserve(static_cast<std::size_t>(counts[0]) * counts[1]);
+  m.cell.reserve(static_cast<std::size_t>(counts[0] - 1) * (counts[1] - 1));
   for (int j = 0; j < counts[1]; ++j)
     for (int i = 0; i < counts[0]; ++i) m.node.emplace_back(lo[0] + i * h[0], lo[1] + j * h[1]);
   for (int j = 0; j + 1 < counts[1]; ++j)
     for (int i = 0; i + 1 < counts[0]; ++i) {
       const index_t n0 = j * counts[0] + i;
-      m.cell.push_back({n0, n0 + 1, n0 + 1 + counts[0], n0 + counts[0]});
+      m.cell.push_back({static_cast<stored_index>(n0), static_cast<stored_index>(n0 + 1),
+                        static_cast<stored_index>(n0 + 1 + counts[0]), static_cast<stored_index>(n0 + counts[0])});
     }
   return m;
 }

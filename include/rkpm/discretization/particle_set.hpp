@@ -57,6 +57,8 @@ particle_set<Dim> make_grid_particles(const vec<Dim>& lo, const vec<Dim>& hi,
   index_t total = 1;
   for (int k = 0; k < Dim; ++k) total *= counts[k];
   p.position.reserve(total);
+  p.volume.reserve(total);
+  p.support.reserve(total);
   for (index_t n = 0; n < total; ++n) {
     index_t rest = n;
     vec<Dim> x;

@@ -21,7 +21,7 @@ namespace rkpm {
 struct quadrature_points {
   std::vector<vec2> position;
   std::vector<double> weight;
-  std::vector<index_t> cell;
+  std::vector<stored_index> cell;
   index_t size() const { return static_cast<index_t>(position.size()); }
 };
 

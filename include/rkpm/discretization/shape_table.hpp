@@ -2,7 +2,8 @@
 // shape_table<Dim>: RK shape functions and gradients at a list of evaluation points, in
 // compressed sparse rows, built once in the reference configuration (docs/method.md section 9.3).
 //   offset    #points+1; the entries of point p are offset[p] .. offset[p+1]-1
-//   neighbor  #entries particle index I (32 bits: the tables are most of a run's memory)
+//   neighbor  #entries particle index I
+//             (offsets and indices in 32 bits, core/types.hpp: the tables are most of a run's memory)
 //   N         #entries N_I(x_p)
 //   grad      #entries grad N_I(x_p)
 //             (empty in a table built with values_only)
@@ -22,11 +23,11 @@
 namespace rkpm {
 
 // A particle index as the tables store it.
-using particle_index = std::int32_t;
+using particle_index = stored_index;
 
 template <int Dim>
 struct shape_table {
-  std::vector<index_t> offset{0};
+  std::vector<stored_index> offset{0};
   std::vector<particle_index> neighbor;
   std::vector<double> N;
   std::vector<vec<Dim>> grad;
@@ -133,12 +134,18 @@ shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
   detail::for_each_point_row<Dim>(np, [&](index_t p, row_scratch<Dim>& r) {
     search.query(points[p], r.nbr);
     if (!dropping) {
-      t.offset[p + 1] = static_cast<index_t>(r.nbr.size());
+      t.offset[p + 1] = static_cast<stored_index>(r.nbr.size());
       return;
     }
     rk.evaluate(points[p], search.particles(), r.nbr, r.val, r.grd);
-    t.offset[p + 1] = static_cast<index_t>(std::ranges::count_if(r.val, kept));
+    t.offset[p + 1] = static_cast<stored_index>(std::ranges::count_if(r.val, kept));
   });
+  index_t entries = 0;
+  for (index_t p = 0; p < np; ++p) entries += t.offset[p + 1];
+  if (entries > std::numeric_limits<stored_index>::max())
+    fail("{} evaluation points with {} shape function entries: the tables index at most {} entries "
+         "(32-bit offsets); split the body into parts or use fewer particles per support",
+         np, entries, std::numeric_limits<stored_index>::max());
   for (index_t p = 0; p < np; ++p) t.offset[p + 1] += t.offset[p];
   t.neighbor.resize(t.offset[np]);
   t.N.resize(t.offset[np]);

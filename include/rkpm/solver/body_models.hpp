@@ -37,7 +37,7 @@ inline body_part extract_body(const particle_set<2>& particles, const background
   std::vector<index_t> local_node(mesh.node.size(), -1);
   for (index_t c = 0; c < mesh.cells(); ++c) {
     if (part.cell_body[c] != b) continue;
-    std::array<index_t, 4> cell{};
+    std::array<stored_index, 4> cell{};
     for (int k = 0; k < 4; ++k) {
       index_t& n = local_node[mesh.cell[c][k]];
       if (n < 0) {

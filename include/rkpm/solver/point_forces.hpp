@@ -56,7 +56,7 @@ namespace detail {
 template <Geometry G, class PointRule>
 void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad, index_t first, index_t last,
                      const std::vector<vec2>& x, std::vector<vec2>& f, PointRule& rule) {
-  const index_t* const offset = m.at_points.offset.data();
+  const stored_index* const offset = m.at_points.offset.data();
   const particle_index* const neighbor = m.at_points.neighbor.data();
   const double* const N = m.at_points.N.data();
   const vec2* const grad = m.at_points.grad.data();
