@@ -87,16 +87,17 @@ class explicit_solver {
     const index_t n = model_.particle_count();
     const std::vector<index_t>& constrained = constraints_.touched();
     for (std::size_t k = 0; k < constrained.size(); ++k) d_start_[k] = d_[constrained[k]];
+    // a(n) is spent once v(n+1/2) is predicted, until a(n+1) below: with contact it holds the
+    // velocities before the contact corrections, for their work.
+    std::vector<vec2>& v_before = a_;
+    const bool tools = has_tools();
 #pragma omp parallel for schedule(static)
     for (index_t I = 0; I < n; ++I) {
       v_[I] += 0.5 * dt * a_[I];
       d_[I] += dt * v_[I];
+      if (tools) v_before[I] = v_[I];
     }
-    if (has_tools()) {
-      // a(n) is spent until a(n+1) is computed below: it holds the velocities before contact.
-      std::vector<vec2>& v_before = a_;
-#pragma omp parallel for schedule(static)
-      for (index_t I = 0; I < n; ++I) v_before[I] = v_[I];
+    if (tools) {
       last_contact_ = contact_.enforce(body(), time_ + dt, dt, d_, v_);
       energy_.contact += sums_([&](index_t I, block_sums<2>::sums& s) {
         s[0] += impulse_work_at(mass_[I], v_[I], v_before[I], v_half_prev_[I]);

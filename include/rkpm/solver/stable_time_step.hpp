@@ -20,23 +20,25 @@
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
+#include <rkpm/core/block_sums.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_forces.hpp>
 
 namespace rkpm {
 
-// Scratch of the matrix-free stiffness, sized once (no allocation per call).
+// Scratch of the matrix-free stiffness and the power iteration, sized once (no allocation per call).
 struct stiffness_workspace {
   std::vector<vec2> kx;
-  explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()) {}
+  block_sums<2> sums;  // x.Kx and x.Mx, in a fixed order
+  explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()), sums(m.particle_count()) {}
 };
 
 // The Lame moduli (lambda, mu) at each quadrature point: one pair per body and the body of
 // each point (solver/body_materials.hpp fills them; empty point_body: one body everywhere).
 struct point_moduli {
   std::vector<std::array<double, 2>> body;  // lambda, mu (Pa) of body b
-  std::vector<index_t> point_body;          // #points, or empty
+  std::vector<stored_index> point_body;     // #points, or empty
 
   point_moduli() = default;
   explicit point_moduli(const material::elastic_constants& c) : body{{c.lame_lambda(), c.shear_modulus()}} {}
@@ -131,18 +133,20 @@ double largest_frequency_squared(const discrete_model& m, const point_moduli& c,
   double omega2 = 0.0;
   for (int it = 0; it < iterations; ++it) {
     apply_elastic_stiffness<G>(m, c, F, x, w.kx);
-    double xkx = 0.0, xmx = 0.0, norm = 0.0;
-    for (index_t I = 0; I < n; ++I) {
-      xkx += x[I].dot(w.kx[I]);
-      xmx += mass[I] * x[I].squaredNorm();
-    }
+    const auto [xkx, xmx] = w.sums([&](index_t I, block_sums<2>::sums& s) {
+      s[0] += x[I].dot(w.kx[I]);
+      s[1] += mass[I] * x[I].squaredNorm();
+    });
     omega2 = xkx / xmx;
+    double norm = 0.0;  // a maximum: the same whatever the order
+#pragma omp parallel for schedule(static) reduction(max : norm)
     for (index_t I = 0; I < n; ++I) {
       x[I] = w.kx[I] / mass[I];
       norm = std::max(norm, x[I].cwiseAbs().maxCoeff());
     }
     if (!(norm > 0.0)) break;
-    for (auto& xi : x) xi /= norm;
+#pragma omp parallel for schedule(static)
+    for (index_t I = 0; I < n; ++I) x[I] /= norm;
   }
   if (!(omega2 > 0.0) || !std::isfinite(omega2))
     fail("could not estimate the stable time step (omega^2 = {}): check the material constants "
