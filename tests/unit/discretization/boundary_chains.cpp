@@ -39,7 +39,7 @@ bool follows_boundary_edges(const background_mesh& m, const boundary_chain& c) {
 template <class Keep>
 background_mesh grid_without(const vec2& lo, const vec2& hi, const Eigen::Vector2i& n, Keep keep) {
   background_mesh m = make_grid_mesh(lo, hi, n);
-  std::vector<std::array<index_t, 4>> kept;
+  std::vector<std::array<stored_index, 4>> kept;
   for (int j = 0; j + 1 < n[1]; ++j)
     for (int i = 0; i + 1 < n[0]; ++i)
       if (keep(i, j)) kept.push_back(m.cell[j * (n[0] - 1) + i]);

@@ -120,7 +120,7 @@ void check_is_grid(const gmsh_body& body, const vec2& lo, const vec2& hi, const 
     CHECK(close(body.particles.support[at[i]][0], grid.support[i][0], rel));
     CHECK(close(body.particles.support[at[i]][1], grid.support[i][1], rel));
   }
-  std::set<std::array<index_t, 4>> expected, got;
+  std::set<std::array<rkpm::stored_index, 4>> expected, got;
   for (auto c : cells.cell) {
     for (auto& n : c) n = at[n];
     std::sort(c.begin(), c.end());
