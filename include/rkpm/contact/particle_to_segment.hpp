@@ -107,13 +107,14 @@ class particle_to_segment {
     const index_t np = static_cast<index_t>(body.reference_position.size());
     slave_ = slaves.particle;
     table_ = slaves.table;
+    number_reached_particles(np);
     const index_t ns = static_cast<index_t>(slave_.size());
 
     m_eff_.assign(ns, 0.0);
     for (index_t j = 0; j < ns; ++j) {
       double s = 0.0;
       for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e)
-        s += table_.N[e] * table_.N[e] / body.mass[table_.neighbor[e]];
+        s += table_.N[e] * table_.N[e] / body.mass[reached_[table_.neighbor[e]]];
       if (!(s > 0.0))
         fail("contact setup: slave {} (particle {}) has no shape function support; check the slave table", j,
              slave_[j]);
@@ -136,8 +137,10 @@ class particle_to_segment {
     pairs_ = 0;
     in_contact_.assign(ns, 0);
     m_shared_.assign(ns * nt, 0.0);
-    shared_mass_.setup(np);
-    increments_.resize(np, reached_particles(table_, np));
+    const auto reached = static_cast<index_t>(reached_.size());
+    reached_mass_.resize(reached);
+    shared_mass_.setup(reached);
+    increments_.resize(reached);
     reaction_.assign(nt, vec2::Zero());
     bodies_.setup(body, slave_);
     if (tool_vertex_slaves_) {
@@ -193,7 +196,8 @@ class particle_to_segment {
 
     // (ii)-(iv), repeated for effective-mass sweeps: each sweep computes every pair's force
     // increment on the same configuration (Jacobi), then applies them together.
-    shared_mass_.compute(active_pairs(), table_, m, std::span<double>(m_shared_.data(), pairs_));
+    for (std::size_t r = 0; r < reached_.size(); ++r) reached_mass_[r] = m[reached_[r]];
+    shared_mass_.compute(active_pairs(), table_, reached_mass_, std::span<double>(m_shared_.data(), pairs_));
     for (int sweep = 0; sweep < enforcement_.sweeps && pairs_ > 0; ++sweep) {
       const double omega = sweep == 0 ? 1.0 : enforcement_.relaxation;
       if (sweep > 0)
@@ -215,7 +219,7 @@ class particle_to_segment {
         p.tangential_force = ft;
         increments_.spread(table_, j, 1.0, df);  // (P7)
       }
-      increments_.apply(m, dt, d, v);
+      increments_.apply(m, dt, d, v, reached_);
     }
 
     for (index_t q = 0; q < pairs_; ++q) {
@@ -227,7 +231,11 @@ class particle_to_segment {
     tool_vertices_.enforce(body, tools_, u_now_, v_tool_, dt, enforcement_, friction_, d, v, result, reaction_);
     // Remember where the slaves ended up, for the crossing test of the next call.
     if (pairs_ > 0 || !bodies_.empty() || tool_vertices_.enabled())
-      for (index_t j = 0; j < ns; ++j) x_[j] = X[slave_[j]] + table_.interpolate(j, d);
+      for (index_t j = 0; j < ns; ++j) {
+        vec2 u = vec2::Zero();
+        for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) u += table_.N[e] * d[reached_[table_.neighbor[e]]];
+        x_[j] = X[slave_[j]] + u;
+      }
     std::swap(x_prev_, x_);
     for (index_t k = 0; k < nt; ++k) u_prev_[k] = u_now_[k];
     return result;
@@ -242,17 +250,25 @@ class particle_to_segment {
     a.array("contact.reaction", s.reaction_);
   }
 
-  // How many particles the rows of `table` reach (the slaves' coefficients).
-  static index_t reached_particles(const shape_table<2>& table, index_t particles) {
-    std::vector<char> reached(particles, 0);
-    for (const particle_index I : table.neighbor) reached[I] = 1;
-    return std::ranges::count(reached, 1);
+  // Renumbers the slave table's columns to the particles its rows reach (reached_[c] is the
+  // particle of column c): the per-coefficient scratch is then as long as the slaves'
+  // neighbourhood, not the body (a few per cent of the particles with surface slaves).
+  void number_reached_particles(index_t particles) {
+    std::vector<stored_index> column(particles, -1);
+    for (const particle_index I : table_.neighbor) column[I] = 0;
+    reached_.clear();
+    for (index_t I = 0; I < particles; ++I)
+      if (column[I] == 0) {
+        column[I] = static_cast<stored_index>(reached_.size());
+        reached_.push_back(static_cast<stored_index>(I));
+      }
+    for (particle_index& I : table_.neighbor) I = column[I];
   }
 
   void slave_state(std::span<const vec2> X, index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
     vec2 u = vec2::Zero(), w = vec2::Zero();
     for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {
-      const index_t I = table_.neighbor[e];
+      const index_t I = reached_[table_.neighbor[e]];
       u += table_.N[e] * d[I];
       w += table_.N[e] * v[I];
     }
@@ -269,7 +285,8 @@ class particle_to_segment {
   Enforcement enforcement_;
 
   std::vector<index_t> slave_;
-  shape_table<2> table_;
+  shape_table<2> table_;             // rows: slaves; columns: reached_ (renumbered in setup)
+  std::vector<stored_index> reached_;  // the particle of each column of table_
   std::vector<double> m_eff_;
   bool ready_ = false;
 
@@ -281,8 +298,9 @@ class particle_to_segment {
   index_t pairs_ = 0;
   std::vector<char> in_contact_;               // #slaves
   std::vector<double> m_shared_;               // m_sh (61a) of each active pair, capacity #tools x #slaves
-  shared_effective_mass shared_mass_;
-  coefficient_increments increments_;          // #slaves' neighbours
+  std::vector<double> reached_mass_;           // the masses of reached_, for shared_mass_
+  shared_effective_mass shared_mass_;          // #columns
+  coefficient_increments increments_;          // #columns
   std::vector<vec2> reaction_;                 // #tools
 };
 

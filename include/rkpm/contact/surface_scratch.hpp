@@ -39,17 +39,15 @@ inline std::vector<boundary_chain> surface_chains(const contact_body& body, std:
 }
 
 // Force increments on the coefficients, gathered through shape-function rows and applied as
-// (60); only the coefficients touched are visited. Used by every contact pass. Per particle it
-// keeps one 32-bit slot number; the increments themselves are stored only for as many
-// coefficients as the rows can reach (`capacity`: the slaves' neighbours for the rigid tools,
-// a few per cent of a large body).
+// (60); only the coefficients touched are visited. Used by every contact pass. Sized by the
+// rows' columns: the particles, or the particles some rows reach, numbered from 0 (the rigid
+// tools' slave table, particle_to_segment.hpp), which apply() maps back.
 class coefficient_increments {
  public:
-  void resize(index_t particles) { resize(particles, particles); }
-  void resize(index_t particles, index_t capacity) {
-    slot_.assign(particles, -1);
-    dforce_.assign(capacity, vec2::Zero());
-    touched_.assign(capacity, 0);
+  void resize(index_t columns) {
+    slot_.assign(columns, -1);
+    dforce_.assign(columns, vec2::Zero());
+    touched_.assign(columns, 0);
     touched_count_ = 0;
   }
 
@@ -60,8 +58,6 @@ class coefficient_increments {
       const index_t I = rows.neighbor[e];
       stored_index& s = slot_[I];
       if (s < 0) {
-        if (touched_count_ == static_cast<index_t>(touched_.size()))
-          fail("contact: more coefficients touched than the {} the increments were sized for", touched_.size());
         s = static_cast<stored_index>(touched_count_);
         touched_[touched_count_++] = static_cast<stored_index>(I);
       }
@@ -70,22 +66,25 @@ class coefficient_increments {
   }
 
   // (60): v_I += dt f_I / m_I, d_I += dt^2 f_I / m_I for the coefficients spread to; then zero.
-  void apply(std::span<const double> m, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
+  // particle: the particle of each column (empty: the columns are the particles).
+  void apply(std::span<const double> m, double dt, std::vector<vec2>& d, std::vector<vec2>& v,
+             std::span<const stored_index> particle = {}) {
     for (index_t s = 0; s < touched_count_; ++s) {
-      const index_t I = touched_[s];
+      const index_t c = touched_[s];
+      const index_t I = particle.empty() ? c : particle[c];
       const vec2 da = dforce_[s] / m[I];
       v[I] += dt * da;
       d[I] += dt * dt * da;
       dforce_[s].setZero();
-      slot_[I] = -1;
+      slot_[c] = -1;
     }
     touched_count_ = 0;
   }
 
  private:
-  std::vector<stored_index> slot_;     // #particles: where particle I's increment is, -1 if untouched
-  std::vector<vec2> dforce_;           // #capacity, in the order first touched
-  std::vector<stored_index> touched_;  // #capacity: the particle of each slot
+  std::vector<stored_index> slot_;     // #columns: where column c's increment is, -1 if untouched
+  std::vector<vec2> dforce_;           // in the order first touched
+  std::vector<stored_index> touched_;  // the column of each slot
   index_t touched_count_ = 0;
 };
 
