@@ -1,11 +1,13 @@
 // rkpm_scaling: cost per particle-step and footprint of the explicit loop as the Taylor bar is
 // refined (tools/rkpm bench --scaling [options]). One child process per resolution, so that
 // each size's peak resident set (wait4's ru_maxrss) is its own: the child builds the solver on
-// one thread (the set-up time), takes a few warm-up steps, then times the same number of steps
-// on 1 thread, on 2 threads and on 1 thread again (the two 1-thread windows are averaged, so
-// a drift of the cost along the impact does not read as a thread speed-up). Prints a table and
-// writes DIR/scaling.csv and DIR/scaling.png (cost per particle-step against particles, log x).
-// The machine may be shared: read ratios within one run, not absolute times.
+// one thread (the set-up time), takes a few warm-up steps, then times the steps in rounds, each
+// round one window on 1 thread and one on 2 threads of the same length, in alternating order
+// (so that a drift of the cost along the impact does not read as a thread speed-up). The
+// speed-up is the median of the rounds' ratios: a burst of load from the host (this is a
+// virtual machine) spoils one round, not the figure. Prints a table and writes DIR/scaling.csv
+// and DIR/scaling.png (cost per particle-step against particles, log x). The machine may be
+// shared: read ratios within one run, not absolute times.
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -36,6 +38,7 @@ struct options {
   int max_resolution = 32;
   double particle_steps = 4e6;  // timed particle-steps per thread count and size
   int warm_up_steps = 10;
+  int rounds = 5;  // 1-thread / 2-thread window pairs
   std::string rule = "q2";
   bool two_threads = true;  // --one-thread: skip the 2-thread window (a busy machine)
   std::filesystem::path out = "results/bench";
@@ -45,6 +48,7 @@ struct options {
 struct measurement {
   long particles = 0, points = 0, steps = 0;
   double setup_s = 0.0, one_thread_s = 0.0, two_threads_s = 0.0;
+  double speedup = 0.0;  // median over the rounds of (1-thread time / 2-thread time)
   double resident_bytes = 0.0;  // resident set after the timed steps (the peak may be in the set-up)
 };
 
@@ -71,18 +75,31 @@ measurement measure(int resolution, const options& o) {
   m.points = s.model().point_count();
   for (int k = 0; k < o.warm_up_steps; ++k) s.step();
   m.steps = std::clamp(static_cast<long>(o.particle_steps / static_cast<double>(m.particles)), 3L, 2000L);
+  const long rounds = o.two_threads ? std::clamp<long>(o.rounds, 1, m.steps) : 1;
+  const long per_round = m.steps / rounds;
+  m.steps = per_round * rounds;
   auto timed = [&](int threads) {
     omp_set_num_threads(threads);
     const auto t0 = std::chrono::steady_clock::now();
-    for (long k = 0; k < m.steps; ++k) s.step();
+    for (long k = 0; k < per_round; ++k) s.step();
     return seconds_since(t0);
   };
-  const double first = timed(1);
-  if (o.two_threads) {
-    m.two_threads_s = timed(2);
-    m.one_thread_s = 0.5 * (first + timed(1));
-  } else {
-    m.one_thread_s = first;
+  std::vector<double> ratio;
+  for (long r = 0; r < rounds; ++r) {
+    if (!o.two_threads) {
+      m.one_thread_s += timed(1);
+      continue;
+    }
+    const double first = timed(r % 2 == 0 ? 1 : 2), second = timed(r % 2 == 0 ? 2 : 1);
+    const double one = r % 2 == 0 ? first : second, two = r % 2 == 0 ? second : first;
+    m.one_thread_s += one;
+    m.two_threads_s += two;
+    ratio.push_back(one / two);
+  }
+  if (!ratio.empty()) {
+    std::sort(ratio.begin(), ratio.end());
+    const std::size_t h = ratio.size() / 2;
+    m.speedup = ratio.size() % 2 ? ratio[h] : 0.5 * (ratio[h - 1] + ratio[h]);
   }
   m.resident_bytes = resident_bytes_now();
   return m;
@@ -138,6 +155,7 @@ options parse(int argc, char** argv) {
       }
     } else if (a == "--particle-steps") o.particle_steps = std::stod(value());
     else if (a == "--warm-up") o.warm_up_steps = std::stoi(value());
+    else if (a == "--rounds") o.rounds = std::stoi(value());
     else if (a == "--one-thread") o.two_threads = false;
     else if (a == "--rule") {
       o.rule = value();
@@ -146,9 +164,10 @@ options parse(int argc, char** argv) {
     else if (a == "--help" || a == "-h") {
       fmt::print(
           "usage: rkpm_scaling [--max-resolution K] [--resolutions 1,2,4,...] [--particle-steps N]\n"
-          "                    [--warm-up STEPS] [--rule q2|q4] [--one-thread] [--out DIR]\n"
+          "                    [--warm-up STEPS] [--rounds R] [--rule q2|q4] [--one-thread] [--out DIR]\n"
           "Taylor bar (cubic, linear, paper contact); one child process per resolution K (about\n"
-          "1071 K^2 particles); timed steps per thread count = N / particles (default 4e6, 3 to 2000).\n");
+          "1071 K^2 particles); timed steps per thread count = N / particles (default 4e6, 3 to 2000),\n"
+          "in R rounds (default 5) of a 1-thread and a 2-thread window; speed-up: the rounds' median.\n");
       std::exit(0);
     } else fail("rkpm_scaling: unknown option {} (--help lists them)", a);
   }
@@ -194,10 +213,10 @@ int main(int argc, char** argv) try {
     const double bytes = rss / static_cast<double>(m.particles);
     const double stepping = m.resident_bytes / static_cast<double>(m.particles);
     fmt::print("{:>10} {:>10} {:>11.3f} {:>11.3f} {:>9.2f} {:>11.0f} {:>11.0f} {:>10.2f}\n", m.particles, m.points, one,
-               two, two > 0.0 ? one / two : 0.0, bytes, stepping, m.setup_s);
+               two, m.speedup, bytes, stepping, m.setup_s);
     std::fflush(stdout);
     out << fmt::format("{},{},{:.4f},{:.5f},{:.5f},{:.3f},{:.0f},{:.0f},{},{},{}\n", m.particles, m.points, m.setup_s, one,
-                       two, two > 0.0 ? one / two : 0.0, bytes, stepping, r, o.rule, m.steps);
+                       two, m.speedup, bytes, stepping, r, o.rule, m.steps);
     out.flush();
   }
   out.close();

@@ -1,8 +1,8 @@
 #pragma once
 // A warning before a large run is built: the memory a problem will take, estimated from its
 // particle and quadrature-point counts with the footprint measured on the Taylor bar
-// (docs/performance.md, second round: peak resident set 1.74 KB per particle with Q2 at
-// 10^6 particles, most of it the shape-function table at the points, 437 B per point, which
+// (docs/performance.md, third round: peak resident set 1.48 KB per particle with Q2 at
+// 10^6 particles, most of it the shape-function table at the points, 450 B per point, which
 // grows with the points per particle), against what /proc/meminfo says is available.
 
 #include <cstdio>
@@ -30,11 +30,12 @@ inline std::optional<double> available_memory_bytes() {
 }
 
 // Bytes a run of `particles` particles with `points_per_particle` quadrature points each is
-// expected to need (1.8 KB per particle at Q2's two points per cell, about one cell per particle;
-// 0.6 KB per point: 16 table entries of 28 B, the material state and tau; 0.6 KB per particle
-// for the solver's vectors, the table at the particles and the runner's output buffers).
+// expected to need (1.7 KB per particle at Q2's two points per cell, about one cell per particle;
+// 0.55 KB per point: 16 table entries of 28 B, the material state, position, weight and cell;
+// 0.6 KB per particle for the solver's and controller's vectors, the table at the particles, the
+// particles, the mesh and the runner's output buffers).
 inline double estimated_run_bytes(index_t particles, double points_per_particle) {
-  return static_cast<double>(particles) * (0.6e3 + 0.6e3 * points_per_particle);
+  return static_cast<double>(particles) * (0.6e3 + 0.55e3 * points_per_particle);
 }
 
 // Prints a warning to stderr when the estimate exceeds what is available.

@@ -164,6 +164,7 @@ class particle_to_segment {
     const std::span<const vec2> X = body.reference_position;
 
     // (i) physical slave positions and velocities on the predicted configuration.
+#pragma omp parallel for schedule(static) if (ns > parallel_slaves)
     for (index_t j = 0; j < ns; ++j) slave_state(X, j, d, v);
     for (index_t k = 0; k < nt; ++k) {
       u_now_[k] = tools_[k].displacement(t);
@@ -231,6 +232,7 @@ class particle_to_segment {
     tool_vertices_.enforce(body, tools_, u_now_, v_tool_, dt, enforcement_, friction_, d, v, result, reaction_);
     // Remember where the slaves ended up, for the crossing test of the next call.
     if (pairs_ > 0 || !bodies_.empty() || tool_vertices_.enabled())
+#pragma omp parallel for schedule(static) if (ns > parallel_slaves)
       for (index_t j = 0; j < ns; ++j) {
         vec2 u = vec2::Zero();
         for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) u += table_.N[e] * d[reached_[table_.neighbor[e]]];
@@ -275,6 +277,9 @@ class particle_to_segment {
     x_[j] = X[slave_[j]] + u;
     v_[j] = w;
   }
+
+  // Below this many slaves the per-slave loops run on one thread (a parallel region costs more).
+  static constexpr index_t parallel_slaves = 2048;
 
   std::vector<rigid_tool> tools_;
   std::vector<segment_grid> grid_;

@@ -50,10 +50,14 @@ class time_step_controller {
                 index_t steps) {
     const double drift = min_stretch / estimate_stretch_;
     if (steps > 0 && (drift < 0.9 || drift > 1.25 || steps - estimate_step_ >= 500)) {
-      double norm = 0.0;
-      for (const vec2& x : mode_) norm = std::max(norm, x.cwiseAbs().maxCoeff());
+      const auto n = static_cast<index_t>(mode_.size());
+      double norm = 0.0;  // a maximum: the same in any order
+#pragma omp parallel for schedule(static) reduction(max : norm)
+      for (index_t I = 0; I < n; ++I) norm = std::max(norm, mode_[I].cwiseAbs().maxCoeff());
       // The start vector recomputed, not stored (16 bytes per particle): the same values.
-      for (std::size_t I = 0; I < mode_.size(); ++I) mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(I);
+#pragma omp parallel for schedule(static)
+      for (index_t I = 0; I < n; ++I)
+        mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(static_cast<std::size_t>(I));
       estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 20));
       estimate_stretch_ = min_stretch;
       estimate_step_ = steps;

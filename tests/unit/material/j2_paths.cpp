@@ -63,14 +63,18 @@ mat3 hencky(const mat3& F) {
   return eig.eigenvectors() * tau.asDiagonal() * eig.eigenvectors().transpose();
 }
 
+// The paper's laws: linear for copper (Taylor bar), the power law of the wheel's steel.
+template <class H>
+H paper_hardening() {
+  if constexpr (std::same_as<H, h::linear>) return copper_hardening;
+  else return wheel_hardening;
+}
+
 }  // namespace
 
 TEST_CASE_TEMPLATE("objectivity: a superposed rotation R gives tau' = R tau R^T along the path", H,
                    h::linear, h::power_law) {
-  const H hardening = [] {
-    if constexpr (std::same_as<H, h::linear>) return copper_hardening;
-    else return wheel_hardening;
-  }();
+  const H hardening = paper_hardening<H>();
   const j2_plasticity<H> law(copper, hardening);
   // A fixed 90 degree rotation, and a rotation that grows to 3 rad along the path.
   const auto fixed = [](double) { return rotation(std::numbers::pi / 2); };
@@ -137,10 +141,7 @@ TEST_CASE("elastic limit: below yield J2 gives the Hencky stress, and the state 
 TEST_CASE_TEMPLATE("the stress recomputed from the state is the stress the update returned", H, h::linear,
                    h::power_law) {
   // The solver keeps no tau per point and asks current_kirchhoff_stress(F, s) at output.
-  const H hardening = [] {
-    if constexpr (std::same_as<H, h::linear>) return copper_hardening;
-    else return wheel_hardening;
-  }();
+  const H hardening = paper_hardening<H>();
   const j2_plasticity<H> law(copper, hardening);
   const rkpm::material::elastic elastic_law(copper);
   auto s = law.initial_state();
@@ -167,10 +168,7 @@ TEST_CASE_TEMPLATE("the stress recomputed from the state is the stress the updat
 
 TEST_CASE_TEMPLATE("energy balance: int tau : d = W_e(b_e) + plastic work", H, h::linear,
                    h::power_law) {
-  const H hardening = [] {
-    if constexpr (std::same_as<H, h::linear>) return copper_hardening;
-    else return wheel_hardening;
-  }();
+  const H hardening = paper_hardening<H>();
   const j2_plasticity<H> law(copper, hardening);
   auto s = law.initial_state();
   const int n = 4000;
