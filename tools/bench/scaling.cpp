@@ -185,7 +185,7 @@ void plot(const std::filesystem::path& csv, const std::filesystem::path& png, co
       "set datafile separator ','\n"
       "set logscale x\nset format x '10^{{%L}}'\nset grid\n"
       "set xlabel 'particles'\nset ylabel 'time per particle-step (us)'\nset yrange [0:*]\n"
-      "set key top left\n"
+      "set key bottom right\n"
       "set title 'Taylor bar, {}, cubic, linear: cost per particle-step'\n"
       "plot {} using 1:4 with linespoints lw 2 pt 7 title '1 thread', "
       "'' using 1:5 with linespoints lw 2 pt 5 title '2 threads'\n",
