@@ -107,7 +107,7 @@ class particle_to_segment {
     const index_t np = static_cast<index_t>(body.reference_position.size());
     slave_ = slaves.particle;
     table_ = slaves.table;
-    number_reached_particles(np);
+    reached_ = compact_columns(table_, np);
     const index_t ns = static_cast<index_t>(slave_.size());
 
     m_eff_.assign(ns, 0.0);
@@ -252,21 +252,6 @@ class particle_to_segment {
     a.array("contact.reaction", s.reaction_);
   }
 
-  // Renumbers the slave table's columns to the particles its rows reach (reached_[c] is the
-  // particle of column c): the per-coefficient scratch is then as long as the slaves'
-  // neighbourhood, not the body (a few per cent of the particles with surface slaves).
-  void number_reached_particles(index_t particles) {
-    std::vector<stored_index> column(particles, -1);
-    for (const particle_index I : table_.neighbor) column[I] = 0;
-    reached_.clear();
-    for (index_t I = 0; I < particles; ++I)
-      if (column[I] == 0) {
-        column[I] = static_cast<stored_index>(reached_.size());
-        reached_.push_back(static_cast<stored_index>(I));
-      }
-    for (particle_index& I : table_.neighbor) I = column[I];
-  }
-
   void slave_state(std::span<const vec2> X, index_t j, const std::vector<vec2>& d, const std::vector<vec2>& v) {
     vec2 u = vec2::Zero(), w = vec2::Zero();
     for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) {
@@ -290,8 +275,10 @@ class particle_to_segment {
   Enforcement enforcement_;
 
   std::vector<index_t> slave_;
-  shape_table<2> table_;             // rows: slaves; columns: reached_ (renumbered in setup)
-  std::vector<stored_index> reached_;  // the particle of each column of table_
+  // Rows: slaves; columns: the particles the rows reach (reached_[c] is the particle of column
+  // c), so the per-coefficient scratch is as long as the slaves' neighbourhood, not the body.
+  shape_table<2> table_;
+  std::vector<stored_index> reached_;
   std::vector<double> m_eff_;
   bool ready_ = false;
 

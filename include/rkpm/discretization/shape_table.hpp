@@ -54,6 +54,21 @@ struct shape_table_contents {
 };
 inline constexpr shape_table_contents values_only{false, 1e-30};
 
+// Renumbers the columns of `table` (particles 0 .. particles-1) to the particles its rows reach,
+// in increasing order, and returns the particle of each new column.
+template <int Dim>
+std::vector<stored_index> compact_columns(shape_table<Dim>& table, index_t particles) {
+  std::vector<stored_index> column(particles, -1), particle;
+  for (const particle_index I : table.neighbor) column[I] = 0;
+  for (index_t I = 0; I < particles; ++I)
+    if (column[I] == 0) {
+      column[I] = static_cast<stored_index>(particle.size());
+      particle.push_back(static_cast<stored_index>(I));
+    }
+  for (particle_index& I : table.neighbor) I = column[I];
+  return particle;
+}
+
 // Per particle I: the entries e of a shape_table with neighbor[e] == I, and their points.
 struct shape_table_transpose {
   std::vector<index_t> offset{0};  // #particles+1

@@ -20,6 +20,7 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/discretization/shape_table.hpp>
+#include <rkpm/solver/energy.hpp>
 
 namespace rkpm {
 
@@ -56,6 +57,7 @@ class constraint_projector {
     touched_ = column_;
     std::sort(touched_.begin(), touched_.end());
     touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+    v_start_.resize(touched_.size());
     // A = Lambda M^-1 Lambda^T per direction (rows of different directions act on different
     // velocity components and do not couple): A_rs = sum_I Lambda_rI Lambda_sI / m_I.
     std::vector<Eigen::Triplet<double>> entries;
@@ -88,6 +90,20 @@ class constraint_projector {
   // columns of the rows; every other velocity it leaves as it is, bit for bit.
   const std::vector<index_t>& touched() const { return touched_; }
 
+  // apply(t, v), returning the work of the velocity jump it made (docs/method.md (68)) with the
+  // reference velocities v_ref, summed over the particles it can touch (zero elsewhere).
+  double apply_with_work(double t, std::vector<vec2>& v, const std::vector<double>& mass,
+                         const std::vector<vec2>& v_ref) {
+    for (std::size_t k = 0; k < touched_.size(); ++k) v_start_[k] = v[touched_[k]];
+    apply(t, v);
+    double work = 0.0;
+    for (std::size_t k = 0; k < touched_.size(); ++k) {
+      const index_t I = touched_[k];
+      work += impulse_work_at(mass[I], v[I], v_start_[k], v_ref[I]);
+    }
+    return work;
+  }
+
   // Projects the coefficient velocities v onto the constraints at time t. No allocation.
   void apply(double t, std::vector<vec2>& v) {
     const index_t n = size();
@@ -109,6 +125,7 @@ class constraint_projector {
  private:
   std::vector<velocity_constraint> constraints_;
   std::vector<index_t> offset_, column_, touched_;
+  std::vector<vec2> v_start_;  // v at touched_ before the last apply_with_work
   std::vector<double> value_, value_over_mass_;
   // The factor, shared by copies of the projector (Eigen's factorizations cannot be copied or
   // moved; it is not changed after construction). Natural ordering: the rows come in the order

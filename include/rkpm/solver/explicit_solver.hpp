@@ -61,7 +61,6 @@ class explicit_solver {
     add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
     constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
     d_start_.resize(constraints_.touched().size());
-    v_start_.resize(constraints_.touched().size());
     const contact_slaves slaves = select_slaves(model_, std::move(prob.slave_particles), has_tools());
     slave_ = slaves.particle;
     contact_.setup(body(), slaves);
@@ -105,7 +104,7 @@ class explicit_solver {
       max_penetration_ = std::max(max_penetration_, last_contact_.max_penetration);
     }
     if (constraints_.size() > 0) {
-      energy_.constraint += apply_constraints(time_ + 0.5 * dt);
+      energy_.constraint += constraints_.apply_with_work(time_ + 0.5 * dt, v_, mass_, v_half_prev_);
       for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
     }
     // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
@@ -129,7 +128,7 @@ class explicit_solver {
     energy_.external += external;
     energy_.kinetic = kinetic;
     if (constraints_.size() > 0) {
-      energy_.constraint += apply_constraints(time_ + dt);
+      energy_.constraint += constraints_.apply_with_work(time_ + dt, v_, mass_, v_half_prev_);
       energy_.kinetic = kinetic_energy();
     }
     time_ += dt;
@@ -226,7 +225,7 @@ class explicit_solver {
   }
 
  private:
-  // Not saved: scratch of step() (d_start_, v_start_, step_dt_) and the set-up.
+  // Not saved: scratch of step() (d_start_, step_dt_) and the set-up.
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
     for (auto [name, field] : {std::pair{"solver.d", &s.d_}, {"solver.v", &s.v_}, {"solver.a", &s.a_},
@@ -252,20 +251,6 @@ class explicit_solver {
 
   vec2 external_force(index_t I) const { return mass_[I] * body_force_; }
 
-  // Projects v onto the constraints at time t; returns the work of the velocity jump
-  // (energy.hpp), summed over the particles the constraints can touch (zero elsewhere).
-  double apply_constraints(double t) {
-    const std::vector<index_t>& touched = constraints_.touched();
-    for (std::size_t k = 0; k < touched.size(); ++k) v_start_[k] = v_[touched[k]];
-    constraints_.apply(t, v_);
-    double work = 0.0;
-    for (std::size_t k = 0; k < touched.size(); ++k) {
-      const index_t I = touched[k];
-      work += impulse_work_at(mass_[I], v_[I], v_start_[k], v_half_prev_[I]);
-    }
-    return work;
-  }
-
   void compute_internal_force() {
     points_.internal_force(model_, materials_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});
     energy_.plastic = points_.plastic_work();
@@ -288,7 +273,7 @@ class explicit_solver {
   std::vector<double> mass_;
   vec2 body_force_ = vec2::Zero();
   std::vector<vec2> d_, v_, a_, v_half_prev_, f_int_;
-  std::vector<vec2> d_start_, v_start_;  // d and v at the constrained particles (constraints_.touched())
+  std::vector<vec2> d_start_;  // d(n) at the particles the constraints touch (constraints_.touched())
   block_sums<2> sums_;
   point_materials<G, M> points_;
   time_step_controller<G> clock_;

@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -65,6 +66,27 @@ TEST_CASE("table rows match direct evaluation") {
       CHECK(t.N[e] == N[j]);
       CHECK(t.grad[e] == grad[j]);
     }
+  }
+}
+
+TEST_CASE("compact_columns: the columns renumbered to the particles the rows reach") {
+  const fixture f(2.5);
+  const rkpm::neighbor_search<2> search(f.particles);
+  // A few rows only (the first three points), so that most particles are not reached.
+  const std::vector<rkpm::vec2> few(f.points.begin(), f.points.begin() + 3);
+  const auto t = rkpm::build_shape_table<cubic_spline, linear, 2>(search, few);
+  const index_t np = f.particles.size();
+  auto c = t;
+  const auto particle = rkpm::compact_columns(c, np);
+  std::vector<index_t> reached(t.neighbor.begin(), t.neighbor.end());
+  std::sort(reached.begin(), reached.end());
+  reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+  REQUIRE(particle.size() == reached.size());
+  CHECK(static_cast<index_t>(particle.size()) < np);
+  for (std::size_t k = 0; k < reached.size(); ++k) CHECK(particle[k] == reached[k]);
+  for (index_t e = 0; e < t.entries(); ++e) {
+    CHECK(particle[c.neighbor[e]] == t.neighbor[e]);
+    CHECK(c.N[e] == t.N[e]);
   }
 }
 
