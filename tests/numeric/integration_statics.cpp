@@ -66,11 +66,10 @@ Eigen::SparseMatrix<double> sparse_stiffness(const discrete_model& m, const mate
   }
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<vec2> x(n), kx(n);
-  point_stresses stresses(m.point_count());
   for (int c = 0; c < colours; ++c)
     for (int k = 0; k < 2; ++k) {
       for (index_t J = 0; J < n; ++J) x[J] = colour[J] == c ? vec2(vec2::Unit(k)) : vec2(vec2::Zero());
-      apply_elastic_stiffness<G>(m, constants, x, kx, stresses);
+      apply_elastic_stiffness<G>(m, constants, x, kx);
       for (index_t J = 0; J < n; ++J)
         if (colour[J] == c)
           for (index_t I : touches[J])

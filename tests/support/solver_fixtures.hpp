@@ -5,6 +5,7 @@
 // displacement field after one step, and the assembled small-strain stiffness.
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -88,6 +89,17 @@ problem_for<Cfg> grid_problem(const vec2& lo, const vec2& hi, const Eigen::Vecto
                           .slave_particles = {}};
 }
 
+// Holds the bottom face (y = 0) of a section of height `height` and moves its top face down at
+// `speed` m/s, reached linearly over `ramp` s (a cylinder or block squeezed from above).
+template <class P>
+void squeeze_from_top(P& p, double height, double speed, double ramp) {
+  for (index_t I = 0; I < static_cast<index_t>(p.particles.position.size()); ++I) {
+    const double y = p.particles.position[I][1];
+    if (y > height - 1e-9) p.constraints.push_back({I, 1, [=](double t) { return -speed * std::min(1.0, t / ramp); }});
+    if (y < 1e-9) p.constraints.push_back({I, 1, [](double) { return 0.0; }});
+  }
+}
+
 // Moves every interior node of a grid mesh (and the particle at the same place) by a
 // deterministic fraction of the spacing, so that cells are non-affine quadrilaterals; the
 // boundary stays put, so particle volumes still add up to the cell area.
@@ -148,10 +160,9 @@ Eigen::MatrixXd assemble_stiffness(const discrete_model& m, const material::elas
   const index_t n = m.particle_count();
   Eigen::MatrixXd K(2 * n, 2 * n);
   std::vector<vec2> x(n, vec2::Zero()), kx(n);
-  point_stresses stresses(m.point_count());
   for (index_t j = 0; j < 2 * n; ++j) {
     x[j / 2][j % 2] = 1.0;
-    apply_elastic_stiffness<G>(m, c, x, kx, stresses);
+    apply_elastic_stiffness<G>(m, c, x, kx);
     x[j / 2][j % 2] = 0.0;
     for (index_t I = 0; I < n; ++I) K.block<2, 1>(2 * I, j) = kx[I];
   }

@@ -139,6 +139,7 @@ class particle_to_segment {
     m_shared_.assign(ns * nt, 0.0);
     const auto reached = static_cast<index_t>(reached_.size());
     reached_mass_.resize(reached);
+    for (index_t r = 0; r < reached; ++r) reached_mass_[r] = body.mass[reached_[r]];
     shared_mass_.setup(reached);
     increments_.resize(reached);
     reaction_.assign(nt, vec2::Zero());
@@ -197,7 +198,6 @@ class particle_to_segment {
 
     // (ii)-(iv), repeated for effective-mass sweeps: each sweep computes every pair's force
     // increment on the same configuration (Jacobi), then applies them together.
-    for (std::size_t r = 0; r < reached_.size(); ++r) reached_mass_[r] = m[reached_[r]];
     shared_mass_.compute(active_pairs(), table_, reached_mass_, std::span<double>(m_shared_.data(), pairs_));
     for (int sweep = 0; sweep < enforcement_.sweeps && pairs_ > 0; ++sweep) {
       const double omega = sweep == 0 ? 1.0 : enforcement_.relaxation;
@@ -290,7 +290,7 @@ class particle_to_segment {
   index_t pairs_ = 0;
   std::vector<char> in_contact_;               // #slaves
   std::vector<double> m_shared_;               // m_sh (61a) of each active pair, capacity #tools x #slaves
-  std::vector<double> reached_mass_;           // the masses of reached_, for shared_mass_
+  std::vector<double> reached_mass_;           // the masses of reached_ (constant), for shared_mass_
   shared_effective_mass shared_mass_;          // #columns
   coefficient_increments increments_;          // #columns
   std::vector<vec2> reaction_;                 // #tools

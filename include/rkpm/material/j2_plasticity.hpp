@@ -101,8 +101,7 @@ class j2_plasticity {
       s.elastic_left_cauchy_green = b_trial;
     }
     s.previous_deformation = block_matrix::of(F);
-    const vec3 tau = vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev;
-    return frame.assemble(tau);
+    return hencky_stress(frame, volumetric, dev);
   }
 
   // The stress the last kirchhoff_stress(F, s) returned, from the state it left: tau =
@@ -114,8 +113,7 @@ class j2_plasticity {
     const principal_frame frame = principal_frame::of(s.elastic_left_cauchy_green.full());
     const vec3 eps = principal_log_strains(frame.values);
     const double volumetric = eps.sum();
-    const vec3 dev = eps - vec3::Constant(volumetric / 3.0);
-    return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
+    return hencky_stress(frame, volumetric, eps - vec3::Constant(volumetric / 3.0));
   }
 
   double density() const { return constants_.density; }
@@ -124,6 +122,11 @@ class j2_plasticity {
   const H& hardening() const { return hardening_; }
 
  private:
+  // tau = K tr(eps_e) 1 + 2 mu dev(eps_e) in the principal frame of b_e.
+  mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev) const {
+    return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
+  }
+
   // flow_from, flow_to: sigma_y at both ends, known from the return mapping.
   double plastic_work_increment(double eps_p, double dgamma, double flow_from, double flow_to) const {
     if constexpr (requires {

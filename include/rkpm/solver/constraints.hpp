@@ -60,7 +60,7 @@ class constraint_projector {
     v_start_.resize(touched_.size());
     // A = Lambda M^-1 Lambda^T per direction (rows of different directions act on different
     // velocity components and do not couple): A_rs = sum_I Lambda_rI Lambda_sI / m_I.
-    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::SparseMatrix<double> A(n, n);
     Eigen::VectorXd inverse_mass(static_cast<Eigen::Index>(mass.size()));
     for (std::size_t I = 0; I < mass.size(); ++I) inverse_mass[static_cast<Eigen::Index>(I)] = 1.0 / mass[I];
     for (int k = 0; k < 2; ++k) {
@@ -70,12 +70,8 @@ class constraint_projector {
           for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) lambda.emplace_back(r, column_[e], value_[e]);
       Eigen::SparseMatrix<double> L(n, static_cast<Eigen::Index>(mass.size()));
       L.setFromTriplets(lambda.begin(), lambda.end());
-      const Eigen::SparseMatrix<double> A = L * inverse_mass.asDiagonal() * L.transpose();
-      for (Eigen::Index c = 0; c < A.outerSize(); ++c)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it) entries.emplace_back(it.row(), it.col(), it.value());
+      A += Eigen::SparseMatrix<double>(L * inverse_mass.asDiagonal() * L.transpose());  // disjoint patterns
     }
-    Eigen::SparseMatrix<double> A(n, n);
-    A.setFromTriplets(entries.begin(), entries.end());
     auto llt = std::make_shared<factor>(A);
     if (llt->info() != Eigen::Success)
       fail("the {} velocity constraints are linearly dependent (a particle or direction given twice?)", n);

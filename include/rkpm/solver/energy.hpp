@@ -39,12 +39,6 @@ struct energy_balance {
   }
 };
 
-inline double kinetic_energy(const std::vector<double>& mass, const std::vector<vec2>& v) {
-  double k = 0.0;
-  for (std::size_t I = 0; I < mass.size(); ++I) k += 0.5 * mass[I] * v[I].squaredNorm();
-  return k;
-}
-
 // Work of a velocity jump v_before -> v_after applied to the half-step velocity (contact or
 // constraint). The jump is the impulse of a force f = m dv / dt acting at t(n); weighting it
 // with the mean of the half-step velocities around t(n), v_after and v_half_prev (the

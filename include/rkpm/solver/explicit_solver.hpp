@@ -118,16 +118,18 @@ class explicit_solver {
 
     compute_internal_force();
 
+    // The kinetic energy here unless the constraints change v(n+1) afterwards.
+    const bool constrained_end = constraints_.size() > 0;
     const auto [work_after, kinetic] = sums_([&](index_t I, block_sums<2>::sums& s) {
       s[0] += 0.5 * f_int_[I].dot(dt * v_[I]);
       a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
       v_[I] += 0.5 * dt * a_[I];
-      s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
+      if (!constrained_end) s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
     });
     energy_.internal += work_before + work_after;
     energy_.external += external;
     energy_.kinetic = kinetic;
-    if (constraints_.size() > 0) {
+    if (constrained_end) {
       energy_.constraint += constraints_.apply_with_work(time_ + dt, v_, mass_, v_half_prev_);
       energy_.kinetic = kinetic_energy();
     }

@@ -26,12 +26,6 @@
 
 namespace rkpm {
 
-// Kept for callers of apply_elastic_stiffness that pass a workspace: the fused traversal
-// stores nothing per point, so this holds nothing.
-struct point_stresses {
-  explicit point_stresses(index_t /*points*/ = 0) {}
-};
-
 // Gradient H_q and value u_q at quadrature point q of the field with coefficients x.
 struct point_gradient {
   mat2 H = mat2::Zero();
@@ -114,13 +108,6 @@ void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, 
       }
     }
   }
-}
-
-// The former signature, with a workspace that is no longer needed.
-template <Geometry G, class PointRule>
-void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, point_stresses& /*unused*/,
-                           std::vector<vec2>& f, PointRule&& rule) {
-  assemble_point_forces<G>(m, x, f, rule);
 }
 
 }  // namespace rkpm

@@ -101,19 +101,6 @@ void apply_elastic_stiffness(const discrete_model& m, const material::elastic_co
   apply_elastic_stiffness<G>(m, c, reference, x, out);
 }
 
-// The former signatures, with a workspace the fused force loop no longer needs.
-template <Geometry G>
-void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<mat3>& F, const std::vector<vec2>& x, std::vector<vec2>& out,
-                             point_stresses& /*unused*/) {
-  apply_elastic_stiffness<G>(m, c, F, x, out);
-}
-template <Geometry G>
-void apply_elastic_stiffness(const discrete_model& m, const material::elastic_constants& c,
-                             const std::vector<vec2>& x, std::vector<vec2>& out, point_stresses& /*unused*/) {
-  apply_elastic_stiffness<G>(m, c, x, out);
-}
-
 // A start vector with every frequency present (deterministic, so runs repeat exactly); its
 // entry I alone, for callers that mix it back in without keeping a copy.
 inline vec2 power_iteration_start(std::size_t I) {

@@ -52,11 +52,7 @@ problem_for<ps_contact_cfg> striking_block(int nx = 7, double density = 7800.0) 
 problem_for<axi_cfg> compressed_cylinder() {
   const Eigen::Vector2i n(5, 6);
   auto p = test::grid_problem<axi_cfg>(vec2(0.0, 0.0), vec2(2e-3, 3e-3), n);
-  for (index_t I = 0; I < static_cast<index_t>(p.particles.position.size()); ++I) {
-    const double y = p.particles.position[I][1];
-    if (y > 3e-3 - 1e-9) p.constraints.push_back({I, 1, [](double t) { return -10.0 * std::min(1.0, t / 1e-6); }});
-    if (y < 1e-9) p.constraints.push_back({I, 1, [](double) { return 0.0; }});
-  }
+  test::squeeze_from_top(p, 3e-3, 10.0, 1e-6);
   return p;
 }
 

@@ -44,11 +44,7 @@ TEST_CASE("the F read from the J2 state is the deformation gradient of the coeff
   const Eigen::Vector2i n(5, 7);
   auto p = test::grid_problem<axi_cfg>(vec2(0.0, 0.0), vec2(2e-3, 3e-3), n);
   // A cylinder squeezed at its top face, swirled so that every entry of F moves.
-  for (index_t I = 0; I < static_cast<index_t>(p.particles.position.size()); ++I) {
-    const double y = p.particles.position[I][1];
-    if (y > 3e-3 - 1e-9) p.constraints.push_back({I, 1, [](double t) { return -20.0 * std::min(1.0, t / 1e-7); }});
-    if (y < 1e-9) p.constraints.push_back({I, 1, [](double) { return 0.0; }});
-  }
+  test::squeeze_from_top(p, 3e-3, 20.0, 1e-7);
   p.initial_velocity = [](const vec2& X) { return vec2(5.0 * X[1] / 3e-3, 3.0 * X[0] / 2e-3); };
   run_options o;
   o.end_time = 1.0;
