@@ -1,89 +1,19 @@
 #pragma once
-// Isotropic hardening laws sigma_y(eps_p) for J2 plasticity (docs/method.md (23)-(24)).
-//   linear:    sigma_y = sigma_y0 + H eps_p              (Taylor bar, section 10.1: 400 MPa, 100 MPa)
-//   power_law: sigma_y = K (eps0 + eps_p)^n               (wheel, section 10.3: 576.79 MPa, 0.01658,
-//                                                           0.3593; initial yield 132.2 MPa)
-// Both satisfy rkpm::Hardening. `integral(a, b)` is the exact plastic work per unit volume
-// int_a^b sigma_y de_p, which j2_plasticity uses when a law provides it.
+// The isotropic hardening laws of J2 plasticity (docs/method.md section 4.3), one header each,
+// and `laws`, the list every consumer reads: the case files take any law of it by name with its
+// `parameters()` (tools/runner/case_file/case_material.hpp), and the tests check each against
+// its closed forms. A new law is one header here, one entry in `laws`, and its test.
+//   linear:    sigma_y = sigma_y0 + H eps_p                            (23)
+//   power_law: sigma_y = K (eps0 + eps_p)^n                            (24)
 
-#include <cmath>
-#include <string_view>
+#include <boost/hana/tuple.hpp>
+#include <boost/hana/type.hpp>
 
-#include <rkpm/core/error.hpp>
+#include <rkpm/material/hardening/linear.hpp>
+#include <rkpm/material/hardening/power_law.hpp>
 
 namespace rkpm::material::hardening {
 
-struct linear {
-  static constexpr std::string_view name = "linear";
-
-  double yield_stress;  // sigma_y0 in Pa
-  double modulus;       // plastic modulus H = d sigma_y / d eps_p in Pa
-
-  void validate() const {
-    if (!(std::isfinite(yield_stress) && yield_stress > 0.0))
-      fail("hardening::linear: yield_stress = {} Pa is invalid: give a finite value > 0 "
-           "(copper: 400e6 Pa)",
-           yield_stress);
-    if (!(std::isfinite(modulus) && modulus >= 0.0))
-      fail("hardening::linear: modulus = {} Pa is invalid: give a finite value >= 0 "
-           "(softening is not supported; copper: 100e6 Pa)",
-           modulus);
-  }
-
-  double flow_stress(double eps_p) const { return yield_stress + modulus * eps_p; }
-  double slope(double /*eps_p*/) const { return modulus; }
-  double integral(double from, double to) const {
-    return (to - from) * (yield_stress + 0.5 * modulus * (from + to));
-  }
-};
-
-struct power_law {
-  static constexpr std::string_view name = "power";
-
-  double coefficient;  // K in Pa
-  double offset;       // eps0 > 0, so that the initial yield K eps0^n is positive and finite slope
-  double exponent;     // n >= 0
-
-  void validate() const {
-    if (!(std::isfinite(coefficient) && coefficient > 0.0))
-      fail("hardening::power_law: coefficient = {} Pa is invalid: give a finite value > 0 "
-           "(aluminium wheel: 576.79e6 Pa)",
-           coefficient);
-    if (!(std::isfinite(offset) && offset > 0.0))
-      fail("hardening::power_law: offset = {} is invalid: give a finite value > 0 (with 0 the "
-           "initial yield stress is 0 and the slope infinite; wheel: 0.01658)",
-           offset);
-    if (!(std::isfinite(exponent) && exponent >= 0.0))
-      fail("hardening::power_law: exponent = {} is invalid: give a finite value >= 0 "
-           "(wheel: 0.3593)",
-           exponent);
-  }
-
-  double flow_stress(double eps_p) const { return coefficient * std::pow(base(eps_p), exponent); }
-  double slope(double eps_p) const {
-    return coefficient * exponent * std::pow(base(eps_p), exponent - 1.0);
-  }
-  // The same at a strain whose flow stress is known, without a second pow.
-  double slope(double eps_p, double flow) const { return exponent * flow / base(eps_p); }
-  double integral(double from, double to) const {
-    const double m = exponent + 1.0;
-    return coefficient / m * (std::pow(base(to), m) - std::pow(base(from), m));
-  }
-  // The same from the flow stresses at both ends, without a pow: K b^(n+1) = b sigma_y(b).
-  double integral(double from, double to, double flow_from, double flow_to) const {
-    return (base(to) * flow_to - base(from) * flow_from) / (exponent + 1.0);
-  }
-
- private:
-  // eps0 + eps_p must stay positive: a negative base would turn pow() into NaN silently.
-  double base(double eps_p) const {
-    const double b = offset + eps_p;
-    if (!(b > 0.0))
-      fail("hardening::power_law: offset + eps_p = {} + {} is not positive: the equivalent plastic "
-           "strain must be >= 0 and the offset > 0",
-           offset, eps_p);
-    return b;
-  }
-};
+inline constexpr auto laws = boost::hana::tuple_t<linear, power_law>;
 
 }  // namespace rkpm::material::hardening

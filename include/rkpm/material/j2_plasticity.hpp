@@ -13,7 +13,7 @@
 // Objective by construction: superposed rotations only rotate b_e and tau.
 // Plastic work per unit REFERENCE volume (tau is the Kirchhoff stress, so tau : d_p = q dgamma
 // is per unit reference volume): the exact integral of sigma_y over [eps_p_n, eps_p_n + dgamma]
-// when the hardening law provides `integral(a, b)` (both built-in laws do), otherwise the
+// when the hardening law provides `integral(a, b)` (the shipped laws do), otherwise the
 // trapezoidal rule, which is exact for linear hardening.
 
 #include <Eigen/Core>
@@ -41,6 +41,24 @@ struct j2_state {
   double equivalent_plastic_strain = 0.0;
   double plastic_work = 0.0;  // J/m^3 of reference volume
 };
+
+// Plastic work per unit reference volume of an increment dgamma from eps_p (docs/method.md
+// (32)); flow_from, flow_to: sigma_y at both ends, known from the return mapping. The exact
+// integral when the law has one, otherwise the trapezoidal rule. Called unqualified, so that a
+// run-time choice of law (tools/runner/case_file/case_material.hpp) can hand it to its law.
+template <Hardening H>
+double plastic_work_increment(const H& h, double eps_p, double dgamma, double flow_from, double flow_to) {
+  if constexpr (requires {
+                  { h.integral(eps_p, eps_p, flow_from, flow_to) } -> std::convertible_to<double>;
+                })
+    return h.integral(eps_p, eps_p + dgamma, flow_from, flow_to);
+  else if constexpr (requires {
+                       { h.integral(eps_p, eps_p) } -> std::convertible_to<double>;
+                     })
+    return h.integral(eps_p, eps_p + dgamma);
+  else
+    return 0.5 * (flow_from + flow_to) * dgamma;
+}
 
 template <Hardening H>
 class j2_plasticity {
@@ -73,8 +91,9 @@ class j2_plasticity {
   state_type initial_state() const { return {}; }
 
   // F: block-structured total deformation gradient (see concepts/material.hpp). Advances s from
-  // s.previous_deformation to F and returns the Kirchhoff stress.
-  mat3 kirchhoff_stress(const mat3& F, state_type& s) const {
+  // s.previous_deformation to F and returns the Kirchhoff stress. The step (dt, temperature)
+  // reaches the hardening law when it depends on the rate or temperature (concepts/material.hpp).
+  mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
     check_deformation_gradient(F, "material::j2_plasticity");
     // In block arithmetic (core/block_matrix.hpp): the values of the mat3 products, a third
     // of their cost.
@@ -87,13 +106,14 @@ class j2_plasticity {
     const double q_trial = std::sqrt(1.5) * 2.0 * mu_ * dev.norm();
 
     const double eps_p = s.equivalent_plastic_strain;
-    const double yield = hardening_.flow_stress(eps_p);
+    // The yield check at the static curve (rate 0) and the step's temperature.
+    const double yield = flow_stress_at(hardening_, eps_p, flow_point{0.0, step.temperature});
     if (q_trial > yield) {
       const radial_return_result rr =
-          radial_return(hardening_, q_trial, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield);
+          radial_return(hardening_, q_trial, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield, step);
       const double dgamma = rr.increment;
       dev *= 1.0 - 3.0 * mu_ * dgamma / q_trial;
-      s.plastic_work += plastic_work_increment(eps_p, dgamma, yield, rr.flow_stress);
+      s.plastic_work += plastic_work_increment(hardening_, eps_p, dgamma, yield, rr.flow_stress);
       s.equivalent_plastic_strain = eps_p + dgamma;
       const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
       s.elastic_left_cauchy_green = block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));
@@ -125,20 +145,6 @@ class j2_plasticity {
   // tau = K tr(eps_e) 1 + 2 mu dev(eps_e) in the principal frame of b_e.
   mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev) const {
     return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
-  }
-
-  // flow_from, flow_to: sigma_y at both ends, known from the return mapping.
-  double plastic_work_increment(double eps_p, double dgamma, double flow_from, double flow_to) const {
-    if constexpr (requires {
-                    { hardening_.integral(eps_p, eps_p, flow_from, flow_to) } -> std::convertible_to<double>;
-                  })
-      return hardening_.integral(eps_p, eps_p + dgamma, flow_from, flow_to);
-    else if constexpr (requires {
-                         { hardening_.integral(eps_p, eps_p) } -> std::convertible_to<double>;
-                       })
-      return hardening_.integral(eps_p, eps_p + dgamma);
-    else
-      return 0.5 * (flow_from + flow_to) * dgamma;
   }
 
   elastic_constants constants_;

@@ -6,6 +6,9 @@
 // other law gets a Newton iteration safeguarded by bisection on [0, q_trial / (3 mu)], where
 // r(0) > 0 and r(q_trial / (3 mu)) = -sigma_y <= 0, so the root stays bracketed and
 // eps0 + eps_p never drops below its value at the start of the step.
+// A law of eps_p, its rate and temperature (concepts/material.hpp) is asked at the rate the
+// increment implies, dgamma / dt, and the step's temperature; the Newton slope then includes
+// d sigma_y / d rate / dt (docs/method.md (28)).
 
 #include <cmath>
 #include <concepts>
@@ -13,7 +16,7 @@
 
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
-#include <rkpm/material/hardening.hpp>
+#include <rkpm/material/hardening/linear.hpp>
 
 namespace rkpm::material {
 
@@ -28,17 +31,27 @@ struct radial_return_result {
 // sigma_y(eps_p_n), which the caller has from its yield check (one pow less per update).
 template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
-                                   double eps_p_n, double tolerance, int max_iterations, double flow_at_start) {
+                                   double eps_p_n, double tolerance, int max_iterations, double flow_at_start,
+                                   const material_step& step = {}) {
+  // Where on the curve an increment dg puts the point (rate dg / dt, the step's temperature).
+  const auto at = [&](double dg) {
+    if constexpr (hardens_with_state<H>) return flow_point{step.dt > 0.0 ? dg / step.dt : 0.0, step.temperature};
+    else return flow_point{};
+  };
   double sigma = flow_at_start;  // sigma_y at the last residual's dgamma
   const auto residual = [&](double dg) {
-    sigma = hardening.flow_stress(eps_p_n + dg);
+    sigma = flow_stress_at(hardening, eps_p_n + dg, at(dg));
     return q_trial - three_mu * dg - sigma;
   };
-  // The slope where the flow stress sigma is already known: a law may reuse it (power_law's
-  // slope is n sigma / (eps0 + eps_p), which saves a pow per Newton update).
-  const auto slope = [&](double eps_p, double flow) {
+  // d sigma_y / d dgamma where the flow stress sigma is already known: a law may reuse it
+  // (power_law's slope is n sigma / (eps0 + eps_p), which saves a pow per Newton update).
+  const auto slope = [&](double dg, double flow) {
+    const double eps_p = eps_p_n + dg;
     if constexpr (requires { hardening.slope(eps_p, flow); })
       return hardening.slope(eps_p, flow);
+    else if constexpr (hardens_with_state<H>)
+      return slope_at(hardening, eps_p, at(dg)) +
+             (step.dt > 0.0 ? rate_slope_at(hardening, eps_p, at(dg)) / step.dt : 0.0);
     else
       return hardening.slope(eps_p);
   };
@@ -60,7 +73,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
              "{}); raise max_newton_iterations or loosen newton_tolerance",
              H::name, r, it, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
-      const double next = dg + r / (three_mu + slope(eps_p_n + dg, sigma));
+      const double next = dg + r / (three_mu + slope(dg, sigma));
       // Newton left the bracket (or made no progress while unconverged): bisect instead.
       dg = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
       r = residual(dg);
@@ -72,7 +85,7 @@ template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
                                    double eps_p_n, double tolerance, int max_iterations) {
   return radial_return(hardening, q_trial, three_mu, eps_p_n, tolerance, max_iterations,
-                       hardening.flow_stress(eps_p_n));
+                       flow_stress_at(hardening, eps_p_n, flow_point{}));
 }
 
 }  // namespace rkpm::material

@@ -254,7 +254,7 @@ class explicit_solver {
   vec2 external_force(index_t I) const { return mass_[I] * body_force_; }
 
   void compute_internal_force() {
-    points_.internal_force(model_, materials_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_});
+    points_.internal_force(model_, materials_, d_, f_int_, {steps_ + (step_dt_ > 0.0), time_ + step_dt_, step_dt_});
     energy_.plastic = points_.plastic_work();
   }
 

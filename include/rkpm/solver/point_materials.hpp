@@ -31,10 +31,12 @@
 
 namespace rkpm {
 
-// Where an error happened, for its message.
+// The step a force evaluation belongs to: where an error happened, for its message, and what
+// the material update is told of the step (material_step, concepts/material.hpp).
 struct step_context {
   index_t step = 0;
-  double time = 0.0;
+  double time = 0.0;  // s, at the end of the step
+  double dt = 0.0;    // s, 0 for the evaluation at the start
 };
 
 template <Geometry G, Material M>
@@ -85,7 +87,8 @@ class point_materials {
       if constexpr (!state_records_F) F_[q] = block_matrix::of(F);
       mat3 tau;
       try {
-        tau = material.at_point(q).kirchhoff_stress(F, state_[q]);
+        tau = material_update(material.at_point(q), F, state_[q],
+                              material_step{where.dt, where.time, state_temperature(state_[q])});
       } catch (const std::exception& ex) {
         tile.fail(q, failure::material, J);
 #pragma omp critical(rkpm_material_error)

@@ -188,7 +188,7 @@ TEST_CASE("--set overrides: a field the file has, a JSON value or a string") {
   const auto c = test::load_document(taylor(), override_list{{"/bodies/0/material/yield_stress_Pa", "3e8"},
                                                              {"/method/quadrature", "q4"},
                                                              {"/tools/0/polyline_m/1", "[3e-2, 0]"}});
-  CHECK(c.bodies[0].material.yield_stress == 3e8);
+  CHECK(std::get<material::hardening::linear>(c.bodies[0].material.flow_law.law).yield_stress == 3e8);
   CHECK(c.method.quadrature == "q4");
   CHECK(c.tools[0].polyline[1] == vec2(3e-2, 0.0));
   CHECK(c.document["bodies"][0]["material"]["yield_stress_Pa"] == 3e8);

@@ -1,16 +1,23 @@
 // The case files' material, j2_plasticity<case_file::hardening_law> (case_material.hpp), gives
-// bit for bit the stresses and states of j2_plasticity<linear> and <power_law> along a path
-// that yields, unloads and yields again (the linear law keeps its closed-form return); and
-// with no yield it is the Hencky law of material::elastic up to round-off.
+// bit for bit the stresses and states of j2_plasticity<law> for every law of
+// material::hardening::laws, along a path that yields, unloads and yields again (the linear law
+// keeps its closed-form return); and with no yield it is the Hencky law of material::elastic up
+// to round-off. Each law of the list is also read from a case file's material by its
+// parameters() and comes out with the constants given.
 #include <doctest/doctest.h>
 
+#include <boost/hana.hpp>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 
 #include "tools/runner/case_file/case_material.hpp"
+#include "tools/runner/case_file/read_body.hpp"
+
+#include "support/error_message.hpp"
 
 using namespace rkpm;
 using runner::case_file::hardening_law;
@@ -49,7 +56,61 @@ void check_identical(const Typed& typed, const runner::case_file::material_type&
   CHECK(a.equivalent_plastic_strain > 0.01);  // the path did yield
 }
 
+// A law of the list with the typical constants its parameters() show (their leading number),
+// scaled by `scale` so that two calls give different laws.
+template <class Law>
+Law example_law(double scale = 1.0) {
+  Law h{};
+  for (const auto& p : Law::parameters()) h.*p.value = scale * std::stod(std::string(p.example));
+  return h;
+}
+
 }  // namespace
+
+TEST_CASE("every hardening law of the list: bit for bit j2_plasticity<law>") {
+  boost::hana::for_each(material::hardening::laws, [](auto law) {
+    using law_type = typename decltype(law)::type;
+    CAPTURE(law_type::name);
+    const law_type h = example_law<law_type>();
+    check_identical(material::j2_plasticity<law_type>(aluminium, h),
+                    runner::case_file::material_type(aluminium, hardening_law::of(h)));
+  });
+}
+
+TEST_CASE("every hardening law of the list is read from a case file's material with its constants") {
+  boost::hana::for_each(material::hardening::laws, [](auto law) {
+    using law_type = typename decltype(law)::type;
+    CAPTURE(law_type::name);
+    const law_type h = example_law<law_type>(1.5);
+    runner::json m = {{"law", "j2"}, {"youngs_modulus_Pa", 71e9}, {"poisson_ratio", 0.3}, {"density_kg_m3", 2700},
+              {"hardening", std::string(law_type::name)}};
+    for (const auto& p : law_type::parameters()) m[std::string(p.key)] = h.*p.value;
+    runner::case_file::diagnostics d("test.json");
+    const auto read = runner::case_file::detail::read_material(d, m, "/bodies/0/material");
+    CHECK_NOTHROW(d.throw_if_any());
+    REQUIRE(std::holds_alternative<law_type>(read.flow_law.law));
+    const law_type& got = std::get<law_type>(read.flow_law.law);
+    for (const auto& p : law_type::parameters()) CHECK(got.*p.value == h.*p.value);
+    // A missing constant is named; a negative one is refused with its bound.
+    for (const auto& p : law_type::parameters()) {
+      CAPTURE(p.key);
+      runner::json missing = m;
+      missing.erase(std::string(p.key));
+      runner::case_file::diagnostics dm("test.json");
+      (void)runner::case_file::detail::read_material(dm, missing, "/bodies/0/material");
+      const std::string why_missing = test::error_message([&] { dm.throw_if_any(); });
+      CHECK(test::contains(why_missing, "missing field '" + std::string(p.key) + "'"));
+      runner::json negative = m;
+      negative[std::string(p.key)] = -1.0;
+      runner::case_file::diagnostics dn("test.json");
+      (void)runner::case_file::detail::read_material(dn, negative, "/bodies/0/material");
+      const std::string why_negative = test::error_message([&] { dn.throw_if_any(); });
+      CHECK(test::contains(why_negative, "/bodies/0/material/" + std::string(p.key)));
+      CHECK(test::contains(why_negative, p.bound == material::hardening::lower_bound::positive ? "must be positive"
+                                                                                              : "must not be negative"));
+    }
+  });
+}
 
 TEST_CASE("linear hardening: bit for bit j2_plasticity<hardening::linear>") {
   const material::hardening::linear h{132e6, 300e6};

@@ -44,10 +44,7 @@ namespace rkpm::runner::case_file {
 inline material_type make_material(const material_description& m) {
   const material::elastic_constants constants{m.youngs_modulus, m.poisson_ratio, m.density};
   if (m.law != material::j2_name) return material_type(constants, hardening_law::no_yield());
-  if (m.hardening == material::hardening::power_law::name)
-    return material_type(constants, hardening_law::of(material::hardening::power_law{
-                                        m.flow_coefficient, m.flow_offset, m.flow_exponent}));
-  return material_type(constants, hardening_law::of(material::hardening::linear{m.yield_stress, m.hardening_modulus}));
+  return material_type(constants, m.flow_law);
 }
 
 namespace detail {

@@ -16,6 +16,7 @@
 #include <rkpm/io/gmsh_mesh.hpp>
 
 #include "../json.hpp"
+#include "case_material.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -42,10 +43,9 @@ using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
 
 struct material_description {
   std::string law;        // "elastic" or "j2"
-  std::string hardening;  // for j2: "linear" or "power" (the hardening laws' ::name)
+  std::string hardening;  // for j2: a law's ::name in material::hardening::laws ("linear", ...)
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
-  double yield_stress = 0.0, hardening_modulus = 0.0;                   // linear
-  double flow_coefficient = 0.0, flow_offset = 0.0, flow_exponent = 0.0;  // power: K (eps0 + eps_p)^n
+  hardening_law flow_law;  // for j2: that law with the file's constants (never yields otherwise)
 };
 
 // Prescribed velocity components (m/s) of the particles on a named edge; empty = free.

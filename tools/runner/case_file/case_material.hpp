@@ -1,19 +1,23 @@
 #pragma once
 // The one material type of every case file: material::j2_plasticity with its hardening law
 // chosen at run time (hardening_law), so that the runner compiles one material per geometry
-// and contact enforcement, whatever law the files name. Each call goes to the library's own
-// law, so a case file runs bit for bit as the typed case with j2_plasticity<linear> or
-// j2_plasticity<power_law> (tests/unit/case_file/hardening_law.cpp).
+// and contact enforcement, whatever law the files name. hardening_law holds one law of the
+// library's list (material::hardening::laws) and hands every call to it, so a case file runs
+// bit for bit as the typed case with j2_plasticity<that law> (tests/unit/case_file/
+// hardening_law.cpp); a law added to the list is read and run with no edit here.
 //
 // "elastic" is J2 that never yields (flow stress +infinity). Its elastic part is the Hencky law
 // of material::elastic (tau = K tr(eps) + 2 mu dev(eps) = lambda tr(eps) + 2 mu eps in principal
 // log strains), reached through b_e = f b_e_n f^T step by step instead of b = F F^T: the same
 // stress up to round-off.
 
+#include <boost/hana.hpp>
 #include <cmath>
 #include <limits>
 #include <string_view>
+#include <variant>
 
+#include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/material/hardening.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
@@ -21,68 +25,83 @@
 
 namespace rkpm::runner::case_file {
 
+namespace detail {
+struct never_yields {};
+// std::variant<never_yields, the laws of material::hardening::laws...>
+inline constexpr auto law_variant = boost::hana::unpack(material::hardening::laws, [](auto... law) {
+  return boost::hana::type_c<std::variant<never_yields, typename decltype(law)::type...>>;
+});
+}  // namespace detail
+
 struct hardening_law {
   static constexpr std::string_view name = "case_file";
-  enum class kind { none, linear, power };
+  using variant = typename decltype(detail::law_variant)::type;
 
-  kind law = kind::none;
-  material::hardening::linear linear{};
-  material::hardening::power_law power{};
+  variant law;
 
   static hardening_law no_yield() { return {}; }
-  static hardening_law of(const material::hardening::linear& h) { return {kind::linear, h, {}}; }
-  static hardening_law of(const material::hardening::power_law& h) { return {kind::power, {}, h}; }
+  template <class Law>
+  static hardening_law of(const Law& h) { return {variant(h)}; }
+
+  bool yields() const { return !std::holds_alternative<detail::never_yields>(law); }
+  // The law's name (material::hardening::laws), "none" when it never yields.
+  std::string_view law_name() const {
+    return visit([](const auto& h) { return h.name; }, std::string_view("none"));
+  }
 
   void validate() const {
-    if (law == kind::linear) linear.validate();
-    if (law == kind::power) power.validate();
+    visit([](const auto& h) { h.validate(); return 0; }, 0);
   }
-  double flow_stress(double eps_p) const {
-    switch (law) {
-      case kind::linear: return linear.flow_stress(eps_p);
-      case kind::power: return power.flow_stress(eps_p);
-      default: return std::numeric_limits<double>::infinity();
-    }
+  double flow_stress(double eps_p, const flow_point& at = {}) const {
+    return visit([&](const auto& h) { return flow_stress_at(h, eps_p, at); },
+                 std::numeric_limits<double>::infinity());
   }
-  double slope(double eps_p) const {
-    switch (law) {
-      case kind::linear: return linear.slope(eps_p);
-      case kind::power: return power.slope(eps_p);
-      default: return 0.0;
-    }
+  double slope(double eps_p, const flow_point& at = {}) const {
+    return visit([&](const auto& h) { return slope_at(h, eps_p, at); }, 0.0);
   }
-  double integral(double from, double to) const {
-    switch (law) {
-      case kind::linear: return linear.integral(from, to);
-      case kind::power: return power.integral(from, to);
-      default: return 0.0;
-    }
+  double rate_slope(double eps_p, const flow_point& at) const {
+    return visit([&](const auto& h) { return rate_slope_at(h, eps_p, at); }, 0.0);
   }
-  // The forms that reuse known flow stresses (material/hardening.hpp), so that a case file's
-  // law gives the typed law's arithmetic bit for bit.
-  double slope(double eps_p, double flow) const {
-    return law == kind::power ? power.slope(eps_p, flow) : slope(eps_p);
+  // The work integral where the law has one (j2_plasticity's choices, in the same order), so
+  // that a case file's law gives the typed law's arithmetic bit for bit.
+  double plastic_work(double from, double dgamma, double flow_from, double flow_to) const {
+    return visit([&](const auto& h) { return material::plastic_work_increment(h, from, dgamma, flow_from, flow_to); },
+                 0.0);
   }
-  double integral(double from, double to, double flow_from, double flow_to) const {
-    return law == kind::power ? power.integral(from, to, flow_from, flow_to) : integral(from, to);
+
+  // f(law) for the law held; `otherwise` when it never yields.
+  template <class F, class R>
+  R visit(F&& f, R otherwise) const {
+    return std::visit(
+        [&](const auto& h) -> R {
+          if constexpr (std::is_same_v<std::decay_t<decltype(h)>, detail::never_yields>) return otherwise;
+          else return f(h);
+        },
+        law);
   }
 };
 
 // Found by argument-dependent lookup from j2_plasticity (a non-template beats the library's
-// template): linear hardening keeps its closed form, as radial_return<hardening::linear> does,
-// instead of the Newton iteration a law unknown to the library would get.
+// template): each law gets the library's own return mapping (linear hardening its closed form,
+// as radial_return<hardening::linear> does), not the Newton iteration of an unknown law.
 inline material::radial_return_result radial_return(const hardening_law& h, double q_trial, double three_mu,
                                                     double eps_p_n, double tolerance, int max_iterations,
-                                                    double flow_at_start) {
-  switch (h.law) {
-    case hardening_law::kind::linear:
-      return material::radial_return(h.linear, q_trial, three_mu, eps_p_n, tolerance, max_iterations, flow_at_start);
-    case hardening_law::kind::power:
-      return material::radial_return(h.power, q_trial, three_mu, eps_p_n, tolerance, max_iterations, flow_at_start);
-    default:
-      fail("case-file material: a return mapping was asked of a material that never yields (q_trial = {} Pa)",
-           q_trial);
-  }
+                                                    double flow_at_start, const material_step& step = {}) {
+  if (!h.yields())
+    fail("case-file material: a return mapping was asked of a material that never yields (q_trial = {} Pa)",
+         q_trial);
+  return h.visit(
+      [&](const auto& law) {
+        return material::radial_return(law, q_trial, three_mu, eps_p_n, tolerance, max_iterations, flow_at_start,
+                                       step);
+      },
+      material::radial_return_result{});
+}
+
+// Found the same way by j2_plasticity's plastic work.
+inline double plastic_work_increment(const hardening_law& h, double from, double dgamma, double flow_from,
+                                     double flow_to) {
+  return h.plastic_work(from, dgamma, flow_from, flow_to);
 }
 
 using material_type = material::j2_plasticity<hardening_law>;

@@ -4,7 +4,9 @@
 // one here (types, signs, ranges); what needs the whole body (a polygon with no area, an edge
 // name, a tool inside it) is checked in cross_checks.hpp.
 
+#include <algorithm>
 #include <array>
+#include <boost/hana.hpp>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -81,25 +83,64 @@ inline std::optional<body_shape> read_shape(diagnostics& d, const json& value, c
   return mesh_shape{path};
 }
 
+// The names of the hardening laws (material::hardening::laws), in the list's order.
+inline std::vector<std::string_view> hardening_names() {
+  std::vector<std::string_view> names;
+  boost::hana::for_each(material::hardening::laws, [&](auto law) { names.push_back(decltype(law)::type::name); });
+  return names;
+}
+
+// Every law's keys where `applies(law name)` holds, each once, in the list's order.
+template <class Applies>
+void add_hardening_keys(std::vector<std::string_view>& known, Applies applies) {
+  boost::hana::for_each(material::hardening::laws, [&](auto law) {
+    using law_type = typename decltype(law)::type;
+    if (!applies(law_type::name)) return;
+    for (const auto& p : law_type::parameters())
+      if (std::find(known.begin(), known.end(), p.key) == known.end()) known.push_back(p.key);
+  });
+}
+
+// The law named `name` with its constants read from r (each checked against its bound).
+inline hardening_law read_hardening(diagnostics& d, const object_reader& r, std::string_view name) {
+  hardening_law out;
+  boost::hana::for_each(material::hardening::laws, [&](auto law) {
+    using law_type = typename decltype(law)::type;
+    if (law_type::name != name) return;
+    law_type h{};
+    for (const auto& p : law_type::parameters()) {
+      const auto x = r.number(p.key, p.example);
+      if (!x) continue;
+      h.*p.value = *x;
+      if (p.bound == material::hardening::lower_bound::positive) check_positive(d, r.at(p.key), *x, p.example);
+      else check_non_negative(d, r.at(p.key), *x, p.example);
+    }
+    out = hardening_law::of(h);
+  });
+  return out;
+}
+
 inline material_description read_material(diagnostics& d, const json& value, const std::string& at) {
-  using linear = material::hardening::linear;
-  using power = material::hardening::power_law;
   const std::array<std::string_view, 2> laws{material::elastic::name, material::j2_name};
-  const std::array<std::string_view, 2> hardenings{linear::name, power::name};
+  const std::vector<std::string_view> hardenings = hardening_names();
+  const std::string_view default_hardening = hardenings.front();
   // The fields allowed depend on the law and hardening named, so look at those first.
   const auto peek = [&](const char* key) {
     return value.is_object() && value.contains(key) && value[key].is_string() ? value[key].get<std::string>() : "";
   };
   const std::string law = peek("law"), hardening = peek("hardening");
-  // An unknown law may still be J2 misspelt: accept its fields rather than report each.
+  // An unknown law may still be J2 misspelt: accept its fields rather than report each; an
+  // unknown hardening law likewise accepts every law's fields.
   const bool j2 = law != material::elastic::name;
-  const bool unknown_hardening = hardening != linear::name && hardening != power::name && !hardening.empty();
-  const bool is_linear = j2 && (hardening.empty() || hardening == linear::name || unknown_hardening);
-  const bool is_power = j2 && (hardening == power::name || unknown_hardening);
+  const bool unknown_hardening =
+      !hardening.empty() && std::find(hardenings.begin(), hardenings.end(), hardening) == hardenings.end();
   std::vector<std::string_view> known{"law", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3"};
-  if (j2) known.push_back("hardening");
-  if (is_linear) known.insert(known.end(), {"yield_stress_Pa", "hardening_modulus_Pa"});
-  if (is_power) known.insert(known.end(), {"flow_coefficient_Pa", "flow_offset", "flow_exponent"});
+  if (j2) {
+    known.push_back("hardening");
+    add_hardening_keys(known, [&](std::string_view name) {
+      return unknown_hardening || name == (hardening.empty() ? default_hardening : std::string_view(hardening));
+    });
+  }
   object_reader r(d, value, at, known);
   material_description m;
   if (!r.valid()) return m;
@@ -119,31 +160,9 @@ inline material_description read_material(diagnostics& d, const json& value, con
     check_positive(d, r.at("density_kg_m3"), *rho, "8930 (copper)");
   }
   if (m.law != material::j2_name) return m;
-  m.hardening = r.choice("hardening", hardenings, "hardening law", linear::name).value_or("");
+  m.hardening = r.choice("hardening", hardenings, "hardening law", default_hardening).value_or("");
   if (unknown_hardening) return m;
-  if (is_linear) {
-    if (const auto y = r.number("yield_stress_Pa", "400e6")) {
-      m.yield_stress = *y;
-      check_positive(d, r.at("yield_stress_Pa"), *y, "400e6");
-    }
-    if (const auto h = r.number("hardening_modulus_Pa", "100e6")) {
-      m.hardening_modulus = *h;
-      check_non_negative(d, r.at("hardening_modulus_Pa"), *h, "100e6 (softening is not supported)");
-    }
-  } else {
-    if (const auto k = r.number("flow_coefficient_Pa", "576.79e6")) {
-      m.flow_coefficient = *k;
-      check_positive(d, r.at("flow_coefficient_Pa"), *k, "576.79e6");
-    }
-    if (const auto e0 = r.number("flow_offset", "0.01658")) {
-      m.flow_offset = *e0;
-      check_positive(d, r.at("flow_offset"), *e0, "0.01658 (with 0 the initial yield stress is 0)");
-    }
-    if (const auto n = r.number("flow_exponent", "0.3593")) {
-      m.flow_exponent = *n;
-      check_non_negative(d, r.at("flow_exponent"), *n, "0.3593");
-    }
-  }
+  m.flow_law = read_hardening(d, r, m.hardening);
   return m;
 }
 
