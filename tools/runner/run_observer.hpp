@@ -15,6 +15,7 @@
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/progress.hpp>
+#include <rkpm/io/solver_output.hpp>
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 
@@ -25,20 +26,6 @@
 #include "run_record.hpp"
 
 namespace rkpm::runner {
-
-// Particle fields for the VTK snapshot.
-template <class Solver>
-io::point_data snapshot_fields(const Solver& s) {
-  io::point_data data;
-  data.add("displacement", s.particle_displacements());
-  data.add("velocity", s.particle_velocities());
-  data.add("stress", s.template project_to_particles<mat3>([&](index_t q) { return s.point_cauchy_stress(q); }));
-  data.add("equivalent_plastic_strain", s.template project_to_particles<double>([&](index_t q) {
-    return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
-  }));
-  data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); }));
-  return data;
-}
 
 template <class Case, class Solver>
 class run_observer {
@@ -78,7 +65,7 @@ class run_observer {
       record_.next_history += record_.history_interval;
     }
     if (t >= record_.next_snapshot || last) {
-      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), snapshot_fields(s));
+      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_fields(s));
       record_.snapshots.emplace_back(t, vtu.filename().string());
       record_.next_snapshot += record_.snapshot_interval;
     }
@@ -132,8 +119,7 @@ class run_observer {
       columns.push_back(tool.name() + "_force_x_N");
       columns.push_back(tool.name() + "_force_y_N");
     }
-    for (const char* c : {"kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"})
-      columns.emplace_back(c);
+    for (const auto& [name, value] : io::energy_terms(s.energy())) columns.emplace_back(name);
     return columns;
   }
 
@@ -161,8 +147,7 @@ class run_observer {
       row.push_back(f[0]);
       row.push_back(f[1]);
     }
-    const auto& e = s.energy();
-    for (double v : {e.kinetic, e.internal, e.plastic, e.contact, e.external, e.balance_error()}) row.push_back(v);
+    for (const auto& [name, value] : io::energy_terms(s.energy())) row.push_back(value);
     history_.row(row);
     record_.history_rows.push_back(std::move(row));
   }

@@ -47,7 +47,7 @@ inline int active_threads() {
 // The policy names of a run, as summary.json records them, and its configuration's full name
 // (config<...>::name()'s form, which checkpoints check). Passed as values so that simulate is
 // compiled once per solver type (one per enforcement), not once per combination.
-struct method_names {
+struct run_policies {
   std::string_view kernel, correction, quadrature, geometry, contact;
   std::string configuration;
 };
@@ -55,7 +55,7 @@ struct method_names {
 // What identifies a run for a restart: the case, its policies, resolution and parameters
 // (summary.json's first keys, and the description of every checkpoint).
 template <class Case>
-json run_identity(const run_request& request, const typename Case::parameters& params, const method_names& method) {
+json run_identity(const run_request& request, const typename Case::parameters& params, const run_policies& method) {
   json id = json::object();
   id["case"] = case_name<Case>(params);
   id["kernel"] = method.kernel;
@@ -70,7 +70,7 @@ json run_identity(const run_request& request, const typename Case::parameters& p
 }
 
 template <class Case, class Solver>
-run_outcome simulate(const run_request& request, const typename Case::parameters& params, const method_names& method,
+run_outcome simulate(const run_request& request, const typename Case::parameters& params, const run_policies& method,
                      const std::function<Solver()>& make, const std::optional<restart_point>& restart = {}) {
   namespace fs = std::filesystem;
   run_outcome outcome;
@@ -167,13 +167,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();
   json& energy = summary["energy"];
   energy = json::object();
-  const auto& e = s.energy();
-  energy["kinetic_J"] = e.kinetic;
-  energy["internal_J"] = e.internal;
-  energy["plastic_J"] = e.plastic;
-  energy["contact_J"] = e.contact;
-  energy["external_J"] = e.external;
-  energy["balance_error"] = e.balance_error();
+  for (const auto& [name, value] : io::energy_terms(s.energy())) energy[std::string(name)] = value;
   json& results = summary["results"];  // the case's measures at the end of the run
   results = json::object();
   for (const auto& [k, v] : observe.last_measures()) results[k] = v;

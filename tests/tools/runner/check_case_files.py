@@ -8,6 +8,8 @@
                                                             checkpoint gives the uninterrupted run's outputs
     check_case_files.py errors RKPM_RUN CASES_DIR WORK_DIR  a bad file or override stops before any step with
                                                             the file, the JSON pointer and the fix
+    check_case_files.py ledger RKPM_RUN CASES_DIR WORK_DIR  summary.json's energy terms close the balance
+                                                            when a constraint does the work
     check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
                                                             has the geometry's mass (kinetic energy 1/2 rho A v^2),
                                                             keeps its symmetry line and stays on the wall's side;
@@ -243,10 +245,44 @@ def bodies(rkpm_run, cases, work):
     print(f"ok  overlap.json: {r.stderr.strip()}")
 
 
+def ledger(rkpm_run, cases, work):
+    """summary.json's energy terms close the ledger to its printed error (docs/method.md section 7,
+    io/solver_output.hpp) in a run where a prescribed motion does the work: the Taylor bar at rest,
+    no wall, pushed up from its bottom edge at 100 m/s by an edge constraint. All the energy
+    the bar gains is the constraint's work, so a summary without constraint_J cannot balance."""
+    with open(os.path.join(cases, "taylor_bar.json")) as f:
+        doc = json.load(f)
+    doc["tools"] = []
+    doc["bodies"][0]["initial_velocity_m_s"] = [0, 0]
+    doc["bodies"][0]["constraints"] = [{"edge": "bottom", "velocity_m_s": [None, 100]}]
+    path = os.path.join(work, "pushed_bar.json")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    out = os.path.join(work, "pushed_bar")
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, path, "--out", out, "--end-time", "20e-6", "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"pushed bar: the run failed: {r.stderr}")
+    if r.returncode != 0:
+        return
+    e = summary(out)["energy"]
+    imbalance = (e["kinetic_J"] + e["internal_J"] - e["initial_kinetic_J"] - e["external_J"] - e["contact_J"] -
+                 e["constraint_J"])
+    bound = (e["balance_error"] + 1e-14) * e["largest_term_J"]
+    check(abs(imbalance) <= bound, f"pushed bar: the printed terms leave {imbalance} J, more than the printed error "
+          f"allows ({bound} J)")
+    check(e["constraint_J"] > 0.5 * (e["kinetic_J"] + e["internal_J"]),
+          f"pushed bar: the constraint did {e['constraint_J']} J, the bar holds {e['kinetic_J'] + e['internal_J']} J")
+    check(e["contact_J"] == 0.0 and e["external_J"] == 0.0, f"pushed bar: no tool, no body force: {e}")
+    print(f"ok  pushed bar: constraint work {e['constraint_J']:.4f} J, K + W_int - K0 = "
+          f"{e['kinetic_J'] + e['internal_J'] - e['initial_kinetic_J']:.4f} J, imbalance {imbalance:.2e} J "
+          f"<= {bound:.2e} J")
+
+
 def main(argv):
     mode, rkpm_run, cases, work = argv[1:5]
     os.makedirs(work, exist_ok=True)
-    {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies}[mode](rkpm_run, cases, work)
+    {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies,
+     "ledger": ledger}[mode](rkpm_run, cases, work)
     return exit_status()
 
 

@@ -179,6 +179,23 @@ SUMMARY_KEYS = ["case", "kernel", "correction", "quadrature", "geometry", "conta
                 "threads", "wall_s", "setup_s", "energy", "results"]
 
 
+# summary.json's energy terms (io/solver_output.hpp, docs/method.md section 7).
+ENERGY_KEYS = ["kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "constraint_J", "initial_kinetic_J",
+               "largest_term_J", "balance_error"]
+
+
+def check_balance_closes(e, label):
+    """The printed terms close the ledger to the printed error: |K + W_int - K0 - W_ext - W_contact -
+    W_constraint| <= balance_error x largest_term_J (the error is the largest imbalance of the run over
+    its largest term; the final imbalance is at most that), up to the 17 printed digits."""
+    imbalance = (e["kinetic_J"] + e["internal_J"] - e["initial_kinetic_J"] - e["external_J"] - e["contact_J"] -
+                 e["constraint_J"])
+    bound = e["balance_error"] * e["largest_term_J"] + 1e-14 * e["largest_term_J"]
+    check(abs(imbalance) <= bound, f"{label}: the printed energy terms leave {imbalance} J, more than the printed "
+          f"error allows ({bound} J): a term is missing from summary.json")
+    return imbalance
+
+
 def finite(x):
     return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
 
@@ -187,8 +204,7 @@ def outputs(out):
     with open(os.path.join(out, "summary.json")) as f:
         s = strict_json(f)
     check(list(s) == SUMMARY_KEYS, f"summary.json: keys {list(s)}, expected {SUMMARY_KEYS}")
-    check(list(s.get("energy", {})) == ["kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J",
-                                        "balance_error"], f"summary.json: energy keys {list(s.get('energy', {}))}")
+    check(list(s.get("energy", {})) == ENERGY_KEYS, f"summary.json: energy keys {list(s.get('energy', {}))}")
     check(list(s.get("results", {})) == ["radius_mm", "height_mm", "max_equivalent_plastic_strain"],
           f"summary.json: results keys {list(s.get('results', {}))}")
     # Parameters keep their types: counts are integers, quantities are numbers.
@@ -204,7 +220,7 @@ def outputs(out):
     for key in ["particles", "quadrature_points", "steps", "dt_min_s", "dt_max_s", "end_time_s", "threads", "wall_s",
                 "setup_s"]:
         check(finite(s.get(key)), f"summary.json: '{key}' missing or not a finite number")
-    for key in ["kinetic_J", "internal_J", "plastic_J", "contact_J", "external_J", "balance_error"]:
+    for key in ENERGY_KEYS:
         check(finite(s.get("energy", {}).get(key)), f"summary.json: 'energy.{key}' missing or not finite")
     for key in ["radius_mm", "height_mm", "max_equivalent_plastic_strain"]:
         check(finite(s.get("results", {}).get(key)), f"summary.json: 'results.{key}' missing or not finite")
@@ -230,6 +246,8 @@ def outputs(out):
     k0 = 0.5 * math.pi * (RADIUS_MM * 1e-3) ** 2 * HEIGHT_MM * 1e-3 * 8930.0 * VELOCITY ** 2
     check(abs(e["kinetic_J"] + e["internal_J"] - e["contact_J"] - k0) < 0.01 * k0,
           f"K + W_int - W_contact = {e['kinetic_J'] + e['internal_J'] - e['contact_J']} J, K0 = {k0} J")
+    check(abs(e["initial_kinetic_J"] - k0) < 1e-6 * k0, f"initial_kinetic_J {e['initial_kinetic_J']}, expected {k0}")
+    check_balance_closes(e, "taylor_bar")
     res = s["results"]
     check(res["radius_mm"] > RADIUS_MM and res["height_mm"] < HEIGHT_MM, f"results {res}")
     check(res["height_mm"] > HEIGHT_MM - 1.01 * VELOCITY * END_TIME * 1e3, f"height {res['height_mm']}")
