@@ -4,13 +4,14 @@
 //
 // Every solver type costs compile time, and the full product is 2 x 2 x 3 x 2 x 3 x 4 = 288
 // configurations. The tests instantiate `covering_configs`: 12 configurations in which every
-// pair of policies from two different families appears at least once (checked below at
-// compile time). The runner instantiates only what its option strings can reach.
+// pair of policies from two different families appears at least once (generated and checked
+// below at compile time). The runner instantiates only what its option strings can reach.
 
 #include <array>
 #include <boost/hana.hpp>
 #include <cstddef>
 
+#include <rkpm/core/pairwise_covering.hpp>
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/contact/friction.hpp>
 #include <rkpm/contact/none.hpp>
@@ -65,11 +66,15 @@ inline constexpr auto to_config = [](auto types) {
 // Every combination (288 types; instantiating them all is what the covering set avoids).
 inline constexpr auto all_configs = [] { return hana::transform(hana::cartesian_product(families), to_config); };
 
-// Rows of policy indices (one per family, config order) covering every cross-family pair.
-inline constexpr std::array<std::array<std::size_t, family_count>, 12> covering_rows{{
-    {0, 0, 0, 1, 0, 0}, {0, 1, 1, 0, 1, 0}, {1, 1, 2, 0, 2, 0}, {0, 1, 0, 0, 1, 1},
-    {0, 0, 1, 0, 2, 1}, {1, 1, 2, 1, 0, 1}, {0, 1, 0, 1, 2, 2}, {0, 0, 1, 0, 0, 2},
-    {1, 0, 2, 1, 1, 2}, {1, 1, 0, 1, 0, 3}, {1, 0, 1, 1, 1, 3}, {0, 1, 2, 0, 2, 3}}};
+// Rows of policy indices (one per family, config order) covering every cross-family pair,
+// generated at compile time from the family sizes (core/pairwise_covering.hpp): a policy added
+// to a list enters the covering set with no table to retype.
+inline constexpr auto covering_table = pairwise_covering(family_sizes);
+inline constexpr std::array<std::array<std::size_t, family_count>, covering_table.count> covering_rows = [] {
+  std::array<std::array<std::size_t, family_count>, covering_table.count> rows{};
+  for (std::size_t r = 0; r < rows.size(); ++r) rows[r] = covering_table.rows[r];
+  return rows;
+}();
 
 template <std::size_t Rows>
 constexpr bool covers_every_pair(const std::array<std::array<std::size_t, family_count>, Rows>& rows,
