@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include <rkpm/solver/make_solver.hpp>
+#include <rkpm/solver/method_names.hpp>
 #include <rkpm/solver/policies.hpp>
 
 namespace hana = boost::hana;
@@ -67,14 +68,30 @@ static_assert(decltype(hana::length(policies::all_configs()))::value == 288);
 // q1 is shipped but kept out of the lists: it is the failing reference of the spectrum test.
 static_assert(!hana::contains(policies::quadratures, hana::type_c<quadrature::q1>));
 
-// Covering set rows map to the right types (row 0 and row 11 spelled out).
+// The generated covering set has the fewest rows possible, the product of the two largest
+// families (4 contacts x 3 materials or rules), and its rows map to the right types (rows 0
+// and 11 spelled out: {0,0,0,0,0,0} and {1,1,2,1,1,3}).
+static_assert(policies::covering_rows.size() == 4 * 3);
+static_assert(policies::covering_rows[0] == std::array<std::size_t, 6>{0, 0, 0, 0, 0, 0});
 static_assert(std::is_same_v<typename decltype(+policies::covering_configs[hana::size_c<0>])::type,
-                             config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::axisymmetric,
+                             config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
                                     material::elastic, contact::none>>);
+static_assert(policies::covering_rows[11] == std::array<std::size_t, 6>{1, 1, 2, 1, 1, 3});
 static_assert(std::is_same_v<typename decltype(+policies::covering_configs[hana::size_c<11>])::type,
-                             config<kernel::cubic_spline, correction::quadratic, quadrature::q9,
-                                    geometry::plane_strain, material::j2_plasticity<material::hardening::power_law>,
+                             config<kernel::quartic_spline, correction::quadratic, quadrature::q9,
+                                    geometry::axisymmetric, material::j2_plasticity<material::hardening::linear>,
                                     ptc>>);
+// The generator covers every pair for other family sizes too (a fifth contact, a fourth
+// material, three geometries), within a few rows of the product of the two largest sizes.
+static_assert(policies::covers_every_pair(
+    [] {
+      constexpr auto t = pairwise_covering(std::array<std::size_t, 6>{2, 2, 3, 2, 4, 5});
+      std::array<std::array<std::size_t, 6>, t.count> rows{};
+      for (std::size_t r = 0; r < t.count; ++r) rows[r] = t.rows[r];
+      return rows;
+    }(),
+    std::array<std::size_t, 6>{2, 2, 3, 2, 4, 5}));
+static_assert(pairwise_covering(std::array<std::size_t, 6>{2, 2, 3, 3, 4, 5}).count <= 5 * 4 + 3);
 // All 12 are distinct types.
 static_assert(hana::length(hana::to_set(policies::covering_configs)) == hana::size_c<12>);
 
@@ -108,4 +125,41 @@ TEST_CASE("config names") {
   });
   CHECK(count == 288);
   CHECK(names.size() == count);
+}
+
+TEST_CASE("a method named at run time: the typed configuration's name, and every name checked") {
+  // Every combination of the lists named at run time gives config<...>::name() of its type.
+  hana::for_each(policies::all_configs(), [&](auto c) {
+    using C = typename decltype(c)::type;
+    const method_names m{std::string(C::kernel_type::name), std::string(C::correction_type::name),
+                         std::string(C::quadrature_type::name)};
+    CHECK_NOTHROW(m.check());
+    CHECK(m.configuration_name<typename C::geometry_type, typename C::material_type, typename C::contact_type>() ==
+          C::name());
+  });
+  hana::for_each(policies::extended_quadratures, [&](auto q) {
+    CHECK_NOTHROW((method_names{"cubic", "linear", std::string(decltype(q)::type::name)}.check()));
+  });
+  const auto refused = [](const method_names& m) {
+    try {
+      m.check();
+    } catch (const rkpm::error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(refused({"cubik", "linear", "q2"}) == "unknown kernel 'cubik'; the choices are cubic, quartic");
+  CHECK(refused({"cubic", "linear", "q3"}).find("unknown quadrature 'q3'; the choices are q2, q4, q9, q2_split") == 0);
+  CHECK(refused({"cubic", "cubic", "q2"}).find("unknown correction 'cubic'") == 0);
+}
+
+TEST_CASE("quadrature points of a rule named at run time, from the rule's own counts") {
+  // A 10 x 10 cell grid has 121 nodes.
+  CHECK(quadrature_point_count("q2", 100, 121) == 200);
+  CHECK(quadrature_point_count("q4", 100, 121) == 400);
+  CHECK(quadrature_point_count("q9", 100, 121) == 900);
+  CHECK(quadrature_point_count("q2+vci", 100, 121) == 200);
+  CHECK(quadrature_point_count("scni_plain", 100, 121) == 121);  // one per node
+  CHECK(quadrature_point_count("scni", 100, 121) == 400);        // one per quarter cell
+  CHECK_THROWS_AS(quadrature_point_count("q3", 100, 121), rkpm::error);
 }

@@ -2,8 +2,8 @@
 // The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --contact E`:
 // the case fixes geometry and material, the enforcement picks one of three compiled solver
 // types from a table built with Boost.Hana (methods.hpp), and kernel, correction and rule are
-// chosen at run time by the model builder (model_builder.hpp), since they change the model's
-// tables, not the solver's type. Coulomb friction (coefficient 0 is frictionless) serves every
+// chosen at run time by the library's builder (rkpm/solver/make_model.hpp, compiled once per
+// geometry: models.hpp), since they change the model's tables, not the solver's type. Coulomb friction (coefficient 0 is frictionless) serves every
 // case.
 
 #include <boost/hana.hpp>
@@ -25,7 +25,7 @@
 #include "cases/parameters.hpp"
 #include "memory_estimate.hpp"
 #include "methods.hpp"
-#include "model_builder.hpp"
+#include "models.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
 #include "run_record.hpp"
@@ -42,17 +42,16 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   run_options options;
   options.end_time = Case::end_time(p);
   options.max_steps = r.max_steps;
+  const rkpm::method_names method{r.kernel, r.correction, r.quadrature};
   const std::function<Solver()> make = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
-    warn_if_too_large(pr.particles.size(), pr.mesh.cells(), rule_points_per_cell(r.quadrature));
-    discrete_model model = build_model<G>(r.kernel, r.correction, r.quadrature, std::move(pr.particles),
-                                          std::move(pr.mesh), options.max_moment_condition);
-    return Solver(std::move(model), std::move(pr), options);
+    warn_if_too_large(pr.particles.size(), quadrature_point_count(r.quadrature, pr.mesh.cells(),
+                                                                  static_cast<index_t>(pr.mesh.node.size())));
+    return make_solver<G>(method, std::move(pr), options);
   };
-  // config<...>::name()'s form, with kernel, correction and rule named at run time.
-  const std::string configuration = fmt::format("{}-{}-{}-{}-{}-{}", r.kernel, r.correction, r.quadrature,
-                                                G::name, M::name, Ct::name);
-  return simulate<Case, Solver>(r, p, {r.kernel, r.correction, r.quadrature, G::name, E::name, configuration},
+  return simulate<Case, Solver>(r, p,
+                                {r.kernel, r.correction, r.quadrature, G::name, E::name,
+                                 method.configuration_name<G, M, Ct>()},
                                 make, restart);
 }
 
@@ -61,7 +60,7 @@ using run_function = run_outcome (*)(const run_request&, const typename Case::pa
                                      const std::optional<restart_point>&);
 
 // Contact enforcement name -> the run function with that enforcement (the solver's type);
-// kernel, correction and quadrature rule are chosen inside, at run time (model_builder.hpp).
+// kernel, correction and quadrature rule are chosen inside, at run time (models.hpp).
 template <class Case>
 std::map<std::string, run_function<Case>> dispatch_table() {
   std::map<std::string, run_function<Case>> table;

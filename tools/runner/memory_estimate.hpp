@@ -39,9 +39,10 @@ inline double estimated_run_bytes(index_t particles, double points_per_particle)
 }
 
 // Prints a warning to stderr when the estimate exceeds what is available.
-inline void warn_if_too_large(index_t particles, index_t cells, int points_per_cell) {
+// `points`: the quadrature points the rule will make (rkpm::quadrature_point_count).
+inline void warn_if_too_large(index_t particles, double points) {
   const auto available = available_memory_bytes();
-  const double points_per_particle = particles > 0 ? double(cells) * points_per_cell / double(particles) : 0.0;
+  const double points_per_particle = particles > 0 ? points / double(particles) : 0.0;
   const double needed = estimated_run_bytes(particles, points_per_particle);
   if (available && needed > *available)
     fmt::print(stderr,

@@ -1,10 +1,8 @@
 // The discrete models of every named kernel, correction and rule in axisymmetric geometry
-// (model_builder.hpp), shared by the cases of that geometry.
-#include <rkpm/geometry/axisymmetric.hpp>
+// (rkpm/solver/make_model.hpp), shared by the cases of that geometry (models.hpp).
+#include "models.hpp"
 
-#include "model_builder_impl.hpp"
-
-namespace rkpm::runner {
-template discrete_model build_model<geometry::axisymmetric>(std::string_view, std::string_view, std::string_view,
-                                                   particle_set<2>, background_mesh, double);
-}  // namespace rkpm::runner
+namespace rkpm {
+template discrete_model make_model<geometry::axisymmetric>(const method_names&, particle_set<2>, background_mesh,
+                                                           double);
+}  // namespace rkpm

@@ -1,0 +1,61 @@
+#pragma once
+// The run-time face of the one builder (docs/method.md section 9.2): the discrete model and the
+// solver of a method whose kernel, correction and quadrature rule are named at run time, by
+// the policies' names in solver/policies.hpp (policies::kernels, corrections, all_quadratures).
+// These three change the model's tables, not the solver's type, so a program that reads its
+// method from a command line or a file compiles the time loop once per geometry, material and
+// contact, and finds the model builder here:
+//
+//   rkpm::method_names m{"quartic", "linear", "q2+vci"};
+//   auto solver = rkpm::make_solver<geometry::axisymmetric>(m, std::move(problem), options);
+//
+// make_model instantiates the builders of every named combination (2 x 2 x 11): a program
+// should compile it once per geometry (an explicit instantiation in one file, as
+// tools/runner/models_axisymmetric.cpp does) and declare it `extern template` elsewhere.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include <boost/hana.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/solver/body_models.hpp>
+#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/method_names.hpp>
+#include <rkpm/solver/policies.hpp>
+
+namespace rkpm {
+
+// The model of the method `m` in geometry G; a name that is none of the lists' is refused in
+// one line that gives the choices.
+template <Geometry G>
+discrete_model make_model(const method_names& m, particle_set<2> particles, background_mesh mesh,
+                          double max_condition) {
+  namespace hana = boost::hana;
+  m.check();
+  std::optional<discrete_model> model;
+  hana::for_each(
+      hana::cartesian_product(hana::make_tuple(policies::kernels, policies::corrections, policies::all_quadratures)),
+      [&](auto combo) {
+        using K = typename decltype(+combo[hana::size_c<0>])::type;
+        using C = typename decltype(+combo[hana::size_c<1>])::type;
+        using Q = typename decltype(+combo[hana::size_c<2>])::type;
+        if (!model && m.kernel == K::name && m.correction == C::name && m.quadrature == Q::name)
+          model.emplace(build_model_of_bodies<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition));
+      });
+  if (!model) fail("no model for {}: not a combination of the policy lists", m.describe());
+  return std::move(*model);
+}
+
+// The solver of the method `m` for problem p: make_model, then explicit_solver<G, M, Ct>.
+template <Geometry G, Material M, Contact Ct>
+explicit_solver<G, M, Ct> make_solver(const method_names& m, problem<M, Ct> p, const run_options& options) {
+  discrete_model model = make_model<G>(m, std::move(p.particles), std::move(p.mesh), options.max_moment_condition);
+  return explicit_solver<G, M, Ct>(std::move(model), std::move(p), options);
+}
+
+}  // namespace rkpm
