@@ -109,7 +109,7 @@ struct block_forging {
       lo = std::min(lo, xi[0]);
       hi = std::max(hi, xi[0]);
     }
-    return {{"height_mm", gap(p, s.time()) * 1e3},
+    return {{"tool_gap_mm", gap(p, s.time()) * 1e3},
             {"width_mm", (hi - lo) * 1e3},
             {"max_penetration_mm", s.max_penetration() * 1e3},
             {"tool_force_N_per_m", tool_force.size() > 1 ? std::abs(tool_force[1][1]) : 0.0}};

@@ -70,8 +70,8 @@ outcome run(const taylor_bar::parameters& params, const fs::path& dir) {
   options.end_time = taylor_bar::end_time(params);  // the step is chosen by rkpm (0.7 of the stable step)
 
   const auto start = std::chrono::steady_clock::now();
-  // The solver keeps pointers into itself (the contact sees its particle arrays), so it is
-  // built in place and never moved.
+  // make_solver builds the discrete model of the method's kernel, correction and rule, then the
+  // solver of its geometry, material and contact.
   auto solver = make_solver<Method>(taylor_bar::build<contact_t>(params, /*resolution=*/1), options);
   fmt::print("{}: {} particles, {} quadrature points, first time step {:.3g} ns\n", rule,
              solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e9);

@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
     const auto m = block_forging::measure(solver, params, {});
     fmt::print("\nafter {} steps ({:.0f}% compression):\n", solver.steps(),
                100.0 * (1.0 - block_forging::gap(params, solver.time()) / params.height_m));
-    fmt::print("  height (tool gap)   {:.1f} mm\n  width at the faces  {:.1f} mm (bottom), {:.1f} mm (top)\n",
+    fmt::print("  tool gap            {:.1f} mm\n  width at the faces  {:.1f} mm (bottom), {:.1f} mm (top)\n",
                m[0].second, row_width(0.0) * 1e3, row_width(params.height_m) * 1e3);
     fmt::print("  width at mid-height {:.1f} mm\n  largest width       {:.1f} mm\n",
                row_width(0.5 * params.height_m) * 1e3, m[1].second);

@@ -105,7 +105,7 @@ outcome run_taylor_bar(const rod_on_rod::parameters& rods, int resolution, const
   options.end_time = taylor_bar::end_time(p);
 
   const auto start = std::chrono::steady_clock::now();
-  auto solver = make_solver<method>(taylor_bar::build<contact_t>(p, resolution), options);  // built in place
+  auto solver = make_solver<method>(taylor_bar::build<contact_t>(p, resolution), options);
   fmt::print("Taylor bar: {} particles, {} quadrature points, first time step {:.3g} ns\n",
              solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e9);
   // Every step the wall's impulse on the bar; every 20 steps a row: the case's measures, the z
@@ -234,7 +234,7 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
   options.end_time = rod_on_rod::end_time(p);
 
   const auto start = std::chrono::steady_clock::now();
-  auto solver = make_solver<method>(rod_on_rod::build<contact_t>(p, resolution), options);  // built in place
+  auto solver = make_solver<method>(rod_on_rod::build<contact_t>(p, resolution), options);
   const auto& pairs = solver.contact().body_pairs();
   fmt::print("\nrods, {}: {} particles in {} bodies, {} quadrature points, contact pairs", two_pass ? "two passes" : "one pass",
              solver.model().particle_count(), solver.contact().bodies().bodies(), solver.model().point_count());
