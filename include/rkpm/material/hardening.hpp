@@ -5,15 +5,17 @@
 // its closed forms. A new law is one header here, one entry in `laws`, and its test.
 //   linear:    sigma_y = sigma_y0 + H eps_p                            (23)
 //   power_law: sigma_y = K (eps0 + eps_p)^n                            (24)
+//   voce:      sigma_y = sigma_0 + Q (1 - exp(-b eps_p)) + H eps_p     (24a)
 
 #include <boost/hana/tuple.hpp>
 #include <boost/hana/type.hpp>
 
 #include <rkpm/material/hardening/linear.hpp>
 #include <rkpm/material/hardening/power_law.hpp>
+#include <rkpm/material/hardening/voce.hpp>
 
 namespace rkpm::material::hardening {
 
-inline constexpr auto laws = boost::hana::tuple_t<linear, power_law>;
+inline constexpr auto laws = boost::hana::tuple_t<linear, power_law, voce>;
 
 }  // namespace rkpm::material::hardening

@@ -10,6 +10,8 @@
                                                             the file, the JSON pointer and the fix
     check_case_files.py ledger RKPM_RUN CASES_DIR WORK_DIR  summary.json's energy terms close the balance
                                                             when a constraint does the work
+    check_case_files.py voce RKPM_RUN CASES_DIR WORK_DIR    the Taylor bar's file with Voce hardening: Q = 0 is
+                                                            the linear law, Q > 0 a harder bar
     check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
                                                             has the geometry's mass (kinetic energy 1/2 rho A v^2),
                                                             keeps its symmetry line and stays on the wall's side;
@@ -278,11 +280,51 @@ def ledger(rkpm_run, cases, work):
           f"<= {bound:.2e} J")
 
 
+def voce(rkpm_run, cases, work):
+    """The Taylor bar's case file with Voce hardening (docs/method.md (24a)): with Q = 0 it is the
+    linear law (sigma_0 = 400 MPa, H = 100 MPa), so the run must give the built-in case's results to
+    the return mapping's tolerance (Newton to 1e-12 instead of the closed form); with Q = 300 MPa
+    saturating at b = 10 the bar is harder, so it spreads and shortens less."""
+    with open(os.path.join(cases, "taylor_bar.json")) as f:
+        doc = json.load(f)
+    runs = {}
+    for label, saturation in [("no_saturation", 0.0), ("saturating", 300e6)]:
+        d = json.loads(json.dumps(doc))
+        d["bodies"][0]["material"] = {"law": "j2", "hardening": "voce", "youngs_modulus_Pa": 117e9,
+                                      "poisson_ratio": 0.35, "density_kg_m3": 8930, "yield_stress_Pa": 400e6,
+                                      "saturation_stress_Pa": saturation, "saturation_rate": 10.0,
+                                      "hardening_modulus_Pa": 100e6}
+        path = os.path.join(work, f"voce_{label}.json")
+        with open(path, "w") as f:
+            json.dump(d, f)
+        out = os.path.join(work, "voce-" + label)
+        shutil.rmtree(out, ignore_errors=True)
+        r = run([rkpm_run, path, "--out", out, "--end-time", "20e-6", "--no-plots", "--quiet"])
+        check(r.returncode == 0, f"voce ({label}): the run failed: {r.stderr}")
+        if r.returncode != 0:
+            return
+        runs[label] = summary(out)
+    linear = os.path.join(work, "voce-linear")
+    shutil.rmtree(linear, ignore_errors=True)
+    r = run([rkpm_run, "taylor_bar", "--out", linear, "--end-time", "20e-6", "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"taylor_bar: the run failed: {r.stderr}")
+    if r.returncode != 0:
+        return
+    a, b = summary(linear)["results"], runs["no_saturation"]["results"]
+    for key in a:
+        check(abs(a[key] - b[key]) <= 1e-9 * abs(a[key]), f"voce with Q = 0: {key} {b[key]}, linear {a[key]}")
+    hard = runs["saturating"]["results"]
+    check(hard["radius_mm"] < b["radius_mm"] and hard["height_mm"] > b["height_mm"] and
+          hard["max_equivalent_plastic_strain"] < b["max_equivalent_plastic_strain"],
+          f"voce with Q = 300 MPa is not harder than with Q = 0: {hard} against {b}")
+    print(f"ok  voce: Q = 0 gives the linear law's {b}; Q = 300 MPa {hard}")
+
+
 def main(argv):
     mode, rkpm_run, cases, work = argv[1:5]
     os.makedirs(work, exist_ok=True)
     {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies,
-     "ledger": ledger}[mode](rkpm_run, cases, work)
+     "ledger": ledger, "voce": voce}[mode](rkpm_run, cases, work)
     return exit_status()
 
 
