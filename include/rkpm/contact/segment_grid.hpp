@@ -56,7 +56,8 @@ class segment_grid {
 
   // The grid over `segments` segments whose end points are ends(k) (a pair of vec2) in the
   // current configuration. Square cells at least as large as the longest segment plus twice
-  // the reach, so that a segment's grown box spans at most two cells per direction.
+  // the reach, so that a segment's grown box spans at most two cells per direction (segments of
+  // about one length, as a body's surface has; one long segment makes few large cells).
   template <class Ends>
   void rebuild(index_t segments, Ends&& ends, double reach) {
     if (segments == 0) {
