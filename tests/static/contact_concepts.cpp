@@ -158,7 +158,7 @@ TEST_CASE("the shipped contact policies report one reaction per tool") {
   CHECK(wall.reactions().size() == wall.tools().size());
 }
 
-TEST_CASE("has_contact: tools or body pairs, not has_tools for body pairs") {
+TEST_CASE("has_contact: true with tools or body pairs, false with neither") {
   CHECK_FALSE(rkpm::has_contact(c::none{}));
   const c::particle_to_segment<> wall({c::rigid_tool("wall", {{-1, 0}, {1, 0}}, c::side::left)});
   CHECK(rkpm::has_contact(wall));

@@ -190,7 +190,8 @@ class body_contact {
           first, end, m,
           [&](index_t q, auto&& visit) {
             const body_contact_pair& p = self.active_[q];
-            for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e) visit(rows.neighbor[e], rows.N[e]);
+            for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e)
+              visit(rows.neighbor[e], rows.N[e]);
             self.scratch_.visit_point(rows, p.a, p.b, p.lambda, [&](index_t I, double c) { visit(I, -c); });
           },
           [&](index_t q, double mass) { self.shared_mass_[q] = mass; });

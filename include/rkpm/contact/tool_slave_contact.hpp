@@ -158,7 +158,8 @@ class tool_slave_contact {
 #pragma omp parallel for schedule(static) if (ns > parallel_slaves)
       for (index_t j = 0; j < ns; ++j) {
         vec2 u = vec2::Zero();
-        for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e) u += table_.N[e] * d[reached_[table_.neighbor[e]]];
+        for (index_t e = table_.offset[j]; e < table_.offset[j + 1]; ++e)
+          u += table_.N[e] * d[reached_[table_.neighbor[e]]];
         x_[j] = X[slave_[j]] + u;
       }
     std::swap(x_prev_, x_);
