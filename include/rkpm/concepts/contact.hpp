@@ -3,7 +3,11 @@
 //   setup(body, slaves)                once, before the first step;
 //   enforce(body, t_next, dt, d, v)    every step, correcting the predicted d_{n+1} and
 //                                      v_{n+1/2} in place, with no heap allocation;
-//   tools(), reactions()               the rigid tools and the force on each in the last step.
+//   tools(), reactions()               the rigid tools and the force on each in the last step;
+//   body_pairs()                       the pairs of deformable bodies in contact (empty if
+//                                      none): with the tools, whether there is contact at all;
+//   save(writer), load(reader)         its state between steps, for checkpoints
+//                                      (solver/checkpoint.hpp; empty for a stateless policy).
 // The body is passed on every call (a view of the solver's own arrays), so a policy holds no
 // pointer into the solver and the solver can be moved.
 // ContactEnforcement and FrictionLaw are the building blocks of contact::particle_to_segment.
@@ -20,6 +24,11 @@
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
+
+namespace io {
+class checkpoint_writer;
+class checkpoint_reader;
+}  // namespace io
 
 // The body a contact policy acts on, valid for the duration of one call.
 struct contact_body {
@@ -47,13 +56,23 @@ struct contact_result {
 
 template <class C>
 concept Contact = std::movable<C> && requires(C& c, const C& cc, const contact_body& b, const contact_slaves& s,
-                                              double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
+                                              double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v,
+                                              io::checkpoint_writer& w, io::checkpoint_reader& r) {
   { C::name } -> std::convertible_to<std::string_view>;
   c.setup(b, s);
   { c.enforce(b, t, dt, d, v) } -> std::same_as<contact_result>;
   { cc.tools() } -> std::ranges::sized_range;
+  { cc.body_pairs() } -> std::ranges::sized_range;
   { cc.reactions() } -> std::convertible_to<std::span<const vec2>>;
+  cc.save(w);
+  c.load(r);
 };
+
+// Whether a policy has anything to enforce: rigid tools or pairs of deformable bodies.
+template <Contact C>
+bool has_contact(const C& c) {
+  return !std::ranges::empty(c.tools()) || !std::ranges::empty(c.body_pairs());
+}
 
 template <class E>
 concept ContactEnforcement = requires(const E& e, double g, double dt, double m) {

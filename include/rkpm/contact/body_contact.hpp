@@ -7,10 +7,11 @@
 // predicted configuration. Each step, for every slave particle J of the slave body:
 //   (i)   the segment a-b of the master surface it penetrates: projection lambda in [0, 1],
 //         gap g = -(x_J - x_a) . n in (0, depth] with n the master's outward normal (the
-//         nearest such segment);
-//   (ii)  the normal and friction forces of (P4)-(P6) as for a rigid tool, with the velocity of
-//         the contact point x_c = (1 - lambda) x_a + lambda x_b as the tool velocity; the
-//         effective mass counts both sides, 1 / m_eff = sum_I N_I(X_J)^2 / m_I + sum_I c_I^2 / m_I,
+//         nearest such segment; surface_search.hpp), among the candidates of a grid over the
+//         master's segments (segment_grid.hpp, rebuilt for each pair on its configuration);
+//   (ii)  the normal and friction forces of (P4)-(P6) as for a rigid tool (contact_kernel.hpp),
+//         with the velocity of the contact point x_c = (1 - lambda) x_a + lambda x_b as the
+//         tool velocity; the effective mass counts both sides, 1 / m_eff = sum_I N_I(X_J)^2 / m_I + sum_I c_I^2 / m_I,
 //         c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b), so that an isolated gap closes in one
 //         step, and is shared among contacts that move the same coefficients as (61a) shares it
 //         among slaves on a tool (effective_mass enforcement); the paper's form uses the reduced
@@ -19,28 +20,28 @@
 //         (P7), and its reaction -f_J at the contact point to the master body's through c_I (the
 //         transpose of (P7) on the master side). Both rows sum to one, so the bodies' linear
 //         momentum is unchanged to round-off.
-// The effective-mass sweeps repeat (ii)-(iii) on the updated configuration. The particles of
-// master surfaces must be the mesh nodes (grids and meshed bodies are).
+// The effective-mass sweeps repeat (ii)-(iii) on the updated configuration (contact_sweeps.hpp,
+// the skeleton of every contact pass). The particles of master surfaces must be the mesh nodes
+// (grids and meshed bodies are).
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/discretization/body_partition.hpp>
+#include <rkpm/contact/contact_pair.hpp>
+#include <rkpm/contact/contact_sweeps.hpp>
+#include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/surface_scratch.hpp>
+#include <rkpm/contact/surface_search.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
 
 namespace rkpm::contact {
-
-// Slave body and master body, as numbered by partition_bodies (the order of their first cells).
-struct body_pair {
-  index_t slave = 0;
-  index_t master = 1;
-};
 
 // One slave particle against one master segment in the last step.
 struct body_contact_pair {
@@ -121,116 +122,109 @@ class body_contact {
     active_.assign(capacity, body_contact_pair{});
     scratch_.resize(n);
     shared_mass_.assign(capacity, 0.0);
+    grid_.assign(pairs_.size(), segment_grid{});
+    for (std::size_t k = 0; k < pairs_.size(); ++k) grid_[k].reserve(static_cast<index_t>(segment_[k].size()));
   }
 
   template <class Enforcement, class Friction>
   void enforce(const contact_body& body, double dt, const Enforcement& enforcement, const Friction& friction,
                std::vector<vec2>& d, std::vector<vec2>& v, contact_result& result) {
     if (pairs_.empty()) return;
-    const shape_table<2>& rows = *body.at_particles;
-    const std::span<const vec2> X = body.reference_position;
-    const std::span<const double> m = body.mass;
-    for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
-
+    pass p{*this, *body.at_particles, body.reference_position, body.mass, dt, d, v};
+    p.refresh();
     // The pairs one after the other (Gauss-Seidel): a second pass, the same two bodies with
     // the roles swapped, sees the gaps the first one closed instead of closing them again.
     active_count_ = 0;
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
-      if (k > 0)
-        for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
+      if (k > 0) p.refresh();
       const index_t first = active_count_;
       detect(k, result);
-      resolve(first, rows, X, m, dt, enforcement, friction, d, v);
+      contact_sweeps(p, first, active_count_, dt, enforcement, friction);  // (ii)-(iii)
     }
   }
 
  private:
-  // (i) for pair k on the current configuration: the segment each slave penetrates.
+  // (i) for pair k on the current configuration: the segment each slave penetrates, among the
+  // candidates of a grid over the master's segments. Its reach, twice the depth, holds every
+  // point a segment catches with room for round-off, so the contacts are those of a search over
+  // all the segments, in the same order.
   void detect(std::size_t k, contact_result& result) {
+    const std::span<const std::array<index_t, 2>> segments = segment_[k];
+    const std::span<const vec2> x = scratch_.x;
+    grid_[k].rebuild(
+        static_cast<index_t>(segments.size()),
+        [&](index_t s) { return std::pair<vec2, vec2>(x[segments[s][0]], x[segments[s][1]]); }, 2.0 * depth_[k]);
     for (index_t J : slave_[k]) {
-      body_contact_pair best;
-      best.slave = -1;
-      for (const auto& [a, b] : segment_[k]) {
-        const vec2 t = scratch_.x[b] - scratch_.x[a];
-        const double L = t.norm();
-        const vec2 r = scratch_.x[J] - scratch_.x[a];
-        if (r.squaredNorm() > (L + depth_[k]) * (L + depth_[k])) continue;
-        const double lambda = r.dot(t) / (L * L);
-        if (lambda < 0.0 || lambda > 1.0) continue;
-        const vec2 normal(t[1] / L, -t[0] / L);
-        const double g = -r.dot(normal);
-        if (g <= 0.0 || g > depth_[k]) continue;
-        if (best.slave < 0 || g < best.gap)
-          best = body_contact_pair{static_cast<index_t>(k), J, a, b, lambda, g, normal, 0.0, vec2::Zero()};
-      }
-      if (best.slave < 0) continue;
-      active_[active_count_++] = best;
-      result.max_penetration = std::max(result.max_penetration, best.gap);
+      const surface_hit hit = penetrated_segment(segments, grid_[k].candidates(x[J]), x, x[J], depth_[k]);
+      if (hit.segment < 0) continue;
+      const auto [a, b] = segments[hit.segment];
+      active_[active_count_++] =
+          body_contact_pair{static_cast<index_t>(k), J, a, b, hit.lambda, hit.gap, hit.normal, 0.0, vec2::Zero()};
+      result.max_penetration = std::max(result.max_penetration, hit.gap);
       ++result.active;
     }
   }
 
-  // (ii)-(iii) for the contacts [first, active_count_), with the enforcement's sweeps (Jacobi:
-  // every contact of the pass on the same configuration).
-  template <class Enforcement, class Friction>
-  void resolve(index_t first, const shape_table<2>& rows, std::span<const vec2> X, std::span<const double> m,
-               double dt, const Enforcement& enforcement, const Friction& friction, std::vector<vec2>& d,
-               std::vector<vec2>& v) {
-    shared_masses(first, rows, m);
-    const auto& x = scratch_.x;
-    const auto& w = scratch_.w;
-    for (int sweep = 0; sweep < enforcement.sweeps && active_count_ > first; ++sweep) {
-      const double omega = sweep == 0 ? 1.0 : enforcement.relaxation;
-      if (sweep > 0)
-        for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
-      for (index_t q = first; q < active_count_; ++q) {
-        body_contact_pair& p = active_[q];
-        const vec2 xc = (1.0 - p.lambda) * x[p.a] + p.lambda * x[p.b];
-        const vec2 vc = (1.0 - p.lambda) * w[p.a] + p.lambda * w[p.b];
-        const double g = sweep == 0 ? p.gap : -(x[p.slave] - xc).dot(p.normal);
-        const double m_sh = shared_mass_[q];
-        // The paper's form (P4) closes the gap with the slave's mass against a rigid master; a
-        // master with mass m_c (its contact point's share) moves too, so the pair's reduced mass.
-        const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
-        const double m_s = m[p.slave] * m_c / (m[p.slave] + m_c);
-        const vec2 rel = w[p.slave] - vc;
-        const vec2 v_t = rel - rel.dot(p.normal) * p.normal;
-        const double fn = std::max(0.0, p.normal_force + omega * enforcement.normal_force(g, dt, m_s, m_sh));
-        const vec2 trial = p.tangential_force - omega * enforcement.stick_mass(m_s, m_sh) * v_t / dt;
-        const vec2 ft = friction.limit(trial, fn);
-        const vec2 df = (fn - p.normal_force) * p.normal + (ft - p.tangential_force);
-        p.normal_force = fn;
-        p.tangential_force = ft;
-        scratch_.spread(rows, p.slave, 1.0, df);
-        scratch_.spread(rows, p.a, -(1.0 - p.lambda), df);
-        scratch_.spread(rows, p.b, -p.lambda, df);
-      }
-      scratch_.apply(m, dt, d, v);
-    }
-  }
+  // One pair's contacts for contact_sweeps (contact_sweeps.hpp).
+  struct pass {
+    body_contact& self;
+    const shape_table<2>& rows;
+    std::span<const vec2> X;
+    std::span<const double> m;
+    double dt;
+    std::vector<vec2>& d;
+    std::vector<vec2>& v;
 
-  // The shared effective mass of each contact of the pass (docs/method.md (61a) with the master's
-  // row): a unit force on contact p closes the gap of contact q by dt^2 sum_I r_qI r_pI / m_I, so
-  //   m_sh,q = 1 / sum_I |r_qI| S_I / m_I,   S_I = sum over the pass's contacts p of |r_pI|,
-  // bounds every pattern of corrections (Gershgorin) and is 1 / sum_I r_qI^2 / m_I, the mass that
-  // closes an isolated gap in one step, when q shares no coefficient with another contact. The
-  // row r_q is +N_I(X_J) on the slave's coefficients and -c_I on the master's.
-  void shared_masses(index_t first, const shape_table<2>& rows, std::span<const double> m) {
-    scratch_.shared_masses(
-        first, active_count_, m,
-        [&](index_t q, auto&& visit) {
-          const body_contact_pair& p = active_[q];
-          for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e) visit(rows.neighbor[e], rows.N[e]);
-          scratch_.visit_point(rows, p.a, p.b, p.lambda, [&](index_t I, double c) { visit(I, -c); });
-        },
-        [&](index_t q, double mass) { shared_mass_[q] = mass; });
-  }
+    void refresh() {
+      for (index_t I : self.surface_) self.scratch_.physical_state(rows, X, I, d, v);
+    }
+    // The shared effective mass of each contact of the pass (docs/method.md (61a) with the
+    // master's row): a unit force on contact p closes the gap of contact q by
+    // dt^2 sum_I r_qI r_pI / m_I, so
+    //   m_sh,q = 1 / sum_I |r_qI| S_I / m_I,   S_I = sum over the pass's contacts p of |r_pI|,
+    // bounds every pattern of corrections (Gershgorin) and is 1 / sum_I r_qI^2 / m_I, the mass
+    // that closes an isolated gap in one step, when q shares no coefficient with another
+    // contact. The row r_q is +N_I(X_J) on the slave's coefficients and -c_I on the master's.
+    void shared_masses(index_t first, index_t end) {
+      self.scratch_.shared_masses(
+          first, end, m,
+          [&](index_t q, auto&& visit) {
+            const body_contact_pair& p = self.active_[q];
+            for (index_t e = rows.offset[p.slave]; e < rows.offset[p.slave + 1]; ++e)
+              visit(rows.neighbor[e], rows.N[e]);
+            self.scratch_.visit_point(rows, p.a, p.b, p.lambda, [&](index_t I, double c) { visit(I, -c); });
+          },
+          [&](index_t q, double mass) { self.shared_mass_[q] = mass; });
+    }
+    body_contact_pair& contact(index_t q) { return self.active_[q]; }
+    contact_state state(index_t q, int sweep) const {
+      const body_contact_pair& p = self.active_[q];
+      const auto& x = self.scratch_.x;
+      const auto& w = self.scratch_.w;
+      const vec2 xc = (1.0 - p.lambda) * x[p.a] + p.lambda * x[p.b];
+      const vec2 vc = (1.0 - p.lambda) * w[p.a] + p.lambda * w[p.b];
+      const double g = sweep == 0 ? p.gap : -(x[p.slave] - xc).dot(p.normal);
+      // The paper's form (P4) closes the gap with the slave's mass against a rigid master; a
+      // master with mass m_c (its contact point's share) moves too, so the pair's reduced mass.
+      const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
+      const double m_s = m[p.slave] * m_c / (m[p.slave] + m_c);
+      return {g, vec2(w[p.slave] - vc), p.normal, m_s, self.shared_mass_[q]};
+    }
+    void spread(index_t q, const vec2& df) {
+      const body_contact_pair& p = self.active_[q];
+      self.scratch_.spread(rows, p.slave, 1.0, df);
+      self.scratch_.spread(rows, p.a, -(1.0 - p.lambda), df);
+      self.scratch_.spread(rows, p.b, -p.lambda, df);
+    }
+    void apply() { self.scratch_.apply(m, dt, d, v); }
+  };
 
   std::vector<body_pair> pairs_;
   body_partition partition_;
   std::vector<std::vector<std::array<index_t, 2>>> segment_;  // per pair: master segments (particles)
   std::vector<std::vector<index_t>> slave_;                   // per pair: slave particles
   std::vector<double> depth_;                                 // per pair
+  std::vector<segment_grid> grid_;                            // per pair: over its master segments
   std::vector<index_t> surface_;  // particles whose physical state the detection reads
 
   // Scratch, sized in setup().

@@ -34,6 +34,15 @@ inline void check_contact_inputs(const contact_body& body, const contact_slaves&
       fail("contact setup: slave {} is particle {}, outside 0..{}", j, slaves.particle[j], np - 1);
   for (index_t I : table.neighbor)
     if (I < 0 || I >= np) fail("contact setup: the slave table names particle {}, outside 0..{}", I, np - 1);
+  // A slave no shape function reaches could not be moved: 1 / m_eff (61) would be zero.
+  for (index_t j = 0; j < ns; ++j) {
+    double s = 0.0;
+    for (index_t e = table.offset[j]; e < table.offset[j + 1]; ++e)
+      s += table.N[e] * table.N[e] / body.mass[table.neighbor[e]];
+    if (!(s > 0.0))
+      fail("contact setup: slave {} (particle {}) has no shape function support; check the slave table", j,
+           slaves.particle[j]);
+  }
 }
 
 // A tool may touch the body at t = 0 but not start inside it.

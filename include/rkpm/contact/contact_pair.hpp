@@ -1,6 +1,7 @@
 #pragma once
 // contact_pair: one slave particle in contact with one tool during the last step, as
-// particle_to_segment reports it (docs/method.md section 6).
+// particle_to_segment reports it (docs/method.md section 6); body_pair: two deformable bodies
+// that may touch (body_contact.hpp, section 6.9).
 
 #include <rkpm/core/types.hpp>
 
@@ -16,6 +17,12 @@ struct contact_pair {
   double normal_force = 0.0;        // f_n >= 0 along normal
   vec2 tangential_force = vec2::Zero();
   vec2 force() const { return normal_force * normal + tangential_force; }  // f_J on the particle
+};
+
+// Slave body and master body, as numbered by partition_bodies (the order of their first cells).
+struct body_pair {
+  index_t slave = 0;
+  index_t master = 1;
 };
 
 }  // namespace rkpm::contact

@@ -3,24 +3,28 @@
 // docs/method.md section 6.9). Particle-to-segment contact checks the body's particles against
 // the tool's segments, so a sharp tool corner can slip between two surface particles into the
 // body. This pass checks each tool vertex P (at its position at t_n+1) against the boundary chains
-// of every body (discretization/boundary_chains.hpp): a vertex behind segment a-b of a body,
+// of every body (discretization/boundary_chains.hpp): a vertex behind segment a-b of a body
+// (surface_search.hpp, the nearest of all the segments),
 //   lambda = (P - x_a) . t / |t|^2 in [0, 1],   g = -(P - x_a) . n in (0, depth],
 // pushes the body's contact point x_c = (1 - lambda) x_a + lambda x_b out of the tool, along -n,
-// by the forces of (56)-(58) with the contact point as the slave (its velocity against the
-// tool's, its mass the master side's: m_c of (78) for the paper's form, the shared effective
-// mass of the rows c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b) otherwise). The force goes to
-// the body's coefficients through c_I and its reaction onto the tool. The tool is rigid: only the
-// body moves.
+// by the forces of (56)-(58) (contact_kernel.hpp, in the sweeps of contact_sweeps.hpp) with the
+// contact point as the slave (its velocity against the tool's, its mass the master side's: m_c
+// of (78) for the paper's form, the shared effective mass of the rows
+// c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b) otherwise). The force goes to the body's
+// coefficients through c_I and its reaction onto the tool. The tool is rigid: only the body moves.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <ranges>
 #include <span>
 #include <vector>
 
 #include <rkpm/concepts/contact.hpp>
+#include <rkpm/contact/contact_sweeps.hpp>
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/contact/surface_scratch.hpp>
+#include <rkpm/contact/surface_search.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
 
@@ -64,46 +68,12 @@ class tool_vertex_contact {
                std::span<const vec2> v_tool, double dt, const Enforcement& enforcement, const Friction& friction,
                std::vector<vec2>& d, std::vector<vec2>& v, contact_result& result, std::span<vec2> reactions) {
     if (!enabled_) return;
-    const shape_table<2>& rows = *body.at_particles;
-    const std::span<const vec2> X = body.reference_position;
-    const std::span<const double> m = body.mass;
-    for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
+    pass p{*this, *body.at_particles, body.reference_position, body.mass, v_tool, dt, d, v};
+    p.refresh();
     count_ = 0;
     for (std::size_t k = 0; k < tools.size(); ++k)
       for (const vec2& P0 : tools[k].reference_vertices()) detect(static_cast<index_t>(k), P0 + u_now[k], result);
-    if (count_ == 0) return;
-    scratch_.shared_masses(
-        0, count_, m,
-        [&](index_t q, auto&& visit) {
-          scratch_.visit_point(rows, contact_[q].a, contact_[q].b, contact_[q].lambda, visit);
-        },
-        [&](index_t q, double mass) { contact_[q].shared_mass = mass; });
-    const auto& x = scratch_.x;
-    const auto& w = scratch_.w;
-    for (int sweep = 0; sweep < enforcement.sweeps; ++sweep) {
-      const double omega = sweep == 0 ? 1.0 : enforcement.relaxation;
-      if (sweep > 0)
-        for (index_t I : surface_) scratch_.physical_state(rows, X, I, d, v);
-      for (index_t q = 0; q < count_; ++q) {
-        vertex_contact& p = contact_[q];
-        const vec2 xc = (1.0 - p.lambda) * x[p.a] + p.lambda * x[p.b];
-        const vec2 vc = (1.0 - p.lambda) * w[p.a] + p.lambda * w[p.b];
-        const vec2 push = -p.normal;  // out of the tool, into the body, as a tool's normal (section 6.2)
-        const double g = sweep == 0 ? p.gap : (p.vertex - xc).dot(push);
-        const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
-        const vec2 rel = vc - v_tool[p.tool];
-        const vec2 v_t = rel - rel.dot(push) * push;
-        const double fn = std::max(0.0, p.normal_force + omega * enforcement.normal_force(g, dt, m_c, p.shared_mass));
-        const vec2 trial = p.tangential_force - omega * enforcement.stick_mass(m_c, p.shared_mass) * v_t / dt;
-        const vec2 ft = friction.limit(trial, fn);
-        const vec2 df = (fn - p.normal_force) * push + (ft - p.tangential_force);
-        p.normal_force = fn;
-        p.tangential_force = ft;
-        scratch_.spread(rows, p.a, 1.0 - p.lambda, df);
-        scratch_.spread(rows, p.b, p.lambda, df);
-      }
-      scratch_.apply(m, dt, d, v);
-    }
+    contact_sweeps(p, 0, count_, dt, enforcement, friction);
     for (index_t q = 0; q < count_; ++q)
       reactions[contact_[q].tool] -= contact_[q].normal_force * -contact_[q].normal + contact_[q].tangential_force;
   }
@@ -119,26 +89,60 @@ class tool_vertex_contact {
     vec2 tangential_force = vec2::Zero();
   };
 
+  // Every surface segment is a candidate: the tools have few vertices.
   void detect(index_t tool, const vec2& P, contact_result& result) {
-    vertex_contact best;
-    best.a = -1;
-    for (const auto& [a, b] : segment_) {
-      const vec2 t = scratch_.x[b] - scratch_.x[a];
-      const double L = t.norm();
-      const vec2 r = P - scratch_.x[a];
-      if (r.squaredNorm() > (L + depth_) * (L + depth_)) continue;
-      const double lambda = r.dot(t) / (L * L);
-      if (lambda < 0.0 || lambda > 1.0) continue;
-      const vec2 normal(t[1] / L, -t[0] / L);
-      const double g = -r.dot(normal);
-      if (g <= 0.0 || g > depth_) continue;
-      if (best.a < 0 || g < best.gap) best = vertex_contact{tool, P, a, b, lambda, g, normal, 0.0, 0.0, vec2::Zero()};
-    }
-    if (best.a < 0 || count_ >= static_cast<index_t>(contact_.size())) return;
-    contact_[count_++] = best;
-    result.max_penetration = std::max(result.max_penetration, best.gap);
+    const auto all = std::views::iota(index_t{0}, static_cast<index_t>(segment_.size()));
+    const surface_hit hit = penetrated_segment(segment_, all, scratch_.x, P, depth_);
+    if (hit.segment < 0 || count_ >= static_cast<index_t>(contact_.size())) return;
+    const auto [a, b] = segment_[hit.segment];
+    contact_[count_++] = vertex_contact{tool, P, a, b, hit.lambda, hit.gap, hit.normal, 0.0, 0.0, vec2::Zero()};
+    result.max_penetration = std::max(result.max_penetration, hit.gap);
     ++result.active;
   }
+
+  // The vertices' contacts for contact_sweeps (contact_sweeps.hpp): the slave side is the
+  // body's contact point, pushed along -n, out of the tool (as a tool's normal, section 6.2).
+  struct pass {
+    tool_vertex_contact& self;
+    const shape_table<2>& rows;
+    std::span<const vec2> X;
+    std::span<const double> m;
+    std::span<const vec2> v_tool;
+    double dt;
+    std::vector<vec2>& d;
+    std::vector<vec2>& v;
+
+    void refresh() {
+      for (index_t I : self.surface_) self.scratch_.physical_state(rows, X, I, d, v);
+    }
+    void shared_masses(index_t first, index_t end) {
+      self.scratch_.shared_masses(
+          first, end, m,
+          [&](index_t q, auto&& visit) {
+            const vertex_contact& p = self.contact_[q];
+            self.scratch_.visit_point(rows, p.a, p.b, p.lambda, visit);
+          },
+          [&](index_t q, double mass) { self.contact_[q].shared_mass = mass; });
+    }
+    vertex_contact& contact(index_t q) { return self.contact_[q]; }
+    contact_state state(index_t q, int sweep) const {
+      const vertex_contact& p = self.contact_[q];
+      const auto& x = self.scratch_.x;
+      const auto& w = self.scratch_.w;
+      const vec2 xc = (1.0 - p.lambda) * x[p.a] + p.lambda * x[p.b];
+      const vec2 vc = (1.0 - p.lambda) * w[p.a] + p.lambda * w[p.b];
+      const vec2 push = -p.normal;
+      const double g = sweep == 0 ? p.gap : (p.vertex - xc).dot(push);
+      const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
+      return {g, vec2(vc - v_tool[p.tool]), push, m_c, p.shared_mass};
+    }
+    void spread(index_t q, const vec2& df) {
+      const vertex_contact& p = self.contact_[q];
+      self.scratch_.spread(rows, p.a, 1.0 - p.lambda, df);
+      self.scratch_.spread(rows, p.b, p.lambda, df);
+    }
+    void apply() { self.scratch_.apply(m, dt, d, v); }
+  };
 
   bool enabled_ = false;
   std::vector<std::array<index_t, 2>> segment_;  // every body's surface segments (particles)

@@ -33,11 +33,11 @@ void add_axis_constraints(const discrete_model& m, double relative_tolerance,
   }
 }
 
-// The slaves of a body with tools: the given particles, or, when none are given, the boundary
+// The slaves of a body with contact (tools or body pairs): the given particles, or, when none are given, the boundary
 // nodes of the mesh if the mesh nodes are the particles (make_grid_mesh + make_grid_particles).
 // With the rows N_I(X_J) of each slave J.
-inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t> slaves, bool has_tools) {
-  if (slaves.empty() && has_tools) {
+inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t> slaves, bool with_contact) {
+  if (slaves.empty() && with_contact) {
     const auto& mesh = m.mesh;
     const bool nodes_are_particles =
         static_cast<index_t>(mesh.node.size()) == m.particle_count() &&

@@ -26,11 +26,6 @@ namespace rkpm {
 
 template <Geometry G, Material M, Contact Ct>
 io::checkpoint_identity checkpoint_identity_of(const explicit_solver<G, M, Ct>& s, std::string_view configuration) {
-  static_assert(requires(const Ct& c, Ct& m, io::checkpoint_writer& w, io::checkpoint_reader& r) {
-    c.save(w);
-    m.load(r);
-  }, "checkpoints need the contact policy's state: give it save(io::checkpoint_writer&) const and "
-     "load(io::checkpoint_reader&) (contact/particle_to_segment.hpp shows how)");
   return {std::string(configuration), s.model().particle_count(), s.model().point_count(),
           static_cast<index_t>(s.slave_particles().size()), static_cast<index_t>(std::ranges::size(s.contact().tools()))};
 }

@@ -61,7 +61,7 @@ class explicit_solver {
     add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
     constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
     d_start_.resize(constraints_.touched().size());
-    const contact_slaves slaves = select_slaves(model_, std::move(prob.slave_particles), has_tools());
+    const contact_slaves slaves = select_slaves(model_, std::move(prob.slave_particles), has_contact(contact_));
     slave_ = slaves.particle;
     contact_.setup(body(), slaves);
     if (prob.initial_particle_velocity)
@@ -89,14 +89,14 @@ class explicit_solver {
     // a(n) is spent once v(n+1/2) is predicted, until a(n+1) below: with contact it holds the
     // velocities before the contact corrections, for their work.
     std::vector<vec2>& v_before = a_;
-    const bool tools = has_tools();
+    const bool with_contact = has_contact(contact_);
 #pragma omp parallel for schedule(static)
     for (index_t I = 0; I < n; ++I) {
       v_[I] += 0.5 * dt * a_[I];
       d_[I] += dt * v_[I];
-      if (tools) v_before[I] = v_[I];
+      if (with_contact) v_before[I] = v_[I];
     }
-    if (tools) {
+    if (with_contact) {
       last_contact_ = contact_.enforce(body(), time_ + dt, dt, d_, v_);
       energy_.contact += sums_([&](index_t I, block_sums<2>::sums& s) {
         s[0] += impulse_work_at(mass_[I], v_[I], v_before[I], v_half_prev_[I]);
@@ -242,13 +242,6 @@ class explicit_solver {
     a.part(s.points_);  // material states, then the time-step controller and the contact
     a.part(s.clock_);
     a.part(s.contact_);
-  }
-
-  // Rigid tools, or pairs of deformable bodies (contact/body_contact.hpp), to enforce contact with.
-  bool has_tools() const {
-    if constexpr (requires { contact_.body_pairs(); })
-      if (!contact_.body_pairs().empty()) return true;
-    return !std::ranges::empty(contact_.tools());
   }
 
   vec2 external_force(index_t I) const { return mass_[I] * body_force_; }

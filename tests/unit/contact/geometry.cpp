@@ -1,17 +1,23 @@
 // Rigid tool geometry and the segment search: normals, penetration, max depth, the choice of
 // segment at convex and concave corners, sliding across a vertex, and the grid search against a
-// brute-force search over all segments. The wheel punch of docs/method.md section 10.3 (in mm; the
-// geometry is scale-free) has both kinds of corner.
+// brute-force search over all segments, for a tool and for moving surfaces (body pairs). The
+// wheel punch of docs/method.md section 10.3 (in mm; the geometry is scale-free) has both kinds
+// of corner.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <ranges>
+#include <utility>
 #include <vector>
 
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/segment_search.hpp>
+#include <rkpm/contact/surface_search.hpp>
 
 using namespace rkpm;
 using namespace rkpm::contact;
@@ -180,4 +186,53 @@ TEST_CASE("tool motion: fixed, constant velocity, prescribed") {
   CHECK(shaken.displacement(1.0).x() == doctest::Approx(std::sin(1.0)));
   CHECK(shaken.velocity(1.0).x() == doctest::Approx(std::cos(1.0)));
   CHECK(shaken.vertices(1.0)[0].isApprox(vec2(std::sin(1.0), 38)));
+}
+
+TEST_CASE("a rebuilt grid over moving segments finds what a search over all of them finds") {
+  // A zigzag chain of short segments (a deformed body's surface), moved and rebuilt several
+  // times within the buffers of one reserve(), queried at points near it, as body_contact.hpp
+  // does: penetrated_segment over the grid's candidates against all the segments.
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> step(0.2, 1.5), turn(-0.5, 0.5), wobble(-0.05, 0.05);
+  const int n = 80;
+  std::vector<vec2> base(n);
+  double angle = 0;
+  base[0] = vec2::Zero();
+  for (int i = 1; i < n; ++i) {
+    angle += turn(rng);
+    base[i] = base[i - 1] + step(rng) * vec2(std::cos(angle), std::sin(angle));
+  }
+  std::vector<std::array<index_t, 2>> segments;
+  for (index_t i = 0; i + 1 < n; ++i) segments.push_back({i, i + 1});
+  segment_grid grid;
+  grid.reserve(n);
+  std::vector<vec2> x(n);
+  int caught = 0;
+  for (int config = 0; config < 4; ++config) {
+    for (int i = 0; i < n; ++i) x[i] = 1.5 * config * vec2(1, -1) + base[i] + vec2(wobble(rng), wobble(rng));
+    double shortest = INFINITY;
+    vec2 lo = x[0], hi = x[0];
+    for (const auto& [a, b] : segments) {
+      shortest = std::min(shortest, (x[b] - x[a]).norm());
+      lo = lo.cwiseMin(x[a]);
+      hi = hi.cwiseMax(x[a]);
+    }
+    const double depth = 0.5 * shortest;
+    grid.rebuild(
+        n - 1, [&](index_t s) { return std::pair<vec2, vec2>(x[segments[s][0]], x[segments[s][1]]); }, 2.0 * depth);
+    REQUIRE(grid.cells() > 1);
+    std::uniform_real_distribution<double> ux(lo.x() - 1, hi.x() + 1), uy(lo.y() - 1, hi.y() + 1);
+    const auto all = std::views::iota(index_t{0}, static_cast<index_t>(segments.size()));
+    for (int k = 0; k < 20000; ++k) {
+      const vec2 P(ux(rng), uy(rng));
+      const auto cand = grid.candidates(P);
+      CHECK(std::is_sorted(cand.begin(), cand.end()));
+      const surface_hit a = penetrated_segment(segments, cand, x, P, depth);
+      const surface_hit b = penetrated_segment(segments, all, x, P, depth);
+      CHECK(a.segment == b.segment);
+      CHECK(a.gap == b.gap);
+      caught += b.segment >= 0;
+    }
+  }
+  CHECK(caught > 100);  // the random points really exercise contact
 }

@@ -1,0 +1,46 @@
+#pragma once
+// penetrated_segment: which segment of a deformable surface a point is behind (docs/method.md
+// section 6.9), for the body pairs' slaves (body_contact.hpp) and the tools' vertices
+// (tool_vertex_contact.hpp). Segment a-b of the surface, at the particles' physical positions
+// x, catches the point P if
+//   lambda = (P - x_a) . t / |t|^2 in [0, 1],   g = -(P - x_a) . n in (0, depth],
+// with t = x_b - x_a and n = (t_y, -t_x) / |t| the surface's outward normal (the chains run with
+// the body on their left). Of the candidates that catch P, the one with the smallest g, the
+// first of them in the candidates' order if several tie.
+
+#include <array>
+#include <span>
+
+#include <rkpm/core/types.hpp>
+
+namespace rkpm::contact {
+
+struct surface_hit {
+  index_t segment = -1;  // index into the segments; -1: none catches the point
+  double lambda = 0.0;   // the point's projection (1 - lambda) x_a + lambda x_b
+  double gap = 0.0;      // g
+  vec2 normal = vec2::Zero();
+};
+
+// candidates: indices into segments (e.g. segment_grid::candidates, or all of them).
+template <class Candidates>
+surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments, const Candidates& candidates,
+                               std::span<const vec2> x, const vec2& P, double depth) {
+  surface_hit best;
+  for (const index_t s : candidates) {
+    const auto [a, b] = segments[s];
+    const vec2 t = x[b] - x[a];
+    const double L = t.norm();
+    const vec2 r = P - x[a];
+    if (r.squaredNorm() > (L + depth) * (L + depth)) continue;
+    const double lambda = r.dot(t) / (L * L);
+    if (lambda < 0.0 || lambda > 1.0) continue;
+    const vec2 normal(t[1] / L, -t[0] / L);
+    const double g = -r.dot(normal);
+    if (g <= 0.0 || g > depth) continue;
+    if (best.segment < 0 || g < best.gap) best = surface_hit{s, lambda, g, normal};
+  }
+  return best;
+}
+
+}  // namespace rkpm::contact
