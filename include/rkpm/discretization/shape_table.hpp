@@ -14,10 +14,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <string>
 #include <vector>
 
 #include <rkpm/approximation/rk_shape_functions.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/discretization/neighbor_search.hpp>
 
 namespace rkpm {
@@ -104,25 +104,11 @@ struct row_scratch {
 
 namespace detail {
 
-// row(p, scratch) for every point p in parallel, each thread with its own scratch; the first
-// error a row throws is thrown again after the loop (an exception may not leave a parallel region).
+// row(p, scratch) for every point p in parallel, each thread with its own scratch, 64 rows at
+// a time (rows differ in cost); the first error a row throws is thrown again after the loop.
 template <int Dim, class Row>
 void for_each_point_row(index_t points, Row&& row) {
-  std::string first_error;
-#pragma omp parallel
-  {
-    row_scratch<Dim> scratch;
-#pragma omp for schedule(dynamic, 64)
-    for (index_t p = 0; p < points; ++p) {
-      try {
-        row(p, scratch);
-      } catch (const error& e) {
-#pragma omp critical(rkpm_shape_table_error)
-        if (first_error.empty()) first_error = e.what();
-      }
-    }
-  }
-  if (!first_error.empty()) throw error(first_error);
+  exec::parallel_for_each_row<row_scratch<Dim>>(points, 64, row);
 }
 
 }  // namespace detail
