@@ -118,12 +118,15 @@ TEST_CASE("results do not depend on the thread count") {
     o.end_time = 1e-4;  // the steps are taken one by one; this keeps the step budget
     o.time_step_update_interval = 10;  // power iterations (a second force loop) among the steps
     auto s = make_solver<axi_cfg>(problem(), o);
-    const point_traversal& t = s.model().traversal;
-    REQUIRE(t.tiles() >= 30);
-    REQUIRE(t.colours() >= 3);
-    index_t fullest = 0;
-    for (index_t c = 0; c < t.serial_from; ++c) fullest = std::max(fullest, t.colour_start[c + 1] - t.colour_start[c]);
-    REQUIRE(fullest >= 4);  // a colour's tiles are shared out between the threads
+    if (threads == 1) {
+      // Checked, not required: with a broken colouring the comparison below is to fail too.
+      const point_traversal& t = s.model().traversal;
+      CHECK(t.tiles() >= 30);
+      CHECK(t.colours() >= 3);
+      index_t fullest = 0;
+      for (index_t c = 0; c < t.serial_from; ++c) fullest = std::max(fullest, t.colour_start[c + 1] - t.colour_start[c]);
+      CHECK(fullest >= 4);  // a colour's tiles are shared out between the threads
+    }
     for (int k = 0; k < 40; ++k) s.step();
     CHECK(s.last_contact().active > 0);
     const energy_balance& e = s.energy();
@@ -131,12 +134,16 @@ TEST_CASE("results do not depend on the thread count") {
                                                    e.constraint, s.min_stretch(), s.time_step()}};
   };
   const auto [d1, e1] = run(1);
-  const auto [d2, e2] = run(2);
   REQUIRE(!d1.empty());
-  CHECK(d1 == d2);
-  CHECK(e1 == e2);
   CHECK(e1[1] > 0.0);  // internal work
   CHECK(e1[4] != 0.0);  // contact work
+  // Three runs on two threads: a race between them (the broken colouring) shows in one run only
+  // when both threads share out a colour's tiles, which a loaded machine does not always allow.
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    const auto [d2, e2] = run(2);
+    CHECK(d1 == d2);
+    CHECK(e1 == e2);
+  }
 }
 
 #endif
