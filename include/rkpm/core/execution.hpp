@@ -15,7 +15,7 @@
 // An MPI backend plugs in here: exchange() sends owned values to the processes that hold them
 // as ghosts and sums ghosts' scattered forces back into their owners, and the totals of
 // block_sums, max_over and min_over are combined over the processes (in rank order, so that
-// they stay independent of the process count's scheduling).
+// the totals do not depend on the message timing).
 
 #include <algorithm>
 #include <limits>

@@ -71,15 +71,15 @@ class explicit_solver {
 
     compute_internal_force();
     for (index_t I = 0; I < n; ++I) a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
-    t_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
-    t_.check_budget(options_);
+    timeline_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
+    timeline_.check_budget(options_);
     energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
     energy_.record();
   }
 
   // ---- stepping ----------------------------------------------------------------------
   void step() {
-    const double dt = t_.begin_step();
+    const double dt = timeline_.begin_step();
     const index_range owned = model_.own.particles;
     const std::vector<index_t>& constrained = constraints_.touched();
     for (std::size_t k = 0; k < constrained.size(); ++k) d_start_[k] = d_[constrained[k]];
@@ -93,9 +93,9 @@ class explicit_solver {
       if (tools) v_before[I] = v_[I];
     });
     exec::exchange(exchange_point::after_predictor, model_.own, d_, v_);
-    if (tools) energy_.contact += contact_.enforce(body(), t_.time + dt, dt, d_, v_, v_before, v_half_prev_, sums_);
+    if (tools) energy_.contact += contact_.enforce(body(), timeline_.time + dt, dt, d_, v_, v_before, v_half_prev_, sums_);
     if (constraints_.size() > 0) {
-      energy_.constraint += constraints_.apply_with_work(t_.time + 0.5 * dt, v_, mass_, v_half_prev_);
+      energy_.constraint += constraints_.apply_with_work(timeline_.time + 0.5 * dt, v_, mass_, v_half_prev_);
       for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
     }
     exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
@@ -122,14 +122,14 @@ class explicit_solver {
     energy_.external += external;
     energy_.kinetic = kinetic;
     if (constrained_end) {
-      energy_.constraint += constraints_.apply_with_work(t_.time + dt, v_, mass_, v_half_prev_);
+      energy_.constraint += constraints_.apply_with_work(timeline_.time + dt, v_, mass_, v_half_prev_);
       energy_.kinetic = kinetic_energy();
     }
-    t_.finish_step();
+    timeline_.finish_step();
     energy_.record();
-    if (t_.steps % options_.time_step_update_interval == 0)
-      t_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
-                            points_.min_stretch(), options_, t_.time, t_.steps);
+    if (timeline_.steps % options_.time_step_update_interval == 0)
+      timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
+                            points_.min_stretch(), options_, timeline_.time, timeline_.steps);
   }
 
   // Steps to options.end_time, calling observe(*this) at the start, every `every` steps
@@ -137,10 +137,10 @@ class explicit_solver {
   template <class Observer>
   void run(Observer&& observe, index_t every = 0) {
     observe(*this);
-    while (t_.before(options_.end_time)) {
-      t_.approach_end(options_);
+    while (timeline_.before(options_.end_time)) {
+      timeline_.approach_end(options_);
       step();
-      if (every > 0 && t_.steps % every == 0 && t_.before(options_.end_time)) observe(*this);
+      if (every > 0 && timeline_.steps % every == 0 && timeline_.before(options_.end_time)) observe(*this);
     }
     observe(*this);
   }
@@ -149,17 +149,17 @@ class explicit_solver {
   // whole only between steps: between_steps() is false after an error thrown inside step().
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) { sections(r, *this); }
-  bool between_steps() const { return t_.between_steps(); }
+  bool between_steps() const { return timeline_.between_steps(); }
 
   // ---- results -----------------------------------------------------------------------
-  double time() const { return t_.time; }
-  index_t steps() const { return t_.steps; }
-  double time_step() const { return t_.dt; }
-  double min_time_step() const { return t_.min_step(); }
-  double max_time_step() const { return t_.max_step(); }
+  double time() const { return timeline_.time; }
+  index_t steps() const { return timeline_.steps; }
+  double time_step() const { return timeline_.dt; }
+  double min_time_step() const { return timeline_.min_step(); }
+  double max_time_step() const { return timeline_.max_step(); }
   double reference_stable_step() const { return clock_.reference_stable_step(); }
   // Steps to the end time at the current step size (the progress line's estimate).
-  double estimated_steps_left() const { return std::max(0.0, options_.end_time - t_.time) / t_.dt; }
+  double estimated_steps_left() const { return std::max(0.0, options_.end_time - timeline_.time) / timeline_.dt; }
   // Smallest support stretch over the quadrature points at the last force evaluation.
   double min_stretch() const { return points_.min_stretch(); }
   const energy_balance& energy() const { return energy_; }
@@ -207,7 +207,7 @@ class explicit_solver {
   }
 
  private:
-  // Not saved: scratch of step() (d_start_, t_.taking) and the set-up.
+  // Not saved: scratch of step() (d_start_, timeline_.taking) and the set-up.
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
     for (auto [name, field] : {std::pair{"solver.d", &s.d_}, {"solver.v", &s.v_}, {"solver.a", &s.a_},
@@ -216,7 +216,7 @@ class explicit_solver {
     a.value("solver.energy", s.energy_);
     a.value("solver.last_contact", s.contact_.last);
     a.value("solver.max_penetration", s.contact_.max_penetration);
-    a.part(s.t_);       // solver.time, dt, dt_min, dt_max, steps
+    a.part(s.timeline_);       // solver.time, dt, dt_min, dt_max, steps
     a.part(s.points_);  // material states, then the time-step controller and the contact
     a.part(s.clock_);
     a.part(s.contact_.policy);
@@ -226,7 +226,7 @@ class explicit_solver {
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).
   void compute_internal_force() {
-    points_.internal_force(model_, materials_, d_, f_int_, {t_.steps + !t_.between_steps(), t_.time + t_.taking});
+    points_.internal_force(model_, materials_, d_, f_int_, {timeline_.current_step(), timeline_.current_time()});
     exec::exchange(exchange_point::after_scatter, model_.own, f_int_);
     energy_.plastic = points_.plastic_work();
   }
@@ -244,7 +244,7 @@ class explicit_solver {
   time_step_controller<G> clock_;
   constraint_projector constraints_;
   energy_balance energy_;
-  step_timeline t_;
+  step_timeline timeline_;
 };
 
 }  // namespace rkpm

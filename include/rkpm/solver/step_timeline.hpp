@@ -22,6 +22,9 @@ struct step_timeline {
   index_t steps = 0;
 
   bool between_steps() const { return taking == 0.0; }
+  // The number and end time of the step being taken; between steps, of the last one taken.
+  index_t current_step() const { return steps + !between_steps(); }
+  double current_time() const { return time + taking; }
   bool before(double end) const { return time < end * (1.0 - 1e-12); }
   // The smallest and largest step taken (before the first step: the next step's size).
   double min_step() const { return steps ? dt_min : dt; }
