@@ -27,7 +27,7 @@ namespace rkpm::test {
 // each step crosses several barriers that spin-wait; on a loaded 2-core machine a spinning
 // thread waits for its descheduled partner and a step costs ~10 ms instead of ~0.1 ms. These
 // tests therefore run serially; thread-count independence has its own test
-// (tests/unit/solver/speed_and_determinism.cpp).
+// (tests/unit/solver/step_allocations_and_threads.cpp).
 inline void run_serially() {
 #ifdef _OPENMP
   omp_set_num_threads(1);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
@@ -33,6 +34,13 @@ struct point_traversal {
   // The tile of point q: a point's tile is visited by one thread, its points in order, so
   // per-tile sums (point_materials' reductions) are race-free and in a fixed order.
   index_t tile_of(index_t q) const { return q / tile_points; }
+  // body(first, last) for the points first .. last-1 of every tile, colour by colour, the tiles
+  // of a colour below serial_from in parallel (exec::for_each_coloured, core/execution.hpp).
+  template <class Body>
+  void for_each_tile(Body&& body) const {
+    exec::for_each_coloured(colour_start, serial_from,
+                            [&](index_t k) { body(tile_start[tile[k]], tile_start[tile[k] + 1]); });
+  }
 };
 
 // Points per tile: large enough that a tile's particles are mostly its own (few colours), small

@@ -7,17 +7,15 @@
 //   N         #entries N_I(x_p)
 //   grad      #entries grad N_I(x_p)
 //             (empty in a table built with values_only)
-// transpose() lists, for each particle, the entries that touch it (the solver's force loop
-// does not need it: it scatters point by point, solver/point_forces.hpp).
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <string>
 #include <vector>
 
 #include <rkpm/approximation/rk_shape_functions.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/discretization/neighbor_search.hpp>
 
 namespace rkpm {
@@ -69,31 +67,6 @@ std::vector<stored_index> compact_columns(shape_table<Dim>& table, index_t parti
   return particle;
 }
 
-// Per particle I: the entries e of a shape_table with neighbor[e] == I, and their points.
-struct shape_table_transpose {
-  std::vector<index_t> offset{0};  // #particles+1
-  std::vector<index_t> entry;      // #entries, index_t into the forward table
-  std::vector<index_t> point;      // #entries, the evaluation point of that entry
-};
-
-template <int Dim>
-shape_table_transpose transpose(const shape_table<Dim>& table, index_t particles) {
-  shape_table_transpose t;
-  t.offset.assign(particles + 1, 0);
-  for (index_t I : table.neighbor) ++t.offset[I + 1];
-  for (index_t I = 0; I < particles; ++I) t.offset[I + 1] += t.offset[I];
-  t.entry.resize(table.entries());
-  t.point.resize(table.entries());
-  std::vector<index_t> fill(t.offset.begin(), t.offset.end() - 1);
-  for (index_t p = 0; p < table.points(); ++p)
-    for (index_t e = table.offset[p]; e < table.offset[p + 1]; ++e) {
-      const index_t slot = fill[table.neighbor[e]]++;
-      t.entry[slot] = e;
-      t.point[slot] = p;
-    }
-  return t;
-}
-
 // One row's scratch: the neighbours found and their RK values and gradients.
 template <int Dim>
 struct row_scratch {
@@ -104,25 +77,11 @@ struct row_scratch {
 
 namespace detail {
 
-// row(p, scratch) for every point p in parallel, each thread with its own scratch; the first
-// error a row throws is thrown again after the loop (an exception may not leave a parallel region).
+// row(p, scratch) for every point p in parallel, each thread with its own scratch, 64 rows at
+// a time (rows differ in cost); the first error a row throws is thrown again after the loop.
 template <int Dim, class Row>
 void for_each_point_row(index_t points, Row&& row) {
-  std::string first_error;
-#pragma omp parallel
-  {
-    row_scratch<Dim> scratch;
-#pragma omp for schedule(dynamic, 64)
-    for (index_t p = 0; p < points; ++p) {
-      try {
-        row(p, scratch);
-      } catch (const error& e) {
-#pragma omp critical(rkpm_shape_table_error)
-        if (first_error.empty()) first_error = e.what();
-      }
-    }
-  }
-  if (!first_error.empty()) throw error(first_error);
+  exec::parallel_for_each_row<row_scratch<Dim>>(points, 64, row);
 }
 
 }  // namespace detail

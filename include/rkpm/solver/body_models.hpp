@@ -101,6 +101,7 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
     detail::append_row(models[b].at_particles, local[I], parts[b].particle, joined.at_particles);
   }
   joined.traversal = make_point_traversal(joined.at_points, n);
+  joined.own = ownership::single_process(n, joined.point_count());
   joined.particles = std::move(particles);
   joined.mesh = std::move(mesh);
   return joined;

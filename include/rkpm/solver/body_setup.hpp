@@ -2,6 +2,7 @@
 // What the solver derives from the problem once, before the first step:
 //   axis_constraints   u_r = 0 on the axis of an axisymmetric body (docs/method.md section 5.7)
 //   select_slaves      the contact slaves and their shape-function rows (docs/method.md section 6)
+//   initial_velocities the coefficient velocities at t = 0 from the problem's functions
 
 #include <algorithm>
 #include <limits>
@@ -61,6 +62,17 @@ inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t
   }
   out.particle = std::move(slaves);
   return out;
+}
+
+// v_I = problem.initial_particle_velocity(I, X_I), else problem.initial_velocity(X_I); v is left
+// as it is (at rest) when the problem gives neither.
+template <class Problem>
+void initial_velocities(const discrete_model& m, const Problem& p, std::vector<vec2>& v) {
+  const auto& X = m.particles.position;
+  if (p.initial_particle_velocity)
+    for (index_t I = 0; I < m.particle_count(); ++I) v[I] = p.initial_particle_velocity(I, X[I]);
+  else if (p.initial_velocity)
+    for (index_t I = 0; I < m.particle_count(); ++I) v[I] = p.initial_velocity(X[I]);
 }
 
 }  // namespace rkpm

@@ -14,6 +14,8 @@
 //                        for a rule with variationally consistent integration (vci<Rule>,
 //                        docs/method.md section 3.5); empty: the test gradients are the trial
 //                        gradients. The deformation gradient always uses at_points.grad.
+//   own                  the particles and points this process owns, and its ghost particles
+//                        (core/execution.hpp; one process: all owned, no ghosts)
 // For a nodal rule (scni, docs/method.md section 3.6) the points are those of the smoothing
 // cells and at_points.grad holds the smoothed gradients, trial and test alike (test_gradient
 // stays empty); at_points.N stays the shape functions at the points, for the hoop term, the
@@ -24,6 +26,7 @@
 
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/concepts/quadrature.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
 #include <rkpm/discretization/point_traversal.hpp>
@@ -43,6 +46,7 @@ struct discrete_model {
   shape_table<2> at_particles;
   std::vector<double> lumped_volume;
   std::vector<vec2> test_gradient;
+  ownership own;
 
   index_t particle_count() const { return particles.size(); }
   index_t point_count() const { return points.size(); }
@@ -92,6 +96,7 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
   m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk, values_only);
   m.traversal = make_point_traversal(m.at_points, particles.size());
   m.lumped_volume = lumped_volumes(particles, m.points, m.at_points);
+  m.own = ownership::single_process(particles.size(), m.point_count());
   m.particles = std::move(particles);
   m.mesh = std::move(mesh);
   return m;

@@ -47,13 +47,6 @@ struct energy_balance {
 inline double impulse_work_at(double mass, const vec2& v_after, const vec2& v_before, const vec2& v_half_prev) {
   return 0.5 * mass * (v_after - v_before).dot(v_after + v_half_prev);
 }
-inline double impulse_work(const std::vector<double>& mass, const std::vector<vec2>& v_after,
-                           const std::vector<vec2>& v_before, const std::vector<vec2>& v_half_prev) {
-  double w = 0.0;
-  for (std::size_t I = 0; I < mass.size(); ++I)
-    w += impulse_work_at(mass[I], v_after[I], v_before[I], v_half_prev[I]);
-  return w;
-}
 
 // The work of the internal forces over a step is the trapezoidal rule,
 //   internal += 1/2 (f_int(n) + f_int(n+1)) . (d(n+1) - d(n)),  external += f_ext . (d(n+1) - d(n)),

@@ -13,8 +13,8 @@
 // cache: the table is read once per evaluation and nothing is stored per point. The points are
 // visited tile by tile in the order of discrete_model::traversal (discretization/
 // point_traversal.hpp): tiles of one colour share no particle and run in parallel, colours one
-// after the other, so no atomics are needed and every f_I is summed in the same order whatever
-// the thread count.
+// after the other (point_traversal::for_each_tile), so no atomics are needed and
+// every f_I is summed in the same order whatever the thread count.
 // The internal force (solver/point_materials.hpp) and the matrix-free stiffness of the stable
 // time step (solver/stable_time_step.hpp) both go through it.
 
@@ -22,6 +22,7 @@
 
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm {
@@ -31,16 +32,6 @@ struct point_gradient {
   mat2 H = mat2::Zero();
   vec2 u = vec2::Zero();
 };
-
-inline point_gradient gather(const shape_table<2>& t, index_t q, const std::vector<vec2>& x) {
-  point_gradient g;
-  for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) {
-    const vec2& xI = x[t.neighbor[e]];
-    g.H.noalias() += xI * t.grad[e].transpose();
-    g.u += t.N[e] * xI;
-  }
-  return g;
-}
 
 namespace detail {
 
@@ -91,23 +82,8 @@ void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, 
          "make_point_traversal(at_points, particles) after building or changing the table",
          tr.tile_start.back(), m.point_count());
   const std::vector<vec2>& grad = m.test_gradients();
-  const index_t n = m.particle_count();
-#pragma omp parallel
-  {
-#pragma omp for schedule(static)
-    for (index_t I = 0; I < n; ++I) f[I] = vec2::Zero();
-    for (index_t c = 0; c < tr.colours(); ++c) {
-      if (c < tr.serial_from) {
-#pragma omp for schedule(dynamic, 1)
-        for (index_t k = tr.colour_start[c]; k < tr.colour_start[c + 1]; ++k)
-          detail::traverse_points<G>(m, grad, tr.tile_start[tr.tile[k]], tr.tile_start[tr.tile[k] + 1], x, f, rule);
-      } else {
-#pragma omp single
-        for (index_t k = tr.colour_start[c]; k < tr.colour_start[c + 1]; ++k)
-          detail::traverse_points<G>(m, grad, tr.tile_start[tr.tile[k]], tr.tile_start[tr.tile[k] + 1], x, f, rule);
-      }
-    }
-  }
+  exec::parallel_for(m.particle_count(), [&](index_t I) { f[I] = vec2::Zero(); });
+  tr.for_each_tile([&](index_t first, index_t last) { detail::traverse_points<G>(m, grad, first, last, x, f, rule); });
 }
 
 }  // namespace rkpm

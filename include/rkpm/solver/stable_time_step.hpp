@@ -20,7 +20,7 @@
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
-#include <rkpm/core/block_sums.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_forces.hpp>
@@ -125,15 +125,15 @@ double largest_frequency_squared(const discrete_model& m, const point_moduli& c,
       s[1] += mass[I] * x[I].squaredNorm();
     });
     omega2 = xkx / xmx;
-    double norm = 0.0;  // a maximum: the same whatever the order
-#pragma omp parallel for schedule(static) reduction(max : norm)
-    for (index_t I = 0; I < n; ++I) {
-      x[I] = w.kx[I] / mass[I];
-      norm = std::max(norm, x[I].cwiseAbs().maxCoeff());
-    }
+    const double norm = exec::max_over(
+        {0, n},
+        [&](index_t I) {
+          x[I] = w.kx[I] / mass[I];
+          return x[I].cwiseAbs().maxCoeff();
+        },
+        0.0);
     if (!(norm > 0.0)) break;
-#pragma omp parallel for schedule(static)
-    for (index_t I = 0; I < n; ++I) x[I] /= norm;
+    exec::parallel_for(n, [&](index_t I) { x[I] /= norm; });
   }
   if (!(omega2 > 0.0) || !std::isfinite(omega2))
     fail("could not estimate the stable time step (omega^2 = {}): check the material constants "

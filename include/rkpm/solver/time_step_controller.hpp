@@ -15,6 +15,7 @@
 
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/execution.hpp>
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/solver/discrete_model.hpp>
@@ -51,13 +52,11 @@ class time_step_controller {
     const double drift = min_stretch / estimate_stretch_;
     if (steps > 0 && (drift < 0.9 || drift > 1.25 || steps - estimate_step_ >= 500)) {
       const auto n = static_cast<index_t>(mode_.size());
-      double norm = 0.0;  // a maximum: the same in any order
-#pragma omp parallel for schedule(static) reduction(max : norm)
-      for (index_t I = 0; I < n; ++I) norm = std::max(norm, mode_[I].cwiseAbs().maxCoeff());
+      const double norm = exec::max_over({0, n}, [&](index_t I) { return mode_[I].cwiseAbs().maxCoeff(); }, 0.0);
       // The start vector recomputed, not stored (16 bytes per particle): the same values.
-#pragma omp parallel for schedule(static)
-      for (index_t I = 0; I < n; ++I)
+      exec::parallel_for(n, [&](index_t I) {
         mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(static_cast<std::size_t>(I));
+      });
       estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 20));
       estimate_stretch_ = min_stretch;
       estimate_step_ = steps;

@@ -1,5 +1,5 @@
 // shape_table (docs/method.md section 9.3): the compressed rows agree with point-by-point evaluation,
-// the transpose lists every entry exactly once under its particle, and interpolate()
+// compact_columns renumbers the columns to the particles the rows reach, and interpolate()
 // reproduces linear fields (scalar and vector) exactly, as the linear RK basis promises.
 // A values-only table (the one at the particles) keeps the full table's weighted entries exactly.
 
@@ -88,38 +88,6 @@ TEST_CASE("compact_columns: the columns renumbered to the particles the rows rea
     CHECK(particle[c.neighbor[e]] == t.neighbor[e]);
     CHECK(c.N[e] == t.N[e]);
   }
-}
-
-TEST_CASE("transpose: every entry once, under its particle, with its point") {
-  const fixture f(2.5);
-  const rkpm::neighbor_search<2> search(f.particles);
-  const auto t = rkpm::build_shape_table<quartic_spline, quadratic, 2>(search, f.points);
-  const index_t np = f.particles.size();
-  const auto tr = rkpm::transpose(t, np);
-  REQUIRE(static_cast<index_t>(tr.offset.size()) == np + 1);
-  REQUIRE(tr.offset.back() == t.entries());
-  std::vector<int> seen(t.entries(), 0);
-  for (index_t I = 0; I < np; ++I) {
-    for (index_t s = tr.offset[I]; s < tr.offset[I + 1]; ++s) {
-      const index_t e = tr.entry[s], p = tr.point[s];
-      REQUIRE(e >= 0);
-      REQUIRE(e < t.entries());
-      ++seen[e];
-      CHECK(t.neighbor[e] == I);
-      CHECK(t.offset[p] <= e);
-      CHECK(e < t.offset[p + 1]);
-    }
-  }
-  for (int c : seen) CHECK(c == 1);
-  // A scatter through the transpose equals the forward scatter: sum_p N_I(x_p) per particle.
-  std::vector<double> forward(np, 0.0), gathered(np, 0.0);
-  for (index_t e = 0; e < t.entries(); ++e) forward[t.neighbor[e]] += t.N[e];
-  for (index_t I = 0; I < np; ++I)
-    for (index_t s = tr.offset[I]; s < tr.offset[I + 1]; ++s) gathered[I] += t.N[tr.entry[s]];
-  for (index_t I = 0; I < np; ++I) CHECK(gathered[I] == doctest::Approx(forward[I]).epsilon(1e-13));
-  // A particle far from every point has an empty list.
-  const auto t2 = rkpm::transpose(t, np + 2);
-  CHECK(t2.offset[np + 2] - t2.offset[np] == 0);
 }
 
 TEST_CASE_TEMPLATE("interpolate reproduces linear fields", K, cubic_spline, quartic_spline) {
