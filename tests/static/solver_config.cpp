@@ -128,8 +128,9 @@ TEST_CASE("config names") {
 }
 
 TEST_CASE("a method named at run time: the typed configuration's name, and every name checked") {
-  // Every combination of the lists named at run time gives config<...>::name() of its type.
-  hana::for_each(policies::all_configs(), [&](auto c) {
+  // Each covering configuration named at run time gives config<...>::name() of its type (every
+  // policy of every family appears in some row).
+  hana::for_each(policies::covering_configs, [&](auto c) {
     using C = typename decltype(c)::type;
     const method_names m{std::string(C::kernel_type::name), std::string(C::correction_type::name),
                          std::string(C::quadrature_type::name)};
