@@ -14,13 +14,9 @@
 // tools/runner/models_axisymmetric.cpp does) and declare it `extern template` elsewhere.
 
 #include <optional>
-#include <string>
-#include <string_view>
 #include <utility>
 
 #include <boost/hana.hpp>
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/solver/body_models.hpp>

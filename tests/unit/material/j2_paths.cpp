@@ -13,6 +13,7 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/tensors.hpp"
 #include "support/paper_materials.hpp"
 
 using rkpm::mat3;
@@ -21,6 +22,8 @@ using rkpm::material::j2_plasticity;
 namespace h = rkpm::material::hardening;
 
 namespace {
+
+using rkpm::test::von_mises;
 
 using namespace rkpm::test::paper_materials;
 const double mu = copper_mu, K = copper_K, lambda = copper_lambda;
@@ -40,11 +43,6 @@ mat3 rotation(double angle) {
 mat3 path(double t) {
   return block(1.0 - 0.35 * t, 0.6 * std::sin(2.0 * t), -0.2 * t * t, 1.0 + 0.1 * t,
                1.0 + 0.3 * t);
-}
-
-double von_mises(const mat3& tau) {
-  const mat3 dev = tau - tau.trace() / 3.0 * mat3::Identity();
-  return std::sqrt(1.5) * dev.norm();
 }
 
 // Stored energy per reference volume of Hencky elasticity, W = mu |dev eps_e|^2 + K/2 tr^2,

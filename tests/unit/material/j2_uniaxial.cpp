@@ -13,6 +13,7 @@
 
 #include <rkpm/material/j2_plasticity.hpp>
 
+#include "support/tensors.hpp"
 #include "support/paper_materials.hpp"
 
 using rkpm::mat3;
@@ -22,22 +23,12 @@ namespace h = rkpm::material::hardening;
 
 namespace {
 
+using rkpm::test::diagonal;
+using rkpm::test::von_mises;
+
 using namespace rkpm::test::paper_materials;
 const double E = 117e9, nu = 0.35;
 const double mu = copper_mu, K = copper_K;
-
-mat3 diagonal(double f11, double f22, double f33) {
-  mat3 F = mat3::Zero();
-  F(0, 0) = f11;
-  F(1, 1) = f22;
-  F(2, 2) = f33;
-  return F;
-}
-
-double von_mises(const mat3& tau) {
-  const mat3 dev = tau - tau.trace() / 3.0 * mat3::Identity();
-  return std::sqrt(1.5) * dev.norm();
-}
 
 // Uniaxial stress step: F = diag(exp(e11), l, l) with l such that tau22 = 0 (secant on ln l).
 // Advances `state` and returns tau; `lateral` carries the guess in and the solution out.

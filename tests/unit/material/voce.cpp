@@ -13,6 +13,7 @@
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/solver/config.hpp>
 
+#include "support/tensors.hpp"
 #include "support/error_message.hpp"
 
 using rkpm::mat3;
@@ -20,22 +21,12 @@ namespace h = rkpm::material::hardening;
 
 namespace {
 
+using rkpm::test::diagonal;
+using rkpm::test::von_mises;
+
 const rkpm::material::elastic_constants copper{117e9, 0.35, 8930.0};
 const double mu = copper.shear_modulus(), K = copper.bulk_modulus(), E = copper.youngs_modulus;
 const h::voce law{100e6, 150e6, 12.0, 50e6};  // sigma_0, Q, b, H
-
-mat3 diagonal(double a, double b, double c) {
-  mat3 F = mat3::Zero();
-  F(0, 0) = a;
-  F(1, 1) = b;
-  F(2, 2) = c;
-  return F;
-}
-
-double von_mises(const mat3& tau) {
-  const mat3 dev = tau - tau.trace() / 3.0 * mat3::Identity();
-  return std::sqrt(1.5) * dev.norm();
-}
 
 // The plastic strain p at which f(p) = 0 for an increasing f (bisection, independent of the code).
 template <class F>

@@ -44,11 +44,6 @@ struct hardening_law {
   static hardening_law of(const Law& h) { return {variant(h)}; }
 
   bool yields() const { return !std::holds_alternative<detail::never_yields>(law); }
-  // The law's name (material::hardening::laws), "none" when it never yields.
-  std::string_view law_name() const {
-    return visit([](const auto& h) { return h.name; }, std::string_view("none"));
-  }
-
   void validate() const {
     visit([](const auto& h) { h.validate(); return 0; }, 0);
   }
@@ -58,9 +53,6 @@ struct hardening_law {
   }
   double slope(double eps_p, const flow_point& at = {}) const {
     return visit([&](const auto& h) { return slope_at(h, eps_p, at); }, 0.0);
-  }
-  double rate_slope(double eps_p, const flow_point& at) const {
-    return visit([&](const auto& h) { return rate_slope_at(h, eps_p, at); }, 0.0);
   }
   // The work integral where the law has one (j2_plasticity's choices, in the same order), so
   // that a case file's law gives the typed law's arithmetic bit for bit.
