@@ -118,11 +118,10 @@ struct rod_on_rod {
                                                              const std::vector<vec2>& /*tool_force*/) {
     const auto x = s.particle_positions();
     const auto& X = s.model().particles.position;
-    const auto& body = s.contact().bodies().partition().particle_body;
     std::array<double, 2> zmin{1e300, 1e300}, zmax{-1e300, -1e300}, radius{0.0, 0.0};
     double P = 0.0, P0 = 0.0, scale = 0.0;
     for (std::size_t I = 0; I < x.size(); ++I) {
-      const auto b = static_cast<std::size_t>(body[I]);
+      const auto b = static_cast<std::size_t>(s.body_of_particle(I));
       zmin[b] = std::min(zmin[b], x[I][1]);
       zmax[b] = std::max(zmax[b], x[I][1]);
       if (std::abs(X[I][1]) <= 1e-9 * p.lower_height_m) radius[b] = std::max(radius[b], x[I][0]);

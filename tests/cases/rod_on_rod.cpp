@@ -129,3 +129,38 @@ TEST_CASE_TEMPLATE("two identical rods head on are two Taylor bars on a friction
                                    << one.measures.at("lower_final_height_mm"));
   }
 }
+
+// The model owns its bodies (discrete_model::bodies): two rods of one material are two bodies,
+// told apart by their cells, each with its own surface; and the solver keeps the builder its
+// model came from, which builds the same tables again.
+TEST_CASE("rod on rod: two bodies of one material, each particle and point in its rod; the kept builder") {
+  const auto p = small_parameters<cases::rod_on_rod>();
+  const auto s = small_solver<cases::rod_on_rod, contact::enforcement::effective_mass>(p);
+  REQUIRE(s.bodies() == 2);
+  const auto& m = s.model();
+  for (index_t I = 0; I < m.particle_count(); ++I) {
+    // The lower rod lies below z = 0 and the upper above; the impact faces share z = 0, where
+    // the mesh nodes (the particles) say which is which.
+    const double z = m.particles.position[I][1];
+    if (z != 0.0) CHECK(s.body_of_particle(I) == (z < 0.0 ? 0 : 1));
+  }
+  for (index_t q = 0; q < m.point_count(); ++q) CHECK(m.bodies.of_point(q) == (m.points.position[q][1] < 0.0 ? 0 : 1));
+  // Each rod's surface: one open chain from the axis round to the axis (the axis is no surface).
+  const auto& chains = m.bodies.surface("test");
+  REQUIRE(chains.size() == 2);
+  for (const auto& c : chains) {
+    CHECK_FALSE(c.closed);
+    CHECK(m.particles.position[c.node.front()][0] == 0.0);
+    CHECK(m.particles.position[c.node.back()][0] == 0.0);
+  }
+  CHECK(chains[0].body != chains[1].body);
+
+  REQUIRE(s.model_builder());
+  const discrete_model again = s.model_builder()(m.particles, m.mesh, s.options().max_moment_condition);
+  CHECK(again.at_points.neighbor == m.at_points.neighbor);
+  CHECK(again.at_points.N == m.at_points.N);
+  CHECK(again.at_particles.N == m.at_particles.N);
+  CHECK(again.lumped_volume == m.lumped_volume);
+  CHECK(again.bodies.particle_body() == m.bodies.particle_body());
+  CHECK(again.bodies.point_body() == m.bodies.point_body());
+}

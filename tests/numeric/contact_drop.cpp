@@ -85,13 +85,11 @@ drop_result drop(Contact contact) {
   const vec2 P0 = momentum();
   const double K0 = s.energy().initial_kinetic, tail0 = energy_tail(s);
   drop_result r;
-  vec2 impulse = vec2::Zero();
   double t_prev = 0.0;
   s.run(
       [&](const auto& s) {
         const double step = s.time() - t_prev;
         t_prev = s.time();
-        if (step > 0.0) impulse -= s.contact().reactions()[0] * step;
         if (s.last_contact().active > 0) ++r.steps_in_contact;
         // The last step is shortened to land on T; the tail formula assumes the constant dt.
         if (std::abs(step - dt) < 1e-9 * dt)
@@ -100,6 +98,7 @@ drop_result drop(Contact contact) {
         for (index_t J : s.slave_particles()) r.worst_depth = std::max(r.worst_depth, -x[J].y());
       },
       1);
+  const vec2 impulse = -s.tool_impulses()[0];  // the wall's reaction is the body's push on it
   const vec2 dP = momentum() - P0;
   r.momentum_error = (dP - (vec2(0.0, -M * g * s.time()) + impulse)).norm() / (M * V0);
   r.impulse_y = impulse.y();

@@ -5,6 +5,9 @@
 // with Coulomb friction; a coefficient of 0 is frictionless). Option values and the names in
 // summary.json are the policies' `name`.
 
+#include <string>
+#include <vector>
+
 #include <boost/hana.hpp>
 
 #include <rkpm/solver/method_names.hpp>
@@ -25,6 +28,17 @@ inline constexpr auto enforcements = [] {
   return hana::transform(hana::filter(policies::contacts, has_enforcement),
                          [](auto t) { return hana::type_c<typename decltype(t)::type::enforcement_type>; });
 }();
+
+// The rules beyond the paper that `paper` runs beside Q2 and Q4 for its report's last section:
+// the other two readings of the two-point cell, VCI on Q2 and Q4, and stabilized nodal
+// integration (the rest of policies::extended_quadratures are variants of these).
+inline constexpr auto report_rules = hana::tuple_t<quadrature::q2_split, quadrature::q2_tri, quadrature::q2_vci,
+                                                   quadrature::q4_vci, quadrature::scni<>>;
+inline std::vector<std::string> report_rule_names() {
+  std::vector<std::string> names;
+  hana::for_each(report_rules, [&](auto t) { names.emplace_back(decltype(t)::type::name); });
+  return names;
+}
 
 // The paper's method, the default of every run: cubic kernel, linear correction, Q2, the
 // paper's contact enforcement.

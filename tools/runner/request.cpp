@@ -151,8 +151,9 @@ void add_paper(CLI::App& app, paper_request& p) {
            p.rules = rules;
            std::erase(p.rules, "none");
          },
-         "integration rules beyond the paper for the report's last section, comma-separated, or none "
-         "(default q2_split,q2_tri,q2+vci,q4+vci,scni)")
+         fmt::format("integration rules beyond the paper for the report's last section, comma-separated, or none "
+                     "(default {})",
+                     fmt::join(report_rule_names(), ",")))
       ->delimiter(',')
       ->check(CLI::IsMember([] {
         auto names = policy_names(quadratures);

@@ -47,17 +47,15 @@ class run_observer {
         vtk_(dir / (case_name<Case>(params) + ".pvd"), record_.snapshots),
         figures_(dir, params),
         segment_start_(std::chrono::steady_clock::now()) {
-    record_.impulse.resize(tools_, vec2::Zero());
-    record_.previous_impulse.resize(tools_, vec2::Zero());
+    record_.start_impulse.resize(tools_, vec2::Zero());
+    record_.previous_start_impulse.resize(tools_, vec2::Zero());
     for (const auto& row : record_.history_rows) history_.row(row);
   }
 
   // Called at the start, after every step and at the end of the run.
   void operator()(const Solver& s) {
     if (std::exchange(skip_next_, false)) return;
-    const double t = s.time(), dt = t - record_.last_time, end_time = s.options().end_time;
-    record_.last_time = t;
-    for (index_t k = 0; k < tools_; ++k) record_.impulse[k] += s.contact().reactions()[k] * dt;
+    const double t = s.time(), end_time = s.options().end_time;
     const bool last = t >= end_time * (1.0 - 1e-12);
     if (!quiet_) progress_.update(t, end_time, static_cast<long>(s.steps()));
     if (t >= record_.next_history || last) {
@@ -123,22 +121,24 @@ class run_observer {
     return columns;
   }
 
-  // The tool forces are the impulses of the interval over its length. The run's last interval
+  // The tool forces are the impulses of the interval (explicit_solver::tool_impulses at its end
+  // less at its start) over its length. The run's last interval
   // can be a step or two long (the row before fell just short of the end time): a force averaged
   // over so short a span is one step's contact impulse, not a force, so that row averages over
   // it and the interval before.
   void add_history_row(const Solver& s, double t, bool last) {
     const double span = t - record_.interval_start;
     const bool merge = last && span < 0.5 * record_.history_interval && record_.previous_span > 0.0;
+    const std::vector<vec2>& impulse = s.tool_impulses();
     for (index_t k = 0; k < tools_; ++k) {
       if (merge)
-        mean_force_[k] = (record_.impulse[k] + record_.previous_impulse[k]) / (span + record_.previous_span);
+        mean_force_[k] = (impulse[k] - record_.previous_start_impulse[k]) / (span + record_.previous_span);
       else
-        mean_force_[k] = span > 0.0 ? vec2(record_.impulse[k] / span) : vec2::Zero();
+        mean_force_[k] = span > 0.0 ? vec2((impulse[k] - record_.start_impulse[k]) / span) : vec2::Zero();
     }
-    record_.previous_impulse = record_.impulse;
+    record_.previous_start_impulse = record_.start_impulse;
+    record_.start_impulse = impulse;
     record_.previous_span = span;
-    std::fill(record_.impulse.begin(), record_.impulse.end(), vec2::Zero());
     record_.interval_start = t;
     measures_ = Case::measure(s, params_, mean_force_);
     std::vector<double> row{t};

@@ -2,7 +2,7 @@
 // What rkpm_run keeps in a checkpoint besides the solver's state (solver/checkpoint.hpp), as JSON
 // in the checkpoint's description (io/checkpoint_format.hpp): the case, policies, resolution and
 // parameters the run was started with, and the record of its outputs so far (the history rows,
-// the snapshots, the output clocks, the tool impulses of the open history interval, the wall
+// the snapshots, the output clocks, the tool impulses at the history intervals' starts, the wall
 // time). A restart rebuilds the same problem from the first part and continues the outputs
 // from the second, so that its history.csv, snapshots and summary.json are the uninterrupted
 // run's (docs/method.md section 9.5).
@@ -24,9 +24,10 @@ namespace rkpm::runner {
 struct run_record {
   double history_interval = 0.0, snapshot_interval = 0.0, checkpoint_interval = 0.0;  // s; 0: none
   double next_history = 0.0, next_snapshot = 0.0, next_checkpoint = 0.0;               // s
-  double last_time = 0.0, interval_start = 0.0;  // the last observed time; start of the open history row
-  std::vector<vec2> impulse;                     // per tool, since interval_start (N s)
-  std::vector<vec2> previous_impulse;            // per tool, over the last closed interval (N s)
+  double interval_start = 0.0;  // s, the start of the open history row
+  // The tools' impulses since t = 0 (explicit_solver::tool_impulses) at interval_start and at
+  // the start of the last closed interval (N s).
+  std::vector<vec2> start_impulse, previous_start_impulse;
   double previous_span = 0.0;                    // s, the last closed interval's length
   std::vector<std::vector<double>> history_rows;
   std::vector<std::pair<double, std::string>> snapshots;  // .pvd entries: time, file relative to the run folder
@@ -37,13 +38,14 @@ struct run_record {
 
 inline json to_json(const run_record& r) {
   json impulse = json::array(), previous = json::array();
-  for (const vec2& i : r.impulse) impulse.push_back({i[0], i[1]});
-  for (const vec2& i : r.previous_impulse) previous.push_back({i[0], i[1]});
+  for (const vec2& i : r.start_impulse) impulse.push_back({i[0], i[1]});
+  for (const vec2& i : r.previous_start_impulse) previous.push_back({i[0], i[1]});
   return {{"history_interval_s", r.history_interval}, {"snapshot_interval_s", r.snapshot_interval},
           {"checkpoint_interval_s", r.checkpoint_interval}, {"next_history_s", r.next_history},
           {"next_snapshot_s", r.next_snapshot}, {"next_checkpoint_s", r.next_checkpoint},
-          {"last_time_s", r.last_time}, {"interval_start_s", r.interval_start},
-          {"impulse_N_s", impulse}, {"previous_impulse_N_s", previous}, {"previous_span_s", r.previous_span},
+          {"interval_start_s", r.interval_start},
+          {"start_impulse_N_s", impulse}, {"previous_start_impulse_N_s", previous},
+          {"previous_span_s", r.previous_span},
           {"history_rows", r.history_rows}, {"snapshots", r.snapshots},
           {"shapes", r.shapes}, {"wall_s", r.wall_s}, {"setup_s", r.setup_s}, {"restarts", r.restarts}};
 }
@@ -56,11 +58,11 @@ inline run_record record_from_json(const json& j) {
   r.next_history = j.at("next_history_s").get<double>();
   r.next_snapshot = j.at("next_snapshot_s").get<double>();
   r.next_checkpoint = j.at("next_checkpoint_s").get<double>();
-  r.last_time = j.at("last_time_s").get<double>();
   r.interval_start = j.at("interval_start_s").get<double>();
-  for (const auto& i : j.at("impulse_N_s")) r.impulse.emplace_back(i.at(0).get<double>(), i.at(1).get<double>());
-  for (const auto& i : j.at("previous_impulse_N_s"))
-    r.previous_impulse.emplace_back(i.at(0).get<double>(), i.at(1).get<double>());
+  for (const auto& i : j.at("start_impulse_N_s"))
+    r.start_impulse.emplace_back(i.at(0).get<double>(), i.at(1).get<double>());
+  for (const auto& i : j.at("previous_start_impulse_N_s"))
+    r.previous_start_impulse.emplace_back(i.at(0).get<double>(), i.at(1).get<double>());
   r.previous_span = j.at("previous_span_s").get<double>();
   r.history_rows = j.at("history_rows").get<std::vector<std::vector<double>>>();
   r.snapshots = j.at("snapshots").get<std::vector<std::pair<double, std::string>>>();

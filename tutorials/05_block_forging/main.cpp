@@ -66,10 +66,11 @@ int main(int argc, char** argv) {
 
     // The force on the top tool, per metre of depth. The reaction of one step is noisy (a slave
     // particle arriving on the tool is stopped in one step), so we average it over windows of
-    // 1% of the run: the impulse of the window divided by its length.
+    // 1% of the run: the impulse of the window divided by its length (tool_impulses() is each
+    // tool's impulse since t = 0, so the window's is the difference of two readings).
     io::csv_writer history(dir / "history.csv",
                            {"stroke_mm", "compression_percent", "force_MN_per_m", "width_mm", "balance_error"});
-    double impulse = 0.0, window_start = 0.0, t_prev = 0.0, next_report = 0.0;
+    double window_impulse = 0.0, window_start = 0.0, next_report = 0.0;
     std::vector<double> shape_at{0.0, 0.2, 0.4, 0.6};  // compressions whose shapes we keep
     std::size_t next_shape = 0;
     // The outline of the block: the particles of the reference boundary in order around it (the
@@ -97,15 +98,14 @@ int main(int argc, char** argv) {
     };
     auto observe = [&](const auto& s) {
       const double t = s.time();
-      impulse += s.contact().reactions()[1].y() * (t - t_prev);  // tool 1 is the top tool
-      t_prev = t;
+      const double impulse = s.tool_impulses()[1].y();  // tool 1 is the top tool
       const double stroke = 2.0 * params.tool_velocity_m_s * t, compression = stroke / params.height_m;
       while (next_shape < shape_at.size() && compression >= shape_at[next_shape] - 1e-9) write_shape(s, shape_at[next_shape++]);
       if (t - window_start >= 0.01 * options.end_time || t >= options.end_time * (1 - 1e-12)) {
-        const double force = impulse / (t - window_start);
+        const double force = (impulse - window_impulse) / (t - window_start);
         const auto m = block_forging::measure(s, params, {});
         history.row({stroke * 1e3, compression * 100, force * 1e-6, m[1].second, s.energy().balance_error()});
-        impulse = 0.0;
+        window_impulse = impulse;
         window_start = t;
         if (t >= next_report) {
           fmt::print("  {:>4.1f} ms  step {:>6}  compression {:>4.1f}%  width {:>6.1f} mm  force {:>6.1f} MN/m\n",

@@ -61,15 +61,15 @@ int main(int argc, char** argv) {
     // punch force averaged over windows of 0.5% of the run (one step's reaction is noisy).
     io::csv_writer history(dir / "history.csv", {"stroke_mm", "punch_force_kN", "volume_change_percent",
                                                  "hub_height_mm", "rim_height_mm", "max_penetration_mm"});
-    double impulse = 0.0, window_start = 0.0, t_prev = 0.0, next_report = 0.0, last_force = 0.0;
+    // tool_impulses() is each tool's impulse since t = 0: a window's is the difference of two.
+    double window_impulse = 0.0, window_start = 0.0, next_report = 0.0, last_force = 0.0;
     auto observe = [&](const auto& s) {
       const double t = s.time();
-      impulse += s.contact().reactions()[0].y() * (t - t_prev);  // tool 0 is the punch
-      t_prev = t;
       if (t - window_start < 0.005 * options.end_time && t < options.end_time * (1 - 1e-12)) return;
-      const double force = t > window_start ? impulse / (t - window_start) : 0.0;
+      const double impulse = s.tool_impulses()[0].y();  // tool 0 is the punch
+      const double force = t > window_start ? (impulse - window_impulse) / (t - window_start) : 0.0;
       last_force = force;
-      impulse = 0.0;
+      window_impulse = impulse;
       window_start = t;
       const auto m = wheel_forging::measure(s, params, {});
       const double stroke_mm = params.tool_velocity_m_s * t * 1e3;

@@ -108,17 +108,17 @@ outcome run_taylor_bar(const rod_on_rod::parameters& rods, int resolution, const
   auto solver = make_solver<method>(taylor_bar::build<contact_t>(p, resolution), options);
   fmt::print("Taylor bar: {} particles, {} quadrature points, first time step {:.3g} ns\n",
              solver.model().particle_count(), solver.model().point_count(), solver.time_step() * 1e9);
-  // Every step the wall's impulse on the bar; every 20 steps a row: the case's measures, the z
-  // of the face's centre (particle 0, at the origin) and the mean wall force since the last row.
+  // Every 20 steps a row: the case's measures, the z of the face's centre (particle 0, at the
+  // origin) and the mean wall force since the last row (the wall's impulse since t = 0,
+  // tool_impulses(), less its reading at the last row, over the time between).
   io::csv_writer history(dir / "history_taylor_bar.csv", {"time_us", "radius_mm", "height_mm", "centre_um", "force_kN"});
-  double impulse = 0.0, last_t = 0.0, row_start = 0.0;
+  double row_impulse = 0.0, row_start = 0.0;
   solver.run([&](const auto& s) {
-    impulse += -s.contact().reactions()[0].y() * (s.time() - last_t);  // reactions() is the force on the wall
-    last_t = s.time();
     if (s.steps() % row_every != 0 && s.time() < options.end_time * (1.0 - 1e-12)) return;
     const auto m = taylor_bar::measure(s, p, {});
-    const double force = s.time() > row_start ? impulse / (s.time() - row_start) : 0.0;
-    impulse = 0.0, row_start = s.time();
+    const double impulse = -s.tool_impulses()[0].y();  // the reaction is the force on the wall: the bar's is opposite
+    const double force = s.time() > row_start ? (impulse - row_impulse) / (s.time() - row_start) : 0.0;
+    row_impulse = impulse, row_start = s.time();
     history.row({s.time() * 1e6, measured(m, "radius_mm"), measured(m, "height_mm"), s.particle_positions()[0][1] * 1e6,
                  force * 1e-3});
   }, 1);
@@ -166,7 +166,7 @@ bool show_contact(const Solver& s) {
   });
   const auto& rows = s.model().at_particles;
   const auto& X = s.model().particles.position;
-  const auto& body = s.contact().bodies().partition().particle_body;
+  const auto body = [&](index_t I) { return s.body_of_particle(I); };
   const auto& m = s.mass();
 
   // The slave's row, and the master's row c_I gathered from the rows of a and b.
@@ -183,7 +183,7 @@ bool show_contact(const Solver& s) {
   auto bodies_of = [&](const auto& row) {
     std::string b;
     for (const auto& [I, w] : row)
-      if (b.find(std::to_string(body[I])) == std::string::npos) b += (b.empty() ? "" : ", ") + std::to_string(body[I]);
+      if (b.find(std::to_string(body(I))) == std::string::npos) b += (b.empty() ? "" : ", ") + std::to_string(body(I));
     return b;
   };
   // RK shape functions do not interpolate: even the largest entry of a row is well below one,
@@ -201,7 +201,7 @@ bool show_contact(const Solver& s) {
              s.time() * 1e6, s.steps(), pairs.size());
   fmt::print("    slave J = {} of body {} (X = ({:.3f}, {:.3f}) mm) on segment a = {}, b = {} of body {} "
              "(X_a = ({:.3f}, {:.3f}), X_b = ({:.3f}, {:.3f}) mm)\n",
-             p.slave, body[p.slave], X[p.slave][0] * 1e3, X[p.slave][1] * 1e3, p.a, p.b, body[p.a],
+             p.slave, body(p.slave), X[p.slave][0] * 1e3, X[p.slave][1] * 1e3, p.a, p.b, body(p.a),
              X[p.a][0] * 1e3, X[p.a][1] * 1e3, X[p.b][0] * 1e3, X[p.b][1] * 1e3);
   fmt::print("    (75): lambda = {:.3f}, gap = {:.3f} um, normal n = ({:.3f}, {:.3f}); f_J = ({:.1f}, {:.1f}) kN on the "
              "slave (the whole ring: masses carry 2 pi r)\n",
@@ -237,17 +237,17 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
   auto solver = make_solver<method>(rod_on_rod::build<contact_t>(p, resolution), options);
   const auto& pairs = solver.contact().body_pairs();
   fmt::print("\nrods, {}: {} particles in {} bodies, {} quadrature points, contact pairs", two_pass ? "two passes" : "one pass",
-             solver.model().particle_count(), solver.contact().bodies().bodies(), solver.model().point_count());
+             solver.model().particle_count(), solver.bodies(), solver.model().point_count());
   for (const auto& pr : pairs) fmt::print(" (slave {}, master {})", pr.slave, pr.master);
   fmt::print(", first time step {:.3g} ns\n", solver.time_step() * 1e9);
 
-  const auto& body = solver.contact().bodies().partition().particle_body;
+  const auto body = [&](index_t I) { return solver.body_of_particle(I); };
   const auto& X = solver.model().particles.position;
   const auto& mass = solver.mass();
   const double h = p.lower_height_m / (cases::refined_count(p.axial_particles, resolution) - 1);  // axial spacing
   double P0 = 0.0, scale = 0.0;  // the initial momentum (lower rod up, upper rod down) and sum m |v0|
   for (std::size_t I = 0; I < X.size(); ++I) {
-    P0 += mass[I] * (body[I] == 0 ? p.velocity_m_s : -p.velocity_m_s);
+    P0 += mass[I] * (body(I) == 0 ? p.velocity_m_s : -p.velocity_m_s);
     scale += mass[I] * p.velocity_m_s;
   }
 
@@ -266,7 +266,7 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
     o.momentum_error = std::max(o.momentum_error, std::abs(error));
     double force = 0.0;
     for (const auto& c : s.contact().bodies().active_pairs())
-      force += (body[c.slave] == 1 ? 1.0 : -1.0) * c.force()[1];
+      force += (body(c.slave) == 1 ? 1.0 : -1.0) * c.force()[1];
     impulse += force * (s.time() - last_t);
     last_t = s.time();
     if (!shown && s.time() >= 0.25 * options.end_time) shown = show_contact(s);
@@ -284,7 +284,7 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
     for (std::size_t I = 0; I < x.size(); ++I)
       if (std::abs(X[I][1]) <= 1e-9 * p.lower_height_m) {
         plane += x[I][1], ++face;
-        if (X[I][0] == 0.0) axis[body[I]] = x[I][1];  // the centre of the face
+        if (X[I][0] == 0.0) axis[body(I)] = x[I][1];  // the centre of the face
       }
     plane /= face;
     const double mean_force = s.time() > row_start ? impulse / (s.time() - row_start) : 0.0;
@@ -307,7 +307,7 @@ outcome run_rods(rod_on_rod::parameters p, int resolution, bool two_pass, const 
   const auto x = solver.particle_positions();
   io::csv_writer shape(dir / fmt::format("shape_{}.csv", label), {"body", "r0_mm", "z0_mm", "r_mm", "z_mm"});
   for (std::size_t I = 0; I < x.size(); ++I)
-    shape.row({static_cast<double>(body[I]), X[I][0] * 1e3, X[I][1] * 1e3, x[I][0] * 1e3, x[I][1] * 1e3});
+    shape.row({static_cast<double>(body(I)), X[I][0] * 1e3, X[I][1] * 1e3, x[I][0] * 1e3, x[I][1] * 1e3});
 
   const auto m = rod_on_rod::measure(solver, p, {});
   o.height_mm[0] = measured(m, "lower_final_height_mm"), o.height_mm[1] = measured(m, "upper_final_height_mm");

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
-#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/model_bodies.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
@@ -34,11 +34,11 @@ class checkpoint_reader;
 struct contact_body {
   std::span<const vec2> reference_position;  // X_I, #particles
   std::span<const double> mass;              // lumped m_I (axisymmetric: 2 pi r included)
-  // For contact between deformable bodies (contact/body_contact.hpp): the cells, whose
-  // boundaries are the master surfaces, and the rows N_J(X_I) that give physical positions.
-  const background_mesh* mesh = nullptr;
+  // For contact on deformable surfaces (contact/body_contact.hpp, tool_vertex_contact.hpp): the
+  // model's bodies with their surfaces (discrete_model::bodies), and the rows N_J(X_I) that give
+  // physical positions.
+  const model_bodies* bodies = nullptr;
   const shape_table<2>* at_particles = nullptr;
-  bool axisymmetric = false;
 };
 
 // The particles checked against the tools, given once at set-up: slave j is particle

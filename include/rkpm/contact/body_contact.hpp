@@ -1,8 +1,8 @@
 #pragma once
 // Contact between deformable bodies: the paper's slave and master bodies (docs/method.md section
 // 6.9). A body_pair names a slave body and a master body of the problem's mesh (the connected
-// parts of its cells, discretization/body_partition.hpp). The master surface is the master
-// body's boundary chains (discretization/boundary_chains.hpp; not the axis of a section), its
+// parts of its cells, found by the model: discretization/model_bodies.hpp). The master surface is
+// the master body's boundary chains (model_bodies::surface; not the axis of a section), its
 // vertices the master particles at their physical positions x = X + sum_I N_I(X) d_I on the
 // predicted configuration. Each step, for every slave particle J of the slave body:
 //   (i)   the segment a-b of the master surface it penetrates: projection lambda in [0, 1],
@@ -33,13 +33,12 @@
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/error.hpp>
-#include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/contact/contact_pair.hpp>
 #include <rkpm/contact/contact_sweeps.hpp>
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/surface_scratch.hpp>
 #include <rkpm/contact/surface_search.hpp>
-#include <rkpm/discretization/boundary_chains.hpp>
+#include <rkpm/discretization/model_bodies.hpp>
 
 namespace rkpm::contact {
 
@@ -66,30 +65,27 @@ class body_contact {
   std::span<const body_contact_pair> active_pairs() const {
     return {active_.data(), static_cast<std::size_t>(active_count_)};
   }
-  index_t bodies() const { return partition_.bodies; }
-  const body_partition& partition() const { return partition_; }
 
   // `slaves`: the problem's slave particles; each pair's slaves are those of its slave body.
   void setup(const contact_body& body, std::span<const index_t> slaves) {
     if (pairs_.empty()) return;
-    if (!body.mesh || !body.at_particles)
-      fail("contact between bodies needs the background cells and the shape functions at the particles; the "
+    if (!body.bodies || !body.at_particles)
+      fail("contact between bodies needs the model's bodies and the shape functions at the particles; the "
            "solver passes them in contact_body");
-    const background_mesh& mesh = *body.mesh;
+    const model_bodies& bodies = *body.bodies;
     const std::span<const vec2> X = body.reference_position;
     const auto n = static_cast<index_t>(X.size());
-    partition_ = partition_bodies(X, mesh);
     for (std::size_t k = 0; k < pairs_.size(); ++k)
       for (index_t b : {pairs_[k].slave, pairs_[k].master})
-        if (b < 0 || b >= partition_.bodies)
+        if (b < 0 || b >= bodies.count())
           fail("contact pair {}: body {} does not exist; the cells form {} bodies, numbered 0 to {} in the order "
                "of their first cells",
-               k, b, partition_.bodies, partition_.bodies - 1);
+               k, b, bodies.count(), bodies.count() - 1);
     for (std::size_t k = 0; k < pairs_.size(); ++k)
       if (pairs_[k].slave == pairs_[k].master)
         fail("contact pair {}: body {} against itself; self-contact is not supported, name two bodies", k,
              pairs_[k].slave);
-    const auto chains = surface_chains(body, "contact between bodies");
+    const auto& chains = bodies.surface("contact between bodies");
 
     segment_.assign(pairs_.size(), {});
     slave_.assign(pairs_.size(), {});
@@ -107,7 +103,7 @@ class body_contact {
           }
       depth_[k] = 0.5 * shortest;
       for (index_t J : slaves)
-        if (partition_.particle_body[J] == pairs_[k].slave) {
+        if (bodies.of_particle(J) == pairs_[k].slave) {
           slave_[k].push_back(J);
           surface[J] = 1;
         }
@@ -220,7 +216,6 @@ class body_contact {
   };
 
   std::vector<body_pair> pairs_;
-  body_partition partition_;
   std::vector<std::vector<std::array<index_t, 2>>> segment_;  // per pair: master segments (particles)
   std::vector<std::vector<index_t>> slave_;                   // per pair: slave particles
   std::vector<double> depth_;                                 // per pair

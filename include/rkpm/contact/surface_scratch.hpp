@@ -1,16 +1,14 @@
 #pragma once
 // What the contact passes on deformable surfaces share (body_contact.hpp, tool_vertex_contact.hpp;
-// docs/method.md section 6.9): the surfaces as chains of particles (surface_chains), the
-// physical positions and velocities of surface particles, the
+// docs/method.md section 6.9): the physical positions and velocities of surface particles, the
 // row of a contact point on a segment a-b, c_I = (1 - lambda) N_I(X_a) + lambda N_I(X_b), the
 // shared effective mass (61a) over such rows, and the force increments spread to the
 // coefficients through rows and applied as (60) (coefficient_increments, which the rigid tools'
-// pass of particle_to_segment.hpp uses too). Per-particle scratch sized once, so a step
-// allocates nothing.
+// pass of particle_to_segment.hpp uses too). The surfaces themselves are the model's
+// (model_bodies::surface). Per-particle scratch sized once, so a step allocates nothing.
 
 #include <algorithm>
 #include <cmath>
-#include <string_view>
 #include <span>
 #include <utility>
 #include <vector>
@@ -18,25 +16,9 @@
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
-#include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm::contact {
-
-// The bodies' surfaces as chains of particles (discretization/boundary_chains.hpp): the cells'
-// boundaries, without the axis of an axisymmetric section (particles with r below 1e-9 of the
-// bodies' size). `who` names the pass in the error for a mesh whose nodes are not the particles.
-inline std::vector<boundary_chain> surface_chains(const contact_body& body, std::string_view who) {
-  const std::span<const vec2> X = body.reference_position;
-  if (body.mesh->node.size() != X.size())
-    fail("{}: the surfaces' vertices must be particles, but the mesh has {} nodes for {} particles; give the "
-         "particles at the mesh nodes",
-         who, body.mesh->node.size(), X.size());
-  double size = 0.0;
-  for (const vec2& x : X) size = std::max(size, x.cwiseAbs().maxCoeff());
-  const double axis = 1e-9 * size;
-  return boundary_chains(*body.mesh, [&](index_t i) { return body.axisymmetric && X[i][0] <= axis; });
-}
 
 // Force increments on the coefficients, gathered through shape-function rows and applied as
 // (60); only the coefficients touched are visited. Used by every contact pass. Sized by the

@@ -3,7 +3,7 @@
 // docs/method.md section 6.9). Particle-to-segment contact checks the body's particles against
 // the tool's segments, so a sharp tool corner can slip between two surface particles into the
 // body. This pass checks each tool vertex P (at its position at t_n+1) against the boundary chains
-// of every body (discretization/boundary_chains.hpp): a vertex behind segment a-b of a body
+// of every body (discretization/model_bodies.hpp): a vertex behind segment a-b of a body
 // (surface_search.hpp, the nearest of all the segments),
 //   lambda = (P - x_a) . t / |t|^2 in [0, 1],   g = -(P - x_a) . n in (0, depth],
 // pushes the body's contact point x_c = (1 - lambda) x_a + lambda x_b out of the tool, along -n,
@@ -26,7 +26,7 @@
 #include <rkpm/contact/surface_scratch.hpp>
 #include <rkpm/contact/surface_search.hpp>
 #include <rkpm/core/error.hpp>
-#include <rkpm/discretization/boundary_chains.hpp>
+#include <rkpm/discretization/model_bodies.hpp>
 
 namespace rkpm::contact {
 
@@ -37,12 +37,12 @@ class tool_vertex_contact {
   // The bodies' surfaces, from the cells; their vertices must be particles.
   void setup(const contact_body& body, std::size_t tool_vertices) {
     enabled_ = true;
-    if (!body.mesh || !body.at_particles)
-      fail("tool vertices as slaves need the background cells and the shape functions at the particles; the "
+    if (!body.bodies || !body.at_particles)
+      fail("tool vertices as slaves need the model's bodies and the shape functions at the particles; the "
            "solver passes them in contact_body");
     const std::span<const vec2> X = body.reference_position;
     const auto n = static_cast<index_t>(X.size());
-    const auto chains = surface_chains(body, "tool vertices as slaves");
+    const auto& chains = body.bodies->surface("tool vertices as slaves");
     segment_.clear();
     std::vector<char> surface(n, 0);
     double shortest = INFINITY;

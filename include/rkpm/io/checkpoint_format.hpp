@@ -34,7 +34,8 @@ inline constexpr std::string_view checkpoint_magic = "RKPMCKPT";
 // Raise whenever the header or a section is added, removed, reordered or changes its value type.
 // 2: F, tau and the J2 state as block entries (core/block_matrix.hpp), no points.F for J2.
 // 3: no points.det_F and points.stretch; no points.tau when the material recomputes tau.
-inline constexpr std::uint32_t checkpoint_format_version = 3;
+// 4: solver.tool_impulse (each tool's impulse since t = 0).
+inline constexpr std::uint32_t checkpoint_format_version = 4;
 inline constexpr std::string_view checkpoint_extension = ".rkpmcp";
 
 // What a checkpoint must match to be read into a solver.

@@ -1,6 +1,6 @@
 #pragma once
 // The discrete model of a problem with several bodies (docs/method.md section 3.1): each body,
-// the particles and cells of one connected part of the mesh (discretization/body_partition.hpp),
+// the particles and cells of one connected part of the mesh (found once: discretization/model_bodies.hpp),
 // gets its own model (neighbours searched within the body only, so kernels never reach across
 // bodies; VCI and SCNI corrections per body), and the models are joined into one: particles and
 // cells keep the problem's numbering, the points follow body by body. The time loop then steps
@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include <rkpm/discretization/body_partition.hpp>
+#include <rkpm/discretization/model_bodies.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm {
@@ -26,9 +26,9 @@ struct body_part {
 };
 
 inline body_part extract_body(const particle_set<2>& particles, const background_mesh& mesh,
-                              const body_partition& part, index_t b) {
+                              const model_bodies& bodies, index_t b) {
   body_part out;
-  out.particle = part.particles_of(b);
+  out.particle = bodies.particles_of(b);
   for (index_t I : out.particle) {
     out.particles.position.push_back(particles.position[I]);
     out.particles.volume.push_back(particles.volume[I]);
@@ -36,7 +36,7 @@ inline body_part extract_body(const particle_set<2>& particles, const background
   }
   std::vector<index_t> local_node(mesh.node.size(), -1);
   for (index_t c = 0; c < mesh.cells(); ++c) {
-    if (part.cell_body[c] != b) continue;
+    if (bodies.of_cell(c) != b) continue;
     std::array<stored_index, 4> cell{};
     for (int k = 0; k < 4; ++k) {
       index_t& n = local_node[mesh.cell[c][k]];
@@ -69,19 +69,23 @@ template <Kernel K, Correction C, Quadrature Q, Geometry G>
 discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh mesh,
                                      double max_condition = default_max_moment_condition) {
   particles.validate();
-  const body_partition part = partition_bodies(particles.position, mesh);
-  if (part.bodies == 1) return build_discrete_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition);
+  model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
+  if (bodies.count() == 1) {
+    discrete_model m = detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition);
+    m.bodies = std::move(bodies);
+    return m;
+  }
 
   const index_t n = particles.size();
   discrete_model joined;
   joined.lumped_volume.assign(n, 0.0);
   std::vector<detail::body_part> parts;
   std::vector<discrete_model> models;
-  for (index_t b = 0; b < part.bodies; ++b) {
-    parts.push_back(detail::extract_body(particles, mesh, part, b));
-    models.push_back(build_discrete_model<K, C, Q, G>(parts[b].particles, parts[b].mesh, max_condition));
+  for (index_t b = 0; b < bodies.count(); ++b) {
+    parts.push_back(detail::extract_body(particles, mesh, bodies, b));
+    models.push_back(detail::build_one_model<K, C, Q, G>(parts[b].particles, parts[b].mesh, max_condition));
   }
-  for (index_t b = 0; b < part.bodies; ++b) {
+  for (index_t b = 0; b < bodies.count(); ++b) {
     const discrete_model& m = models[b];
     for (index_t q = 0; q < m.point_count(); ++q) {
       joined.points.position.push_back(m.points.position[q]);
@@ -94,16 +98,18 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
   }
   // Rows at the particles in the problem's order.
   std::vector<index_t> local(n);
-  for (index_t b = 0; b < part.bodies; ++b)
+  for (index_t b = 0; b < bodies.count(); ++b)
     for (index_t i = 0; i < static_cast<index_t>(parts[b].particle.size()); ++i) local[parts[b].particle[i]] = i;
   for (index_t I = 0; I < n; ++I) {
-    const index_t b = part.particle_body[I];
+    const index_t b = bodies.of_particle(I);
     detail::append_row(models[b].at_particles, local[I], parts[b].particle, joined.at_particles);
   }
   joined.traversal = make_point_traversal(joined.at_points, n);
   joined.own = ownership::single_process(n, joined.point_count());
   joined.particles = std::move(particles);
   joined.mesh = std::move(mesh);
+  joined.bodies = std::move(bodies);
+  joined.bodies.find_point_bodies(joined.points);
   return joined;
 }
 

@@ -39,15 +39,10 @@ void add_axis_constraints(const discrete_model& m, double relative_tolerance,
 // With the rows N_I(X_J) of each slave J.
 inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t> slaves, bool with_contact) {
   if (slaves.empty() && with_contact) {
-    const auto& mesh = m.mesh;
-    const bool nodes_are_particles =
-        static_cast<index_t>(mesh.node.size()) == m.particle_count() &&
-        std::equal(mesh.node.begin(), mesh.node.end(), m.particles.position.begin(),
-                   [](const vec2& a, const vec2& b) { return (a - b).norm() <= 1e-12 * (1.0 + a.norm()); });
-    if (!nodes_are_particles)
+    if (!m.bodies.nodes_are_particles())
       fail("contact needs slave particles: the mesh nodes are not the particles, so give "
            "problem.slave_particles (the boundary particles) explicitly");
-    slaves = mesh.boundary_nodes();
+    slaves = m.mesh.boundary_nodes();
   }
   contact_slaves out;
   auto& t = out.table;

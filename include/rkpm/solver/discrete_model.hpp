@@ -16,12 +16,15 @@
 //                        gradients. The deformation gradient always uses at_points.grad.
 //   own                  the particles and points this process owns, and its ghost particles
 //                        (core/execution.hpp; one process: all owned, no ghosts)
+//   bodies               the bodies: each particle's, cell's and point's, their surfaces
+//                        (discretization/model_bodies.hpp), found once by the builder
 // For a nodal rule (scni, docs/method.md section 3.6) the points are those of the smoothing
 // cells and at_points.grad holds the smoothed gradients, trial and test alike (test_gradient
 // stays empty); at_points.N stays the shape functions at the points, for the hoop term, the
 // lumped volumes and the projections.
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
@@ -29,6 +32,7 @@
 #include <rkpm/core/execution.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
+#include <rkpm/discretization/model_bodies.hpp>
 #include <rkpm/discretization/point_traversal.hpp>
 #include <rkpm/discretization/vci_gradients.hpp>
 #include <rkpm/discretization/quadrature_points.hpp>
@@ -47,6 +51,7 @@ struct discrete_model {
   std::vector<double> lumped_volume;
   std::vector<vec2> test_gradient;
   ownership own;
+  model_bodies bodies;
 
   index_t particle_count() const { return particles.size(); }
   index_t point_count() const { return points.size(); }
@@ -117,9 +122,11 @@ discrete_model build_nodal_model(particle_set<2> particles, background_mesh mesh
   return m;
 }
 
+namespace detail {
+
+// One model over all the particles and cells, without its bodies.
 template <Kernel K, Correction C, Quadrature Q, Geometry G>
-discrete_model build_discrete_model(particle_set<2> particles, background_mesh mesh,
-                                    double max_condition = default_max_moment_condition) {
+discrete_model build_one_model(particle_set<2> particles, background_mesh mesh, double max_condition) {
   check_body(particles, mesh);
   if constexpr (NodalRule<Q>) {
     return build_nodal_model<K, C, G>(std::move(particles), std::move(mesh), Q::stabilization, Q::edge_points,
@@ -134,6 +141,37 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
           G::is_axisymmetric);
     return m;
   }
+}
+
+}  // namespace detail
+
+// The model with one set of shape functions over all the cells (with several bodies the kernels
+// reach across them; build_model_of_bodies in solver/body_models.hpp keeps them apart).
+template <Kernel K, Correction C, Quadrature Q, Geometry G>
+discrete_model build_discrete_model(particle_set<2> particles, background_mesh mesh,
+                                    double max_condition = default_max_moment_condition) {
+  particles.validate();
+  model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
+  discrete_model m = detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition);
+  m.bodies = std::move(bodies);
+  m.bodies.find_point_bodies(m.points);
+  return m;
+}
+
+// A model builder with its method fixed (make_solver's): the model of particles in cells, with
+// the moment-matrix conditioning limit. A solver keeps the one it was built with, so that its
+// tables can be built again on another particle set (model_factory()).
+using model_factory =
+    std::function<discrete_model(particle_set<2> particles, background_mesh mesh, double max_condition)>;
+
+// The model with its bodies found, if it was assembled without a builder that finds them.
+template <Geometry G>
+discrete_model with_bodies(discrete_model m) {
+  if (!m.bodies.found()) {
+    m.bodies = model_bodies(m.particles.position, m.mesh, G::is_axisymmetric);
+    m.bodies.find_point_bodies(m.points);
+  }
+  return m;
 }
 
 // Lumped masses m_I = rho0 V_I (docs/method.md section 5).

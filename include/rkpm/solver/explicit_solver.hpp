@@ -46,8 +46,10 @@ class explicit_solver {
   using contact_type = Ct;
   using state_type = typename M::state_type;
 
-  explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options)
-      : model_(std::move(model)),
+  // `factory`: the builder `model` came from (make_solver passes it), kept for model_builder().
+  explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options, model_factory factory = {})
+      : model_(with_bodies<G>(std::move(model))),
+        factory_(std::move(factory)),
         materials_(model_, std::move(prob.material), std::move(prob.body_materials)),
         contact_{std::move(prob.contact)},
         options_(options) {
@@ -60,7 +62,6 @@ class explicit_solver {
     body_force_ = prob.body_force;
     sums_ = block_sums<2>(model_.own.particles.size());  // owned particles come first
     points_ = point_materials<G, M>(model_, materials_);
-
     add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
     constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
     d_start_.resize(constraints_.touched().size());
@@ -68,7 +69,6 @@ class explicit_solver {
     initial_velocities(model_, prob, v_);
     constraints_.apply(0.0, v_);
     v_half_prev_ = v_;
-
     compute_internal_force();
     for (index_t I = 0; I < n; ++I) a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
     timeline_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
@@ -165,14 +165,17 @@ class explicit_solver {
   const energy_balance& energy() const { return energy_; }
   const run_options& options() const { return options_; }
   const discrete_model& model() const { return model_; }
-  // The material of body b (problem::body_materials[b]; body 0: problem::material when the
-  // problem gave no body_materials), the bodies and the body of particle I.
+  // The builder of model() with its method (empty if none was given): the tables on new particles.
+  const model_factory& model_builder() const { return factory_; }
+  // Body b's material (problem::body_materials[b], or problem::material), the bodies, I's body.
   const M& material(index_t b = 0) const { return materials_.of_body(b); }
-  index_t bodies() const { return materials_.bodies(); }
-  index_t body_of_particle(index_t I) const { return materials_.body_of_particle(I); }
+  index_t bodies() const { return model_.bodies.count(); }
+  index_t body_of_particle(index_t I) const { return model_.bodies.of_particle(I); }
   const Ct& contact() const { return contact_.policy; }
   Ct& contact() { return contact_.policy; }
   const contact_result& last_contact() const { return contact_.last; }
+  // Each tool's impulse since t = 0 (N s): the mean force over [t1, t2] is (I(t2) - I(t1)) / (t2 - t1).
+  const std::vector<vec2>& tool_impulses() const { return contact_.impulse; }
   double max_penetration() const { return contact_.max_penetration; }
   const std::vector<double>& mass() const { return mass_; }
   const std::vector<vec2>& coefficients() const { return d_; }
@@ -184,9 +187,7 @@ class explicit_solver {
   const constraint_projector& constraints() const { return constraints_; }
   const std::vector<index_t>& slave_particles() const { return contact_.slaves; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
-  contact_body body() const {
-    return {model_.particles.position, mass_, &model_.mesh, &model_.at_particles, G::is_axisymmetric};
-  }
+  contact_body body() const { return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles}; }
 
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
@@ -214,12 +215,10 @@ class explicit_solver {
                                {"solver.f_int", &s.f_int_}, {"solver.v_half_prev", &s.v_half_prev_}})
       a.array(name, *field);
     a.value("solver.energy", s.energy_);
-    a.value("solver.last_contact", s.contact_.last);
-    a.value("solver.max_penetration", s.contact_.max_penetration);
-    a.part(s.timeline_);       // solver.time, dt, dt_min, dt_max, steps
-    a.part(s.points_);  // material states, then the time-step controller and the contact
+    a.part(s.timeline_);  // solver.time, dt, dt_min, dt_max, steps
+    a.part(s.points_);    // material states
     a.part(s.clock_);
-    a.part(s.contact_.policy);
+    a.part(s.contact_);   // what the run reports of contact, then the policy's state
   }
 
   vec2 external_force(index_t I) const { return mass_[I] * body_force_; }
@@ -232,6 +231,7 @@ class explicit_solver {
   }
 
   discrete_model model_;
+  model_factory factory_;
   materials_by_body<M> materials_;
   contact_stage<Ct> contact_;
   run_options options_;

@@ -59,7 +59,7 @@ class point_materials {
         tau_(stress_recomputed ? 0 : m.point_count(), block_matrix::of(mat3::Zero())),
         F_(state_records_F ? 0 : m.point_count()),
         tile_(m.traversal.tiles()) {
-    if (material.bodies() > 1)
+    if (material.count() > 1)
       for (index_t q = 0; q < m.point_count(); ++q) state_[q] = material.at_point(q).initial_state();
     support_inverse_.setZero();
     for (const vec2& a : m.particles.support) support_inverse_ += a;

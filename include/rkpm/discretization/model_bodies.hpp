@@ -1,0 +1,97 @@
+#pragma once
+// model_bodies: the bodies of a discrete model (docs/method.md section 3.1), found once when the
+// model is built and read by everything that asks which body a particle or point is in: the
+// materials per body, the contact between bodies, the slave selection, the solver's bodies()
+// and the case files' measures.
+//   of_particle, of_point   a particle's and a quadrature point's body (the partition of
+//                  discretization/body_partition.hpp; no table is kept for one body)
+//   nodes_are_particles     whether the particles are the mesh nodes
+//   surface()      each body's boundary chains (discretization/boundary_chains.hpp) without the
+//                  axis of an axisymmetric section: the master surfaces of contact between bodies
+//                  and the surfaces tool vertices are checked against. Their vertices are
+//                  particles only when the particles are the mesh nodes; otherwise, or when the
+//                  cells' boundary is not a set of chains, surface() refuses with the reason.
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/discretization/body_partition.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
+#include <rkpm/discretization/quadrature_points.hpp>
+
+namespace rkpm {
+
+class model_bodies {
+ public:
+  model_bodies() = default;
+
+  // The bodies of particles in cells; `axisymmetric`: the axis (r below 1e-9 of the bodies'
+  // size) is no surface.
+  model_bodies(std::span<const vec2> positions, const background_mesh& mesh, bool axisymmetric)
+      : partition_((mesh.validate(), partition_bodies(positions, mesh))) {
+    positions_count_ = positions.size();
+    if (partition_.bodies == 1) {  // nothing to look up: keep no table per particle and cell
+      partition_.particle_body = {};
+      partition_.cell_body = {};
+    }
+    if (!partition_.nodes_are_particles) {
+      surface_error_ = fmt::format("the mesh has {} nodes for {} particles at other positions; give the particles "
+                                   "at the mesh nodes",
+                                   mesh.node.size(), positions.size());
+      return;
+    }
+    double size = 0.0;
+    for (const vec2& x : positions) size = std::max(size, x.cwiseAbs().maxCoeff());
+    const double axis = 1e-9 * size;
+    try {
+      surface_ = boundary_chains(mesh, [&](index_t i) { return axisymmetric && positions[i][0] <= axis; });
+    } catch (const error& e) {
+      surface_error_ = e.what();
+    }
+  }
+
+  // Each point's body: its cell's.
+  void find_point_bodies(const quadrature_points& points) {
+    point_body_.clear();
+    if (count() < 2) return;
+    point_body_.resize(points.size());
+    for (index_t q = 0; q < points.size(); ++q)
+      point_body_[q] = static_cast<stored_index>(partition_.cell_body[points.cell[q]]);
+  }
+
+  // Whether the bodies were found (a model assembled by hand may not have them).
+  bool found() const { return partition_.bodies > 0; }
+  index_t count() const { return partition_.bodies; }
+  index_t of_particle(index_t I) const { return count() < 2 ? 0 : partition_.particle_body[I]; }
+  index_t of_cell(index_t c) const { return count() < 2 ? 0 : partition_.cell_body[c]; }
+  index_t of_point(index_t q) const { return point_body_.empty() ? 0 : point_body_[q]; }
+  // Each particle's and point's body; empty with one body.
+  const std::vector<index_t>& particle_body() const { return partition_.particle_body; }
+  const std::vector<stored_index>& point_body() const { return point_body_; }
+  bool nodes_are_particles() const { return partition_.nodes_are_particles; }
+  // The particles of body b, ascending.
+  std::vector<index_t> particles_of(index_t b) const {
+    std::vector<index_t> out;
+    for (index_t I = 0; I < static_cast<index_t>(positions_count_); ++I)
+      if (of_particle(I) == b) out.push_back(I);
+    return out;
+  }
+
+  // The bodies' surfaces as chains of particles; `who` names the caller in the refusal.
+  const std::vector<boundary_chain>& surface(std::string_view who) const {
+    if (!surface_error_.empty()) fail("{}: the bodies' surfaces are not chains of particles: {}", who, surface_error_);
+    return surface_;
+  }
+
+ private:
+  body_partition partition_;
+  std::size_t positions_count_ = 0;
+  std::vector<stored_index> point_body_;
+  std::vector<boundary_chain> surface_;
+  std::string surface_error_;  // why there is no surface, if there is none
+};
+
+}  // namespace rkpm
