@@ -57,7 +57,10 @@ void add_run_options(CLI::App* sub, run_request& r) {
   sub->add_option("--correction", r.correction, "correction order")
       ->check(CLI::IsMember(policy_names(corrections)))
       ->capture_default_str();
-  sub->add_option("--contact", r.contact, "contact enforcement")
+  // The contact's enforcement only: the tools, friction and body pairs come from the case.
+  // --contact is the name it had first.
+  sub->add_option("--enforcement,--contact", r.contact,
+                  "how contact forces are computed (the tools and friction come from the case)")
       ->check(CLI::IsMember(policy_names(enforcements)))
       ->capture_default_str();
   sub->add_option("--resolution", r.resolution,
@@ -92,7 +95,7 @@ void add_run_options(CLI::App* sub, run_request& r) {
 
 // The options given on the command line, which a case file or a checkpoint must not override.
 void record_given_options(const CLI::App* sub, run_request& r) {
-  for (const char* name : {"--quadrature", "--kernel", "--correction", "--contact", "--resolution", "--set"})
+  for (const char* name : {"--quadrature", "--kernel", "--correction", "--enforcement", "--resolution", "--set"})
     if (sub->count(name) > 0) r.given.emplace_back(name);
 }
 
@@ -180,7 +183,7 @@ void adopt_checkpoint_run(run_request& r, const nlohmann::ordered_json& descript
   adopt("--kernel", r.kernel, "kernel");
   adopt("--correction", r.correction, "correction");
   adopt("--quadrature", r.quadrature, "quadrature");
-  adopt("--contact", r.contact, "contact");
+  adopt("--enforcement", r.contact, "contact");
   const int resolution = description.at("resolution").get<int>();
   if (std::ranges::find(r.given, "--resolution") != r.given.end() && r.resolution != resolution)
     fail("--resolution {}: the checkpoint was run at resolution {}, and a restart continues the same problem "

@@ -36,7 +36,7 @@ run_outcome run_case_file(const run_request& request) {
     if (!given("--kernel")) r.kernel = c.method.kernel;
     if (!given("--correction")) r.correction = c.method.correction;
     if (!given("--quadrature")) r.quadrature = c.method.quadrature;
-    if (!given("--contact")) r.contact = c.method.contact;
+    if (!given("--enforcement")) r.contact = c.method.contact;
   }
   if (r.end_time) {
     c.end_time = *r.end_time;

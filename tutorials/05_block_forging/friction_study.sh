@@ -21,7 +21,7 @@ for K in $resolutions; do
     d="$out/$contact-r$K-mu$mu"
     grep -qs '"status": "completed"' "$d/summary.json" && continue
     echo "block_forging, $contact, resolution $K, mu = $mu"
-    OMP_NUM_THREADS=1 "$run" block_forging --quadrature q4 --contact "$contact" --resolution "$K" \
+    OMP_NUM_THREADS=1 "$run" block_forging --quadrature q4 --enforcement "$contact" --resolution "$K" \
       --set friction="$mu" --threads 1 --no-plots --quiet --out "$d"
     grep -qs '"status": "completed"' "$d/summary.json" || { echo "the run in $d did not complete" >&2; exit 1; }
   done

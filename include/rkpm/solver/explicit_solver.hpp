@@ -47,90 +47,9 @@ class explicit_solver {
   using state_type = typename M::state_type;
 
   // `factory`: the builder `model` came from (make_solver passes it), kept for model_builder().
-  explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options, model_factory factory = {})
-      : model_(with_bodies<G>(std::move(model))),
-        factory_(std::move(factory)),
-        materials_(model_, std::move(prob.material), std::move(prob.body_materials)),
-        contact_{std::move(prob.contact)},
-        options_(options) {
-    options_.validate();
-    model_.own.validate(model_.particle_count(), model_.point_count());
-    const index_t n = model_.particle_count();
-    mass_ = materials_.lumped_masses(model_);
-    d_.assign(n, vec2::Zero());
-    v_ = a_ = v_half_prev_ = f_int_ = d_;
-    body_force_ = prob.body_force;
-    sums_ = block_sums<2>(model_.own.particles.size());  // owned particles come first
-    points_ = point_materials<G, M>(model_, materials_);
-    add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
-    constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
-    d_start_.resize(constraints_.touched().size());
-    contact_.setup(model_, body(), std::move(prob.slave_particles));
-    initial_velocities(model_, prob, v_);
-    constraints_.apply(0.0, v_);
-    v_half_prev_ = v_;
-    compute_internal_force();
-    for (index_t I = 0; I < n; ++I) a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
-    timeline_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
-    timeline_.check_budget(options_);
-    energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
-    energy_.record();
-  }
-
+  explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options, model_factory factory = {});
   // ---- stepping ----------------------------------------------------------------------
-  void step() {
-    const double dt = timeline_.begin_step();
-    const index_range owned = model_.own.particles;
-    const std::vector<index_t>& constrained = constraints_.touched();
-    for (std::size_t k = 0; k < constrained.size(); ++k) d_start_[k] = d_[constrained[k]];
-    // a(n) is spent once v(n+1/2) is predicted, until a(n+1) below: with contact it holds the
-    // velocities before the contact corrections, for their work.
-    std::vector<vec2>& v_before = a_;
-    const bool tools = contact_.active();
-    exec::parallel_for(owned, [&](index_t I) {
-      v_[I] += 0.5 * dt * a_[I];
-      d_[I] += dt * v_[I];
-      if (tools) v_before[I] = v_[I];
-    });
-    exec::exchange(exchange_point::after_predictor, model_.own, d_, v_);
-    if (tools) energy_.contact += contact_.enforce(body(), timeline_.time + dt, dt, d_, v_, v_before, v_half_prev_, sums_);
-    if (constraints_.size() > 0) {
-      energy_.constraint += constraints_.apply_with_work(timeline_.time + 0.5 * dt, v_, mass_, v_half_prev_);
-      for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
-    }
-    exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
-    // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
-    // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
-    const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
-      v_half_prev_[I] = v_[I];
-      const vec2 dd = dt * v_[I];
-      s[0] += 0.5 * f_int_[I].dot(dd);
-      s[1] += external_force(I).dot(dd);
-    });
-
-    compute_internal_force();
-
-    // The kinetic energy here unless the constraints change v(n+1) afterwards.
-    const bool constrained_end = constraints_.size() > 0;
-    const auto [work_after, kinetic] = sums_([&](index_t I, block_sums<2>::sums& s) {
-      s[0] += 0.5 * f_int_[I].dot(dt * v_[I]);
-      a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
-      v_[I] += 0.5 * dt * a_[I];
-      if (!constrained_end) s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
-    });
-    energy_.internal += work_before + work_after;
-    energy_.external += external;
-    energy_.kinetic = kinetic;
-    if (constrained_end) {
-      energy_.constraint += constraints_.apply_with_work(timeline_.time + dt, v_, mass_, v_half_prev_);
-      energy_.kinetic = kinetic_energy();
-    }
-    timeline_.finish_step();
-    energy_.record();
-    if (timeline_.steps % options_.time_step_update_interval == 0)
-      timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
-                            points_.min_stretch(), options_, timeline_.time, timeline_.steps);
-  }
+  void step();
 
   // Steps to options.end_time, calling observe(*this) at the start, every `every` steps
   // (0: never in between) and at the end. Stops with an error past options.max_steps.
@@ -188,17 +107,12 @@ class explicit_solver {
   const std::vector<index_t>& slave_particles() const { return contact_.slaves; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
   contact_body body() const { return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles}; }
-
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
   // Physical displacements, velocities and current positions x_I = X_I + u(X_I).
   std::vector<vec2> particle_displacements() const { return values_at_particles(model_, d_); }
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
-  std::vector<vec2> particle_positions() const {
-    std::vector<vec2> x = values_at_particles(model_, d_);
-    for (index_t I = 0; I < model_.particle_count(); ++I) x[I] += model_.particles.position[I];
-    return x;
-  }
+  std::vector<vec2> particle_positions() const { return positions_at_particles(model_, d_); }
   template <class Value, class PointValue>
   std::vector<Value> project_to_particles(PointValue&& at_point) const {
     return rkpm::project_to_particles<Value>(model_, at_point);
@@ -246,5 +160,91 @@ class explicit_solver {
   energy_balance energy_;
   step_timeline timeline_;
 };
+
+// Set-up and step out of the class: a program may compile them once (solver/solver_instances.hpp).
+template <Geometry G, Material M, Contact Ct>
+explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options,
+                                           model_factory factory)
+    : model_(with_bodies<G>(std::move(model))),
+      factory_(std::move(factory)),
+      materials_(model_, std::move(prob.material), std::move(prob.body_materials)),
+      contact_{std::move(prob.contact)},
+      options_(options) {
+  options_.validate();
+  model_.own.validate(model_.particle_count(), model_.point_count());
+  const index_t n = model_.particle_count();
+  mass_ = materials_.lumped_masses(model_);
+  d_.assign(n, vec2::Zero());
+  v_ = a_ = v_half_prev_ = f_int_ = d_;
+  body_force_ = prob.body_force;
+  sums_ = block_sums<2>(model_.own.particles.size());  // owned particles come first
+  points_ = point_materials<G, M>(model_, materials_);
+  add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
+  constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
+  d_start_.resize(constraints_.touched().size());
+  contact_.setup(model_, body(), std::move(prob.slave_particles));
+  initial_velocities(model_, prob, v_);
+  constraints_.apply(0.0, v_);
+  v_half_prev_ = v_;
+  compute_internal_force();
+  for (index_t I = 0; I < n; ++I) a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
+  timeline_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
+  timeline_.check_budget(options_);
+  energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
+  energy_.record();
+}
+
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::step() {
+  const double dt = timeline_.begin_step();
+  const index_range owned = model_.own.particles;
+  const std::vector<index_t>& constrained = constraints_.touched();
+  for (std::size_t k = 0; k < constrained.size(); ++k) d_start_[k] = d_[constrained[k]];
+  // a(n) is spent once v(n+1/2) is predicted, until a(n+1) below: with contact it holds the
+  // velocities before the contact corrections, for their work.
+  std::vector<vec2>& v_before = a_;
+  const bool tools = contact_.active();
+  exec::parallel_for(owned, [&](index_t I) {
+    v_[I] += 0.5 * dt * a_[I];
+    d_[I] += dt * v_[I];
+    if (tools) v_before[I] = v_[I];
+  });
+  exec::exchange(exchange_point::after_predictor, model_.own, d_, v_);
+  if (tools) energy_.contact += contact_.enforce(body(), timeline_.time + dt, dt, d_, v_, v_before, v_half_prev_, sums_);
+  if (constraints_.size() > 0) {
+    energy_.constraint += constraints_.apply_with_work(timeline_.time + 0.5 * dt, v_, mass_, v_half_prev_);
+    for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
+  }
+  exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
+  // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
+  // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
+  const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
+    v_half_prev_[I] = v_[I];
+    const vec2 dd = dt * v_[I];
+    s[0] += 0.5 * f_int_[I].dot(dd);
+    s[1] += external_force(I).dot(dd);
+  });
+  compute_internal_force();
+  // The kinetic energy here unless the constraints change v(n+1) afterwards.
+  const bool constrained_end = constraints_.size() > 0;
+  const auto [work_after, kinetic] = sums_([&](index_t I, block_sums<2>::sums& s) {
+    s[0] += 0.5 * f_int_[I].dot(dt * v_[I]);
+    a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
+    v_[I] += 0.5 * dt * a_[I];
+    if (!constrained_end) s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
+  });
+  energy_.internal += work_before + work_after;
+  energy_.external += external;
+  energy_.kinetic = kinetic;
+  if (constrained_end) {
+    energy_.constraint += constraints_.apply_with_work(timeline_.time + dt, v_, mass_, v_half_prev_);
+    energy_.kinetic = kinetic_energy();
+  }
+  timeline_.finish_step();
+  energy_.record();
+  if (timeline_.steps % options_.time_step_update_interval == 0)
+    timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
+                          points_.min_stretch(), options_, timeline_.time, timeline_.steps);
+}
 
 }  // namespace rkpm

@@ -19,6 +19,13 @@ inline std::vector<vec2> values_at_particles(const discrete_model& m, const std:
 
 // at_point(q) carried to the particles by the lumped L2 projection.
 // One serial pass over the points: each particle's sum runs over its points in ascending order.
+// Current positions x_I = X_I + sum_J N_J(X_I) d_J.
+inline std::vector<vec2> positions_at_particles(const discrete_model& m, const std::vector<vec2>& d) {
+  std::vector<vec2> x = values_at_particles(m, d);
+  for (index_t I = 0; I < m.particle_count(); ++I) x[I] += m.particles.position[I];
+  return x;
+}
+
 template <class Value, class PointValue>
 std::vector<Value> project_to_particles(const discrete_model& m, PointValue&& at_point) {
   const auto& t = m.at_points;

@@ -38,3 +38,8 @@ solver_for<Config> make_solver(problem_for<Config> p, const run_options& options
 }
 
 }  // namespace rkpm
+
+// The solvers a program compiled once, declared extern (solver/solver_instances.hpp).
+#ifdef RKPM_EXTERN_SOLVERS
+#include <rkpm/solver/solver_instances.hpp>
+#endif
