@@ -143,22 +143,24 @@ class johnson_cook {
     }
     const double T = s.temperature;
     const double eps_p = s.equivalent_plastic_strain;
-    if (flow_.thermal_factor(T) == 0.0) {  // molten: sigma_y = 0, the whole deviator returns
+    const auto law = flow_.at_temperature(T);  // the step's temperature, its factor once
+    if (law.theta == 0.0) {  // molten: sigma_y = 0, the whole deviator returns
       s.equivalent_plastic_strain = eps_p + t.q / (3.0 * mu_);
       s.elastic_left_cauchy_green = isotropic(t.volumetric);
       return mat3::Identity() * (bulk_ * t.volumetric);
     }
-    const double yield = flow_.flow_stress(eps_p, flow_point{0.0, T});
+    const double yield = law.flow_stress(eps_p, flow_point{0.0, T});
     if (!(t.q > yield)) {
       s.elastic_left_cauchy_green = t.b;
       return hencky_stress(t.frame, t.volumetric, t.dev);
     }
-    const radial_return_result rr = radial_return(flow_, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
+    const radial_return_result rr = radial_return(law, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
                                                   material_step{step.dt, step.time, T});
     const double dgamma = rr.increment;
     const flow_point at{step.dt > 0.0 ? dgamma / step.dt : 0.0, T};
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
-    const double work = flow_.integral(eps_p, eps_p + dgamma, at);  // (32) at the step's rate and T
+    // (32) at the step's rate and T: the exact integral of the strain term.
+    const double work = flow_.integral(eps_p, eps_p + dgamma, at);
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
     s.temperature = T + heat_per_work_ * work;  // (40a)

@@ -87,6 +87,30 @@ struct johnson_cook {
     if (!(rate > reference_rate)) return 0.0;
     return strain_factor(eps_p) * C / rate * thermal_factor(at.temperature);
   }
+  // The law at one temperature, 1 - T*^m evaluated once: what the return mapping of a step
+  // iterates on (the temperature of a step is that of its start, material/johnson_cook.hpp),
+  // so that each Newton update costs the strain and rate terms only.
+  struct at_temperature_t {
+    static constexpr std::string_view name = "johnson_cook";
+    const johnson_cook* law;
+    double theta;  // 1 - T*^m
+    double flow_stress(double eps_p, const flow_point& at) const {
+      return law->strain_factor(eps_p) * law->rate_factor(at.plastic_strain_rate) * theta;
+    }
+    double slope(double eps_p, const flow_point& at) const {
+      if (theta == 0.0) return 0.0;
+      const double d = eps_p > 0.0 ? law->n * law->B * std::pow(eps_p, law->n - 1.0)
+                                   : (law->n < 1.0 && law->B > 0.0 ? std::numeric_limits<double>::infinity() : law->B);
+      return d * law->rate_factor(at.plastic_strain_rate) * theta;
+    }
+    double rate_slope(double eps_p, const flow_point& at) const {
+      const double rate = at.plastic_strain_rate;
+      if (!(rate > law->reference_rate)) return 0.0;
+      return law->strain_factor(eps_p) * law->C / rate * theta;
+    }
+  };
+  at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
+
   // The plastic work per unit volume int_from^to sigma_y de at a fixed rate and temperature (the
   // step's, docs/method.md (32)): (1 + C ln rate*)(1 - T*^m) (A (to - from) + B (to^(n+1) -
   // from^(n+1)) / (n + 1)).
