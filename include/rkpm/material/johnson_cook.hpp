@@ -159,8 +159,8 @@ class johnson_cook {
     const double dgamma = rr.increment;
     const flow_point at{step.dt > 0.0 ? dgamma / step.dt : 0.0, T};
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
-    // (32) at the step's rate and T: the exact integral of the strain term.
-    const double work = flow_.integral(eps_p, eps_p + dgamma, at);
+    // (32) at the step's rate and T: the exact integral, from the flow stresses at both ends.
+    const double work = law.integral(eps_p, eps_p + dgamma, yield, rr.flow_stress, at.plastic_strain_rate);
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
     s.temperature = T + heat_per_work_ * work;  // (40a)

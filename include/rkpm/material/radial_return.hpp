@@ -49,7 +49,11 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     const double eps_p = eps_p_n + dg;
     if constexpr (requires { hardening.slope(eps_p, flow); })
       return hardening.slope(eps_p, flow);
-    else if constexpr (hardens_with_state<H>)
+    else if constexpr (requires { hardening.slopes_at_flow(eps_p, at(dg), flow); }) {
+      // Both slopes of a rate-dependent law from its flow stress (johnson_cook: no pow).
+      const auto [strain_slope, rate_slope] = hardening.slopes_at_flow(eps_p, at(dg), flow);
+      return strain_slope + (step.dt > 0.0 ? rate_slope / step.dt : 0.0);
+    } else if constexpr (hardens_with_state<H>)
       return slope_at(hardening, eps_p, at(dg)) +
              (step.dt > 0.0 ? rate_slope_at(hardening, eps_p, at(dg)) / step.dt : 0.0);
     else

@@ -143,6 +143,13 @@ TEST_CASE("johnson_cook flow stress: rate term never below 1, T* clamped to [0, 
       for (int i = 1; i < n; ++i) simpson += (i % 2 ? 4.0 : 2.0) * l.flow_stress(a + (b - a) * i / n, at);
       simpson *= (b - a) / (3.0 * n);
       CHECK(l.integral(a, b, at) == doctest::Approx(simpson).epsilon(1e-10));
+      // What the return mapping uses: the same integral and slopes from the flow stresses it knows.
+      const auto iso = l.at_temperature(at.temperature);
+      CHECK(iso.integral(a, b, l.flow_stress(a, {0.0, at.temperature}), l.flow_stress(b, at), at.plastic_strain_rate) ==
+            doctest::Approx(simpson).epsilon(1e-10));
+      const auto [strain_slope, rate_slope] = iso.slopes_at_flow(e, at, l.flow_stress(e, at));
+      CHECK(strain_slope == doctest::Approx(l.slope(e, at)).epsilon(1e-12));
+      CHECK(rate_slope == doctest::Approx(l.rate_slope(e, at)).epsilon(1e-12));
     }
 }
 

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <string_view>
+#include <utility>
 
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
@@ -107,6 +108,24 @@ struct johnson_cook {
       const double rate = at.plastic_strain_rate;
       if (!(rate > law->reference_rate)) return 0.0;
       return law->strain_factor(eps_p) * law->C / rate * theta;
+    }
+    // slope and rate_slope at a point whose flow stress `flow` is known, without a pow:
+    // B eps_p^n R theta = flow - A R theta, and (A + B eps_p^n) theta = flow / R.
+    std::pair<double, double> slopes_at_flow(double eps_p, const flow_point& at, double flow) const {
+      if (theta == 0.0) return {0.0, 0.0};
+      const double rate = at.plastic_strain_rate;
+      const double R = law->rate_factor(rate);
+      const double strain = eps_p > 0.0 ? law->n * (flow - law->A * R * theta) / eps_p : slope(eps_p, at);
+      return {strain, rate > law->reference_rate ? flow / R * law->C / rate : 0.0};
+    }
+    // The work integral (32) over [from, to] at the step's rate, from the flow stresses the
+    // return mapping found: flow_from at rate 0 and eps_p = from, flow_to at `rate` and to
+    // (to^(n+1) = to (flow_to / (R theta) - A) / B: no pow). theta > 0.
+    double integral(double from, double to, double flow_from, double flow_to, double rate) const {
+      const double R = law->rate_factor(rate);
+      const double A = law->A;
+      const double strain = A * (to - from) + (to * (flow_to / (R * theta) - A) - from * (flow_from / theta - A)) / (law->n + 1.0);
+      return strain * R * theta;
     }
   };
   at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
