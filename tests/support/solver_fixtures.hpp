@@ -259,7 +259,7 @@ energy_balance check_combination(int steps = 40, double time_step_fraction = 0.0
   constexpr bool kinematic = is_kinematic_contact<Ct>;
   CHECK(e.balance_error() < (kinematic ? 0.2 : 1e-2));
   CHECK(std::isfinite(e.kinetic + e.internal + e.contact + e.constraint));
-  // Adiabatic heating (material::johnson_cook, docs/method.md (40a)): over the body the heat,
+  // Adiabatic heating (material::johnson_cook, docs/method.md (32a)): over the body the heat,
   // sum_q w_q rho0 c_p (T_q - T0), is beta times the plastic work the ledger counts.
   using M = typename Cfg::material_type;
   if constexpr (requires(const M& m) { m.heat_per_work(); }) {

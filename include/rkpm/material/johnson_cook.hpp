@@ -4,20 +4,20 @@
 // radial return, j2_trial; the return mapping of radial_return.hpp) with the flow stress (24b)
 // of hardening::johnson_cook, evaluated at the point's temperature and at the rate dgamma / dt
 // its increment implies, and per point:
-//   - the temperature: rho0 c_p dT = beta dW_p (40a), dW_p = sigma_y deps_p the plastic work
+//   - the temperature: rho0 c_p dT = beta dW_p (32a), dW_p = sigma_y deps_p the plastic work
 //     per unit reference volume of the step (32) at the step's rate and temperature, beta the
 //     Taylor-Quinney fraction. The flow stress of a step uses the temperature at its start
 //     (explicit in T: the heat of a step softens the next one);
 //   - melt: at T >= T_melt the flow stress is 0, so the whole trial deviator returns (dgamma =
 //     q_trial / (3 mu)) and the point carries pressure only;
-//   - damage (optional): D += dgamma / eps_f (40b) with the failure strain
-//       eps_f = (D1 + D2 exp(D3 sigma*)) (1 + D4 ln max(rate*, 1)) (1 + D5 T*)          (40c)
+//   - damage (optional): D += dgamma / eps_f (32b) with the failure strain
+//       eps_f = (D1 + D2 exp(D3 sigma*)) (1 + D4 ln max(rate*, 1)) (1 + D5 T*)          (32c)
 //     and sigma* = (tr tau / 3) / q, the mean stress over the von Mises stress at the end of the
 //     step: POSITIVE IN TENSION (1/3 in uniaxial tension, -1/3 in uniaxial compression), as
 //     Johnson & Cook (Eng. Fract. Mech. 21 (1985) 31-48) define it, so that D3 < 0 makes
 //     tension the more damaging. A point with D >= 1 has failed: from then on it carries no
 //     deviatoric stress and no tension, tau = K theta 1 when theta = ln J < 0 and 0 otherwise
-//     (40d). eps_f <= 0 (possible with D1 < 0) fails the point at its next plastic step.
+//     (32d). eps_f <= 0 (possible with D1 < 0) fails the point at its next plastic step.
 // The temperature is the state's (the solver passes it back as material_step::temperature);
 // the state starts at the initial temperature. The heat is part of the plastic work that the
 // energy ledger already counts (no new balance term); failure removes stress, which the ledger's
@@ -60,14 +60,14 @@ struct johnson_cook_state {
   }
 };
 
-// Adiabatic heating (40a).
+// Adiabatic heating (32a).
 struct johnson_cook_heating {
   double specific_heat;                                              // c_p in J/(kg K)
   double taylor_quinney = 0.9;                                       // beta in [0, 1]
   double initial_temperature = std::numeric_limits<double>::quiet_NaN();  // K; NaN: the room temperature
 };
 
-// The failure strain (40c).
+// The failure strain (32c).
 struct johnson_cook_damage {
   double D1, D2, D3, D4, D5;
 
@@ -163,14 +163,14 @@ class johnson_cook {
     const double work = law.integral(eps_p, eps_p + dgamma, yield, rr.flow_stress, at.plastic_strain_rate);
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
-    s.temperature = T + heat_per_work_ * work;  // (40a)
+    s.temperature = T + heat_per_work_ * work;  // (32a)
     if (damage_ && dgamma > 0.0) {
       const double q = rr.flow_stress;  // sqrt(3/2) 2 mu |e^e| = sigma_y at the root
       const double triaxiality = q > 0.0 ? bulk_ * t.volumetric / q : 0.0;  // (tr tau / 3) / q
       const double r = at.plastic_strain_rate / flow_.reference_rate;
       const double eps_f =
           damage_->failure_strain(triaxiality, r > 1.0 ? std::log(r) : 0.0, flow_.homologous_temperature(T));
-      s.damage = eps_f > 0.0 ? s.damage + dgamma / eps_f : std::max(1.0, s.damage);  // (40b)
+      s.damage = eps_f > 0.0 ? s.damage + dgamma / eps_f : std::max(1.0, s.damage);  // (32b)
       if (s.failed()) {
         s.elastic_left_cauchy_green = isotropic(t.volumetric);
         return failed_stress(t.volumetric);
@@ -202,7 +202,7 @@ class johnson_cook {
   mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev) const {
     return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
   }
-  // (40d): pressure in compression only.
+  // (32d): pressure in compression only.
   mat3 failed_stress(double volumetric) const {
     return volumetric < 0.0 ? mat3(mat3::Identity() * (bulk_ * volumetric)) : mat3(mat3::Zero());
   }

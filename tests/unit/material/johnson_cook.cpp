@@ -3,12 +3,12 @@
 //   - one point in uniaxial stress (a coaxial path: the log-strain model is 1D plasticity, q =
 //     tau11) at a constant strain rate below and above the reference rate: the stress is the
 //     Johnson-Cook curve at the point's plastic strain and rate and at the temperature of the
-//     adiabatic ODE dT / deps_p = beta sigma_y / (rho c_p) integrated here by RK4 (40a);
+//     adiabatic ODE dT / deps_p = beta sigma_y / (rho c_p) integrated here by RK4 (32a);
 //   - with C = 0 and no heating, the forms of the existing laws: A = 0 from eps_p = eps0 is the
 //     power law K (eps0 + eps_p)^n, n = 1 is linear hardening (on a path that yields, unloads
 //     and yields again, with shear and a hoop stretch);
-//   - damage: a bar in uniaxial tension fails when eps_p reaches eps_f(sigma* = 1/3) (40c);
-//     after failure no stress in tension and the pressure K ln J in compression (40d);
+//   - damage: a bar in uniaxial tension fails when eps_p reaches eps_f(sigma* = 1/3) (32c);
+//     after failure no stress in tension and the pressure K ln J in compression (32d);
 //   - melt: no deviatoric stress; a return that cannot converge is an error; bad constants.
 #include <doctest/doctest.h>
 
