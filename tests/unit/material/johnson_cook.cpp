@@ -12,6 +12,8 @@
 //   - melt: no deviatoric stress; a return that cannot converge is an error; bad constants.
 #include <doctest/doctest.h>
 
+#include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
