@@ -48,6 +48,10 @@ M make_material(const material::elastic_constants& c) {
     return M(c, material::hardening::linear{0.002 * c.youngs_modulus, 0.01 * c.youngs_modulus});
   else if constexpr (std::is_same_v<M, material::j2_plasticity<material::hardening::power_law>>)
     return M(c, material::hardening::power_law{0.004 * c.youngs_modulus, 0.02, 0.3});
+  else if constexpr (std::is_same_v<M, material::johnson_cook>)  // copper's shape, with damage
+    return M(c, material::hardening::johnson_cook{0.001 * c.youngs_modulus, 0.003 * c.youngs_modulus, 0.31, 0.025,
+                                                  1.0, 1.09, 294.0, 1356.0},
+             material::johnson_cook_heating{383.0}, material::johnson_cook_damage{0.54, 4.89, -3.03, 0.014, 1.12});
   else
     return M{c};  // a test's own material, an aggregate of its elastic constants first
 }
@@ -255,6 +259,22 @@ energy_balance check_combination(int steps = 40, double time_step_fraction = 0.0
   constexpr bool kinematic = is_kinematic_contact<Ct>;
   CHECK(e.balance_error() < (kinematic ? 0.2 : 1e-2));
   CHECK(std::isfinite(e.kinetic + e.internal + e.contact + e.constraint));
+  // Adiabatic heating (material::johnson_cook, docs/method.md (32a)): over the body the heat,
+  // sum_q w_q rho0 c_p (T_q - T0), is beta times the plastic work the ledger counts.
+  using M = typename Cfg::material_type;
+  if constexpr (requires(const M& m) { m.heat_per_work(); }) {
+    const M m = make_material<M>(c);
+    const double T0 = m.initial_state().temperature;
+    double rise = 0.0, work = 0.0;
+    for (index_t q = 0; q < s.model().point_count(); ++q) {
+      rise += s.model().points.weight[q] * (s.point_states()[q].temperature - T0);
+      work += s.model().points.weight[q] * s.point_states()[q].plastic_work;
+    }
+    CHECK(work > 0.0);
+    CHECK(work == doctest::Approx(e.plastic).epsilon(1e-12));
+    CHECK(rise == doctest::Approx(m.heat_per_work() * work).epsilon(1e-12));
+    MESSAGE("mean temperature rise " << rise / s.model().points.weight.size() << " K-weight, plastic work " << work);
+  }
   const vec2 P = momentum();
   if constexpr (!has_contact) {
     if constexpr (G::is_axisymmetric) CHECK(std::abs(P[1] - P0[1]) < 1e-12 * P0.norm());

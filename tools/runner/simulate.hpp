@@ -168,6 +168,12 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   json& energy = summary["energy"];
   energy = json::object();
   for (const auto& [name, value] : io::energy_terms(s.energy())) energy[std::string(name)] = value;
+  // The material state's extremes (io/solver_output.hpp): the largest temperature, damage, the
+  // failed fraction of the points, when the material has them.
+  if (const auto points = io::state_summary(s); !points.empty()) {
+    json& state = summary["points"];
+    for (const auto& [k, v] : points) state[k] = v;
+  }
   json& results = summary["results"];  // the case's measures at the end of the run
   results = json::object();
   for (const auto& [k, v] : observe.last_measures()) results[k] = v;

@@ -6,10 +6,21 @@
 //                        them the printed numbers close the balance to the printed error;
 //   snapshot_fields(s)   the particle fields of a snapshot: displacement, velocity, Cauchy
 //                        stress, equivalent plastic strain, det F, and every extra double a
-//                        material state lists in `output_fields()` (temperature, damage, ...).
+//                        material state lists in `output_fields()` (temperature, damage, ...)
+//                        that is not NaN at every point (a state a material leaves unused);
+//   largest_state_field(s, name, in), failed_fraction(s, in)
+//                        the largest value of such a field over the points `in` selects, and
+//                        the fraction of them that have failed (a state with `failed()`);
+//   state_summary(s)     both over every point, by output name ("max_temperature_K",
+//                        "max_damage", "failed_fraction"), for a run's summary.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
 #include <string>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -56,11 +67,63 @@ point_data snapshot_fields(const Solver& s) {
   }));
   data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); }));
   if constexpr (has_output_fields<state_type>)
-    for (const auto& [name, member] : state_type::output_fields())
+    for (const auto& [name, member] : state_type::output_fields()) {
+      const auto& states = s.point_states();
+      if (std::all_of(states.begin(), states.end(), [m = member](const state_type& st) { return std::isnan(st.*m); }))
+        continue;
       data.add(std::string(name), s.template project_to_particles<double>([&, m = member](index_t q) {
-        return static_cast<double>(s.point_states()[q].*m);
+        return static_cast<double>(states[q].*m);
       }));
+    }
   return data;
+}
+
+// The largest value of the output field `name` over the points q with in(q) (NaN values left
+// out); NaN when there is none (no such field, or NaN at every point chosen).
+template <class Solver, class Select>
+double largest_state_field(const Solver& s, std::string_view name, Select in) {
+  using state_type = typename Solver::state_type;
+  double largest = std::numeric_limits<double>::quiet_NaN();
+  if constexpr (has_output_fields<state_type>)
+    for (const auto& [field, member] : state_type::output_fields()) {
+      if (field != name) continue;
+      const auto& states = s.point_states();
+      for (std::size_t q = 0; q < states.size(); ++q) {
+        const double v = states[q].*member;
+        if (in(q) && !std::isnan(v) && !(v <= largest)) largest = v;
+      }
+    }
+  return largest;
+}
+
+// The fraction of the points q with in(q) whose state has failed (0 for a state that cannot).
+template <class Solver, class Select>
+double failed_fraction(const Solver& s, Select in) {
+  std::size_t chosen = 0, failed = 0;
+  const auto& states = s.point_states();
+  for (std::size_t q = 0; q < states.size(); ++q) {
+    if (!in(q)) continue;
+    ++chosen;
+    if constexpr (requires { states[q].failed(); }) failed += states[q].failed() ? 1 : 0;
+  }
+  return chosen > 0 ? static_cast<double>(failed) / static_cast<double>(chosen) : 0.0;
+}
+
+// Over every point: "max_" + each output field not NaN everywhere, and "failed_fraction" when the
+// state can fail.
+template <class Solver>
+std::vector<std::pair<std::string, double>> state_summary(const Solver& s) {
+  using state_type = typename Solver::state_type;
+  std::vector<std::pair<std::string, double>> out;
+  const auto every = [](std::size_t) { return true; };
+  if constexpr (has_output_fields<state_type>)
+    for (const auto& [name, member] : state_type::output_fields()) {
+      const double v = largest_state_field(s, name, every);
+      if (!std::isnan(v)) out.emplace_back("max_" + std::string(name), v);
+    }
+  if constexpr (requires(const state_type& st) { st.failed(); })
+    if (!out.empty()) out.emplace_back("failed_fraction", failed_fraction(s, every));
+  return out;
 }
 
 }  // namespace rkpm::io

@@ -60,6 +60,35 @@ double plastic_work_increment(const H& h, double eps_p, double dgamma, double fl
     return 0.5 * (flow_from + flow_to) * dgamma;
 }
 
+// The elastic predictor (25)-(27) of one step from (F_n, b_e,n) to F and the radial return
+// (30)-(31) of an increment dgamma: shared by j2_plasticity and johnson_cook (johnson_cook.hpp).
+struct j2_trial {
+  block_matrix b;         // b_e^trial = f b_e,n f^T
+  principal_frame frame;  // its principal frame
+  double volumetric;      // theta, the trace of the log strain
+  vec3 dev;               // e^trial (e^e after return_by)
+  double q;               // q^trial, the trial von Mises stress
+
+  static j2_trial of(const mat3& F, const block_matrix& b_e_n, const block_matrix& F_n, double mu) {
+    // In block arithmetic (core/block_matrix.hpp): the values of the mat3 products, a third
+    // of their cost.
+    const block_matrix f = block_matrix::of(F) * inverse(F_n);
+    const block_matrix b_trial = f * b_e_n * f.transpose();
+    const principal_frame frame = principal_frame::of(b_trial.full());
+    const vec3 eps = principal_log_strains(frame.values);
+    const double volumetric = eps.sum();
+    const vec3 dev = eps - vec3::Constant(volumetric / 3.0);
+    return {b_trial, frame, volumetric, dev, std::sqrt(1.5) * 2.0 * mu * dev.norm()};
+  }
+
+  // (30)-(31): scales the deviator back by dgamma (three_mu = 3 mu) and returns b_e,n+1.
+  block_matrix return_by(double dgamma, double three_mu) {
+    dev *= 1.0 - three_mu * dgamma / q;
+    const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
+    return block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));
+  }
+};
+
 template <Hardening H>
 class j2_plasticity {
  public:
@@ -93,35 +122,27 @@ class j2_plasticity {
   // F: block-structured total deformation gradient (see concepts/material.hpp). Advances s from
   // s.previous_deformation to F and returns the Kirchhoff stress. The step (dt, temperature)
   // reaches the hardening law when it depends on the rate or temperature (concepts/material.hpp).
-  mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
+  // Any state with j2_state's members will do (the case files' material keeps more,
+  // tools/runner/case_file/case_material.hpp).
+  template <class State>
+  mat3 kirchhoff_stress(const mat3& F, State& s, const material_step& step = {}) const {
     check_deformation_gradient(F, "material::j2_plasticity");
-    // In block arithmetic (core/block_matrix.hpp): the values of the mat3 products, a third
-    // of their cost.
-    const block_matrix f = block_matrix::of(F) * inverse(s.previous_deformation);
-    const block_matrix b_trial = f * s.elastic_left_cauchy_green * f.transpose();
-    const principal_frame frame = principal_frame::of(b_trial.full());
-    const vec3 eps = principal_log_strains(frame.values);
-    const double volumetric = eps.sum();
-    vec3 dev = eps - vec3::Constant(volumetric / 3.0);
-    const double q_trial = std::sqrt(1.5) * 2.0 * mu_ * dev.norm();
-
+    j2_trial t = j2_trial::of(F, s.elastic_left_cauchy_green, s.previous_deformation, mu_);
     const double eps_p = s.equivalent_plastic_strain;
     // The yield check at the static curve (rate 0) and the step's temperature.
     const double yield = flow_stress_at(hardening_, eps_p, flow_point{0.0, step.temperature});
-    if (q_trial > yield) {
+    if (t.q > yield) {
       const radial_return_result rr =
-          radial_return(hardening_, q_trial, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield, step);
+          radial_return(hardening_, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield, step);
       const double dgamma = rr.increment;
-      dev *= 1.0 - 3.0 * mu_ * dgamma / q_trial;
+      s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
       s.plastic_work += plastic_work_increment(hardening_, eps_p, dgamma, yield, rr.flow_stress);
       s.equivalent_plastic_strain = eps_p + dgamma;
-      const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
-      s.elastic_left_cauchy_green = block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));
     } else {
-      s.elastic_left_cauchy_green = b_trial;
+      s.elastic_left_cauchy_green = t.b;
     }
     s.previous_deformation = block_matrix::of(F);
-    return hencky_stress(frame, volumetric, dev);
+    return hencky_stress(t.frame, t.volumetric, t.dev);
   }
 
   // The stress the last kirchhoff_stress(F, s) returned, from the state it left: tau =
@@ -129,7 +150,8 @@ class j2_plasticity {
   // bytes a particle). Points that stayed elastic get the same bits (b_e is the trial tensor
   // the update decomposed); after a return the principal frame is found again from b_e =
   // sum exp(2 eps_e_i) n_i n_i^T, which agrees to rounding.
-  mat3 current_kirchhoff_stress(const mat3& /*F*/, const state_type& s) const {
+  template <class State>
+  mat3 current_kirchhoff_stress(const mat3& /*F*/, const State& s) const {
     const principal_frame frame = principal_frame::of(s.elastic_left_cauchy_green.full());
     const vec3 eps = principal_log_strains(frame.values);
     const double volumetric = eps.sum();

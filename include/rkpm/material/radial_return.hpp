@@ -49,7 +49,11 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     const double eps_p = eps_p_n + dg;
     if constexpr (requires { hardening.slope(eps_p, flow); })
       return hardening.slope(eps_p, flow);
-    else if constexpr (hardens_with_state<H>)
+    else if constexpr (requires { hardening.slopes_at_flow(eps_p, at(dg), flow); }) {
+      // Both slopes of a rate-dependent law from its flow stress (johnson_cook: no pow).
+      const auto [strain_slope, rate_slope] = hardening.slopes_at_flow(eps_p, at(dg), flow);
+      return strain_slope + (step.dt > 0.0 ? rate_slope / step.dt : 0.0);
+    } else if constexpr (hardens_with_state<H>)
       return slope_at(hardening, eps_p, at(dg)) +
              (step.dt > 0.0 ? rate_slope_at(hardening, eps_p, at(dg)) / step.dt : 0.0);
     else
@@ -59,6 +63,32 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     const double dg = (q_trial - flow_at_start) / (three_mu + hardening.modulus);
     const double r = residual(dg);
     return {dg, 0, r, sigma};
+  } else if constexpr (requires(const flow_point& p) { hardening.rate_slope(eps_p_n, p); }) {
+    // A rate-dependent law (Johnson-Cook, docs/method.md (28a)): Newton in x = ln dgamma. The
+    // flow stress rises with ln(rate) = x - ln dt and, for eps_p^n with n <= 1 or any
+    // x-convex law, r(x) = q_trial - 3 mu e^x - sigma_y is concave and decreasing in x, so from
+    // the upper bound dgamma_0 = (q_trial - sigma_y(eps_p,n)) / (3 mu) (the overstress returned
+    // with no hardening, r <= 0 there) the iterates decrease to the root monotonically, in a few
+    // steps even when the root is orders of magnitude smaller (a stiff rate term), where Newton
+    // in dgamma from 0 falls back to bisection again and again. The bracket stays as a guard.
+    const double limit = tolerance * q_trial;
+    double lo = 0.0;
+    double hi = q_trial / three_mu;
+    double dg = (q_trial - flow_at_start) / three_mu;
+    double r = residual(dg);
+    for (int it = 1;; ++it) {
+      if (std::abs(r) <= limit) return {dg, it, r, sigma};
+      if (it > max_iterations || !std::isfinite(r))
+        fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
+             "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
+             "{}); raise max_newton_iterations or loosen newton_tolerance",
+             H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
+      (r > 0.0 ? lo : hi) = dg;
+      // dr/dx = -dgamma (3 mu + d sigma_y / d dgamma).
+      const double next = dg * std::exp(r / (dg * (three_mu + slope(dg, sigma))));
+      dg = (next > lo && next < hi) ? next : (lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * (lo + hi));
+      r = residual(dg);
+    }
   } else {
     const double limit = tolerance * q_trial;
     double lo = 0.0;

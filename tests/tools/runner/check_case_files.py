@@ -12,6 +12,12 @@
                                                             when a constraint does the work
     check_case_files.py voce RKPM_RUN CASES_DIR WORK_DIR    the Taylor bar's file with Voce hardening: Q = 0 is
                                                             the linear law, Q > 0 a harder bar
+    check_case_files.py johnson_cook RKPM_RUN CASES_DIR WORK_DIR
+                                                            cases/taylor_bar_johnson_cook.json, coarse and short:
+                                                            the energy balances, the temperature rises and reaches
+                                                            history.csv, summary.json and the VTK snapshots (and
+                                                            not a J2 file's); each bad Johnson-Cook key stops the
+                                                            run with its pointer and fix
     check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
                                                             has the geometry's mass (kinetic energy 1/2 rho A v^2),
                                                             keeps its symmetry line and stays on the wall's side;
@@ -28,6 +34,7 @@
 The built-in cases (cases/*.hpp) and the case files are two independent descriptions of the same
 problems: one in C++, one in JSON through the generic bodies, tools and histories.
 """
+import csv
 import json
 import os
 import shutil
@@ -320,11 +327,93 @@ def voce(rkpm_run, cases, work):
     print(f"ok  voce: Q = 0 gives the linear law's {b}; Q = 300 MPa {hard}")
 
 
+def johnson_cook(rkpm_run, cases, work):
+    """The Johnson-Cook Taylor bar (docs/method.md section 4.5) on 9 x 15 particles for 8 us: the
+    ledger closes to its printed error with the heat inside the plastic work, the temperature rises
+    above room temperature and appears as max_temperature_K in history.csv (rising), in summary.json
+    ("points" and the history's result) and as a point field of the snapshots; a J2 file's snapshots
+    have no temperature. Bad keys stop the run before any step with the JSON pointer and the fix."""
+    with open(os.path.join(cases, "taylor_bar_johnson_cook.json")) as f:
+        doc = json.load(f)
+    doc["bodies"][0]["shape"]["rectangle"]["particles"] = [9, 15]
+    doc["output"] = {"snapshots": 2, "history_rows": 40}
+    path = os.path.join(work, "jc_small.json")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    out = os.path.join(work, "jc_small")
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, path, "--out", out, "--end-time", "8e-6", "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"johnson_cook: the run failed: {r.stderr}")
+    if r.returncode != 0:
+        return
+    s = summary(out)
+    e = s["energy"]
+    imbalance = (e["kinetic_J"] + e["internal_J"] - e["initial_kinetic_J"] - e["external_J"] - e["contact_J"] -
+                 e["constraint_J"])
+    check(abs(imbalance) <= (e["balance_error"] + 1e-14) * e["largest_term_J"], f"johnson_cook: imbalance {imbalance}")
+    check(e["balance_error"] < 2e-2, f"johnson_cook: balance error {e['balance_error']}")
+    check(e["plastic_J"] > 0.05 * e["initial_kinetic_J"], f"johnson_cook: little plastic work {e}")
+    points = s.get("points", {})
+    T = points.get("max_temperature_K", 0.0)
+    check(T > 300.0 and T < 1356.0, f"johnson_cook: summary.json points {points}")
+    check(s["results"].get("max_temperature_K") == T, f"johnson_cook: results {s['results']} against points {points}")
+    check(points.get("failed_fraction") == 0.0 and s["results"].get("failed_fraction") == 0.0,
+          f"johnson_cook: a compressed copper bar should not fail: {points}")
+    rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+    temps = [float(row["max_temperature_K"]) for row in rows]
+    check(temps[0] == 294.0 and all(b >= a for a, b in zip(temps, temps[1:])) and temps[-1] == T,
+          f"johnson_cook: max_temperature_K over time {temps[:3]} ... {temps[-3:]}")
+    vtus = sorted(f for f in os.listdir(out) if f.endswith(".vtu"))
+    text = read(os.path.join(out, vtus[-1]), "rb")
+    check(b'Name="temperature_K"' in text and b'Name="damage"' in text, f"johnson_cook: {vtus[-1]} has no temperature")
+    j2 = os.path.join(work, "j2_fields")
+    shutil.rmtree(j2, ignore_errors=True)
+    r = run([rkpm_run, os.path.join(cases, "taylor_bar.json"), "--out", j2, "--end-time", "1e-6", "--no-plots",
+             "--quiet"])
+    check(r.returncode == 0, f"taylor_bar.json: {r.stderr}")
+    vtus = sorted(f for f in os.listdir(j2) if f.endswith(".vtu"))
+    check(b"temperature_K" not in read(os.path.join(j2, vtus[-1]), "rb"), "a J2 file's snapshot lists a temperature")
+    print(f"ok  johnson_cook: {s['steps']} steps, max temperature {T:.1f} K, plastic {e['plastic_J']:.3f} J of "
+          f"{e['initial_kinetic_J']:.3f} J, balance error {e['balance_error']:.2e}")
+
+    material = doc["bodies"][0]["material"]
+    bad = []
+
+    def variant(name, change, words):
+        d = json.loads(json.dumps(doc))
+        change(d["bodies"][0]["material"])
+        bad.append((name, d, words))
+    variant("negative_B", lambda m: m.update(B_Pa=-1e6), ["/bodies/0/material/B_Pa", "must not be negative"])
+    variant("n_above_1", lambda m: m.update(n=1.5), ["/bodies/0/material/n", "(0, 1]", "0.31"])
+    variant("n_zero", lambda m: m.update(n=0), ["/bodies/0/material/n", "(0, 1]"])
+    variant("melt_below_room", lambda m: m.update(melt_temperature_K=250),
+            ["/bodies/0/material/melt_temperature_K", "not above room_temperature_K", "1356"])
+    variant("damage_missing_D3", lambda m: m["damage"].pop("D3"), ["/bodies/0/material/damage", "missing field 'D3'",
+                                                                   "-3.03"])
+    variant("taylor_quinney", lambda m: m.update(taylor_quinney=1.5), ["/bodies/0/material/taylor_quinney", "[0, 1]"])
+    variant("missing_heat", lambda m: m.pop("specific_heat_J_kgK"), ["missing field 'specific_heat_J_kgK'", "383"])
+    variant("j2_key", lambda m: m.update(yield_stress_Pa=1e8), ["/bodies/0/material/yield_stress_Pa", "unknown field"])
+    d = json.loads(json.dumps(doc))
+    d["bodies"][0]["material"] = {"law": "j2", "hardening": "linear", "youngs_modulus_Pa": 117e9,
+                                  "poisson_ratio": 0.35, "density_kg_m3": 8930, "yield_stress_Pa": 400e6,
+                                  "hardening_modulus_Pa": 100e6}
+    bad.append(("temperature_of_j2", d, ["/histories/3/max_temperature/body", "no temperature", "johnson_cook"]))
+    for name, d, words in bad:
+        path = os.path.join(work, f"jc_{name}.json")
+        with open(path, "w") as f:
+            json.dump(d, f)
+        r = run([rkpm_run, path, "--out", os.path.join(work, "jc_bad"), "--no-plots", "--quiet"])
+        check(r.returncode != 0, f"{name}: accepted")
+        for w in words:
+            check(w in r.stderr, f"{name}: the error does not say {w!r}: {r.stderr!r}")
+        print(f"ok  {name}: {r.stderr.strip()}")
+
+
 def main(argv):
     mode, rkpm_run, cases, work = argv[1:5]
     os.makedirs(work, exist_ok=True)
     {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies,
-     "ledger": ledger, "voce": voce}[mode](rkpm_run, cases, work)
+     "ledger": ledger, "voce": voce, "johnson_cook": johnson_cook}[mode](rkpm_run, cases, work)
     return exit_status()
 
 

@@ -43,6 +43,7 @@ namespace rkpm::runner::case_file {
 
 inline material_type make_material(const material_description& m) {
   const material::elastic_constants constants{m.youngs_modulus, m.poisson_ratio, m.density};
+  if (m.johnson_cook) return material_type(*m.johnson_cook);
   if (m.law != material::j2_name) return material_type(constants, hardening_law::no_yield());
   return material_type(constants, m.flow_law);
 }

@@ -42,10 +42,11 @@ struct mesh_shape {  // a Gmsh file, used as given
 using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
 
 struct material_description {
-  std::string law;        // "elastic" or "j2"
+  std::string law;        // "elastic", "j2" or "johnson_cook"
   std::string hardening;  // for j2: a law's ::name in material::hardening::laws ("linear", ...)
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   hardening_law flow_law;  // for j2: that law with the file's constants (never yields otherwise)
+  std::optional<material::johnson_cook> johnson_cook;  // for johnson_cook: the whole material
 };
 
 // Prescribed velocity components (m/s) of the particles on a named edge; empty = free.
@@ -120,6 +121,8 @@ struct probe_history {  // the particle nearest to a reference point
   int component = 0;
 };
 struct max_plastic_strain_history { std::string body; };
+struct max_temperature_history { std::string body; };  // K, of a "johnson_cook" body
+struct failed_fraction_history { std::string body; };
 struct max_penetration_history {};
 struct volume_change_history { std::string body; };  // sum J w / sum w - 1
 struct momentum_history {  // sum_I m_I v_I over the body's particles (N s, per metre in plane strain)
@@ -129,7 +132,8 @@ struct momentum_history {  // sum_I m_I v_I over the body's particles (N s, per 
 
 using history_kind = std::variant<extent_history, tool_gap_history, tool_force_history, tool_displacement_history,
                                   probe_history, max_plastic_strain_history, max_penetration_history,
-                                  volume_change_history, momentum_history>;
+                                  volume_change_history, momentum_history, max_temperature_history,
+                                  failed_fraction_history>;
 
 struct history_description {
   std::string name;

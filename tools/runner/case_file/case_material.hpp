@@ -1,10 +1,13 @@
 #pragma once
-// The one material type of every case file: material::j2_plasticity with its hardening law
-// chosen at run time (hardening_law), so that the runner compiles one material per geometry
-// and contact enforcement, whatever law the files name. hardening_law holds one law of the
-// library's list (material::hardening::laws) and hands every call to it, so a case file runs
-// bit for bit as the typed case with j2_plasticity<that law> (tests/unit/case_file/
-// hardening_law.cpp); a law added to the list is read and run with no edit here.
+// The one material type of every case file, case_file::material_type: material::j2_plasticity
+// with its hardening law chosen at run time (hardening_law), or material::johnson_cook, so that
+// the runner compiles one material per geometry and contact enforcement, whatever law the files
+// name. hardening_law holds one law of the library's list (material::hardening::laws) and hands
+// every call to it, so a case file runs bit for bit as the typed case with j2_plasticity<that
+// law> (tests/unit/case_file/hardening_law.cpp); a law added to the list is read and run with no
+// edit here. The state is johnson_cook_state for every law: J2 points leave its temperature and
+// damage NaN (no temperature: the solver passes NaN as before, and the snapshots leave out a
+// field that is NaN everywhere, io/solver_output.hpp).
 //
 // "elastic" is J2 that never yields (flow stress +infinity). Its elastic part is the Hencky law
 // of material::elastic (tau = K tr(eps) + 2 mu dev(eps) = lambda tr(eps) + 2 mu eps in principal
@@ -14,13 +17,16 @@
 #include <boost/hana.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string_view>
+#include <utility>
 #include <variant>
 
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/material/hardening.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/material/radial_return.hpp>
 
 namespace rkpm::runner::case_file {
@@ -96,6 +102,41 @@ inline double plastic_work_increment(const hardening_law& h, double from, double
   return h.plastic_work(from, dgamma, flow_from, flow_to);
 }
 
-using material_type = material::j2_plasticity<hardening_law>;
+// J2 with the file's hardening law, or Johnson-Cook (one branch per point update).
+class material_type {
+ public:
+  using j2_type = material::j2_plasticity<hardening_law>;
+  static constexpr std::string_view name = j2_type::name;
+  using state_type = material::johnson_cook_state;
+
+  material_type(const material::elastic_constants& constants, const hardening_law& law) : j2_(constants, law) {}
+  explicit material_type(material::johnson_cook jc)
+      : j2_(jc.constants(), hardening_law::no_yield()), johnson_cook_(std::move(jc)) {}
+
+  state_type initial_state() const {
+    if (johnson_cook_) return johnson_cook_->initial_state();
+    state_type s;
+    s.damage = std::numeric_limits<double>::quiet_NaN();  // J2: neither temperature nor damage
+    return s;
+  }
+  mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
+    return johnson_cook_ ? johnson_cook_->kirchhoff_stress(F, s, step) : j2_.kirchhoff_stress(F, s, step);
+  }
+  mat3 current_kirchhoff_stress(const mat3& F, const state_type& s) const {
+    return johnson_cook_ ? johnson_cook_->current_kirchhoff_stress(F, s) : j2_.current_kirchhoff_stress(F, s);
+  }
+
+  double density() const { return j2_.density(); }
+  double dilatational_wave_speed() const { return j2_.dilatational_wave_speed(); }
+  const material::elastic_constants& constants() const { return j2_.constants(); }
+  // The J2 hardening law (never yields for elastic and Johnson-Cook materials).
+  const hardening_law& hardening() const { return j2_.hardening(); }
+  // The Johnson-Cook material, nullptr for J2 and elastic.
+  const material::johnson_cook* johnson_cook() const { return johnson_cook_ ? &*johnson_cook_ : nullptr; }
+
+ private:
+  j2_type j2_;
+  std::optional<material::johnson_cook> johnson_cook_;
+};
 
 }  // namespace rkpm::runner::case_file

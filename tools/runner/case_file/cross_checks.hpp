@@ -122,7 +122,8 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
   for (const auto& h : c.histories) {
     const auto kind_at = [&](std::string_view field) {
       const std::string_view kinds[] = {"extent", "tool_gap", "tool_force", "tool_displacement", "probe",
-                                        "max_plastic_strain", "max_penetration", "volume_change", "momentum"};
+                                        "max_plastic_strain", "max_penetration", "volume_change", "momentum",
+                                        "max_temperature", "failed_fraction"};
       return child_pointer(child_pointer(h.at, kinds[h.kind.index()]), field);
     };
     std::visit(
@@ -130,6 +131,13 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
           using K = std::decay_t<decltype(k)>;
           if constexpr (requires { k.body; }) check_name(d, kind_at("body"), k.body, bodies, "body");
           if constexpr (requires { k.tool; }) check_name(d, kind_at("tool"), k.tool, tools, "tool");
+          if constexpr (std::is_same_v<K, max_temperature_history> || std::is_same_v<K, failed_fraction_history>) {
+            for (const body_description& b : c.bodies)
+              if (b.name == k.body && b.material.law != material::johnson_cook::name)
+                d.error(kind_at("body"), fmt::format("body '{}' has no temperature or damage (its material law is '{}'); "
+                                                     "give it \"law\": \"johnson_cook\" or measure another body",
+                                                     k.body, b.material.law));
+          }
           if constexpr (std::is_same_v<K, tool_gap_history>) {
             check_name(d, kind_at("from"), k.from, tools, "tool");
             check_name(d, kind_at("to"), k.to, tools, "tool");

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
+#include <rkpm/io/solver_output.hpp>
 
 #include "build_problem.hpp"
 #include "case_description.hpp"
@@ -137,6 +138,10 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
           for (std::size_t q = 0; q < s.point_states().size(); ++q)
             if (in_body(q)) eps_p = std::max(eps_p, s.point_states()[q].equivalent_plastic_strain);
           return eps_p;
+        } else if constexpr (std::is_same_v<H, max_temperature_history>) {
+          return io::largest_state_field(s, "temperature_K", of_body(s, c, h.body));
+        } else if constexpr (std::is_same_v<H, failed_fraction_history>) {
+          return io::failed_fraction(s, of_body(s, c, h.body));
         } else if constexpr (std::is_same_v<H, max_penetration_history>) {
           return s.max_penetration();
         } else if constexpr (std::is_same_v<H, momentum_history>) {

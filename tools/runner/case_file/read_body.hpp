@@ -8,6 +8,7 @@
 #include <array>
 #include <boost/hana.hpp>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,7 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/hardening.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/material/johnson_cook.hpp>
 
 #include "case_description.hpp"
 #include "json_fields.hpp"
@@ -120,8 +122,84 @@ inline hardening_law read_hardening(diagnostics& d, const object_reader& r, std:
   return out;
 }
 
+// The keys of "law": "johnson_cook" (docs/method.md section 4.5), besides the elastic three.
+inline constexpr std::array<std::string_view, 12> johnson_cook_keys{
+    "A_Pa", "B_Pa", "n", "C", "reference_strain_rate_1_s", "m", "room_temperature_K", "melt_temperature_K",
+    "specific_heat_J_kgK", "taylor_quinney", "initial_temperature_K", "damage"};
+
+// A Johnson-Cook material from r (its elastic constants already read into m): every constant
+// checked here with a one-line error, so that the library's own checks never fire.
+inline void read_johnson_cook(diagnostics& d, const object_reader& r, material_description& m) {
+  bool ok = true;
+  // A required number in [lo, hi] (open at lo when `open`), reported with its fix.
+  const auto get = [&](std::string_view key, std::string_view example, double lo, double hi, bool open,
+                       std::string_view range) -> double {
+    const auto x = r.number(key, example);
+    if (!x) {
+      ok = false;
+      return 0.0;
+    }
+    if (!((open ? *x > lo : *x >= lo) && *x <= hi)) {
+      d.error(r.at(key), fmt::format("{:g} is outside {}; give e.g. {}", *x, range, example));
+      ok = false;
+    }
+    return *x;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  material::hardening::johnson_cook flow{};
+  flow.A = get("A_Pa", "90e6 (OFHC copper)", 0.0, inf, false, "[0, inf): A must not be negative");
+  flow.B = get("B_Pa", "292e6 (OFHC copper)", 0.0, inf, false, "[0, inf): B must not be negative");
+  flow.n = get("n", "0.31 (OFHC copper)", 0.0, 1.0, true, "(0, 1]");
+  flow.C = get("C", "0.025 (OFHC copper)", 0.0, inf, false, "[0, inf): C must not be negative");
+  flow.reference_rate = get("reference_strain_rate_1_s", "1", 0.0, inf, true, "(0, inf): the rate must be positive");
+  flow.m = get("m", "1.09 (OFHC copper)", 0.0, inf, true, "(0, inf): m must be positive");
+  flow.room_temperature = get("room_temperature_K", "294", 0.0, inf, true, "(0, inf) K");
+  flow.melt_temperature = get("melt_temperature_K", "1356 (copper)", 0.0, inf, true, "(0, inf) K");
+  if (ok && !(flow.melt_temperature > flow.room_temperature)) {
+    d.error(r.at("melt_temperature_K"), fmt::format("{:g} K is not above room_temperature_K = {:g} K; give the melting "
+                                                    "point, e.g. 1356 (copper)",
+                                                    flow.melt_temperature, flow.room_temperature));
+    ok = false;
+  }
+  if (ok && !(flow.A + flow.B > 0.0)) {
+    d.error(r.at("A_Pa"), "A and B are both 0: the flow stress would be 0; give e.g. \"A_Pa\": 90e6, \"B_Pa\": 292e6");
+    ok = false;
+  }
+  material::johnson_cook_heating heat{};
+  heat.specific_heat = get("specific_heat_J_kgK", "383 (copper)", 0.0, inf, true, "(0, inf) J/(kg K)");
+  heat.taylor_quinney = r.number_or("taylor_quinney", 0.9);
+  if (r.find("taylor_quinney") && !(heat.taylor_quinney >= 0.0 && heat.taylor_quinney <= 1.0)) {
+    d.error(r.at("taylor_quinney"), fmt::format("{:g} is outside [0, 1], the fraction of plastic work turned into "
+                                                "heat; give e.g. 0.9 (or leave it out: 0.9)", heat.taylor_quinney));
+    ok = false;
+  }
+  heat.initial_temperature = r.number_or("initial_temperature_K", flow.room_temperature);
+  if (r.find("initial_temperature_K") && !(heat.initial_temperature > 0.0)) {
+    d.error(r.at("initial_temperature_K"), fmt::format("{:g} K must be positive; give e.g. 294 (or leave it out: the "
+                                                       "room temperature)", heat.initial_temperature));
+    ok = false;
+  }
+  std::optional<material::johnson_cook_damage> damage;
+  if (const json* v = r.find("damage")) {
+    object_reader dr(d, *v, r.at("damage"), {"D1", "D2", "D3", "D4", "D5"});
+    if (dr.valid()) {
+      const auto D1 = dr.number("D1", "0.54 (OFHC copper)"), D2 = dr.number("D2", "4.89 (OFHC copper)"),
+                 D3 = dr.number("D3", "-3.03 (OFHC copper)"), D4 = dr.number("D4", "0.014 (OFHC copper)"),
+                 D5 = dr.number("D5", "1.12 (OFHC copper)");
+      if (D1 && D2 && D3 && D4 && D5) damage = material::johnson_cook_damage{*D1, *D2, *D3, *D4, *D5};
+    }
+    if (!damage) ok = false;
+  }
+  if (!ok || !d.empty()) return;
+  try {
+    m.johnson_cook.emplace(material::elastic_constants{m.youngs_modulus, m.poisson_ratio, m.density}, flow, heat, damage);
+  } catch (const rkpm::error& e) {  // not expected: every constant was checked above
+    d.error(r.pointer(), e.what());
+  }
+}
+
 inline material_description read_material(diagnostics& d, const json& value, const std::string& at) {
-  const std::array<std::string_view, 2> laws{material::elastic::name, material::j2_name};
+  const std::array<std::string_view, 3> laws{material::elastic::name, material::j2_name, material::johnson_cook::name};
   const std::vector<std::string_view> hardenings = hardening_names();
   const std::string_view default_hardening = hardenings.front();
   // The fields allowed depend on the law and hardening named, so look at those first.
@@ -131,7 +209,8 @@ inline material_description read_material(diagnostics& d, const json& value, con
   const std::string law = peek("law"), hardening = peek("hardening");
   // An unknown law may still be J2 misspelt: accept its fields rather than report each; an
   // unknown hardening law likewise accepts every law's fields.
-  const bool j2 = law != material::elastic::name;
+  const bool johnson_cook = law == material::johnson_cook::name;
+  const bool j2 = law != material::elastic::name && !johnson_cook;
   const bool unknown_hardening =
       !hardening.empty() && std::find(hardenings.begin(), hardenings.end(), hardening) == hardenings.end();
   std::vector<std::string_view> known{"law", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3"};
@@ -141,6 +220,7 @@ inline material_description read_material(diagnostics& d, const json& value, con
       return unknown_hardening || name == (hardening.empty() ? default_hardening : std::string_view(hardening));
     });
   }
+  if (johnson_cook) known.insert(known.end(), johnson_cook_keys.begin(), johnson_cook_keys.end());
   object_reader r(d, value, at, known);
   material_description m;
   if (!r.valid()) return m;
@@ -159,6 +239,7 @@ inline material_description read_material(diagnostics& d, const json& value, con
     m.density = *rho;
     check_positive(d, r.at("density_kg_m3"), *rho, "8930 (copper)");
   }
+  if (m.law == material::johnson_cook::name) read_johnson_cook(d, r, m);
   if (m.law != material::j2_name) return m;
   m.hardening = r.choice("hardening", hardenings, "hardening law", default_hardening).value_or("");
   if (unknown_hardening) return m;

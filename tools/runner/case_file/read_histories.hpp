@@ -8,6 +8,8 @@
 //   tool_displacement   a tool's translation since t = 0
 //   probe               position, displacement or velocity of the particle nearest a point
 //   max_plastic_strain  largest equivalent plastic strain of the quadrature points
+//   max_temperature     largest temperature of the quadrature points, K ("law": "johnson_cook")
+//   failed_fraction     fraction of the quadrature points that have failed (Johnson-Cook damage)
 //   max_penetration     deepest penetration of a tool so far
 //   volume_change       sum_q J_q w_q / sum_q w_q - 1
 //   momentum            a body's linear momentum, sum_I m_I v_I (x or y)
@@ -28,9 +30,9 @@
 
 namespace rkpm::runner::case_file {
 
-inline constexpr std::array<std::string_view, 9> history_kinds{
+inline constexpr std::array<std::string_view, 11> history_kinds{
     "extent", "tool_gap", "tool_force", "tool_displacement", "probe", "max_plastic_strain", "max_penetration",
-    "volume_change", "momentum"};
+    "volume_change", "momentum", "max_temperature", "failed_fraction"};
 
 namespace detail {
 
@@ -70,6 +72,8 @@ inline history_kind read_history_kind(const object_reader& r, std::string_view k
     return h;
   }
   if (kind == "max_plastic_strain") return max_plastic_strain_history{r.text("body", "bar").value_or("")};
+  if (kind == "max_temperature") return max_temperature_history{r.text("body", "bar").value_or("")};
+  if (kind == "failed_fraction") return failed_fraction_history{r.text("body", "bar").value_or("")};
   if (kind == "max_penetration") return max_penetration_history{};
   if (kind == "momentum") return momentum_history{r.text("body", "bar").value_or(""), read_component(r)};
   return volume_change_history{r.text("body", "slug").value_or("")};

@@ -1,0 +1,142 @@
+#pragma once
+// The Johnson-Cook flow stress (docs/method.md (24b); Johnson & Cook, 7th Int. Symp. Ballistics,
+// The Hague, 1983, 541-547):
+//   sigma_y = (A + B eps_p^n) (1 + C ln max(rate*, 1)) (1 - T*^m),
+//   rate* = (d eps_p / dt) / (reference rate),  T* = (T - T_room) / (T_melt - T_room) in [0, 1].
+// A law of eps_p, its rate and temperature (flow_point, concepts/material.hpp): the return
+// mapping (radial_return.hpp) asks it at the rate dgamma / dt its increment implies and adds
+// rate_slope / dt to its Newton slope. The rate term is never below 1 (slower than the reference
+// rate gives no softening) and the temperature term is 1 at or below room temperature (and when
+// no temperature is known: NaN) and 0 at or above melt. Not in `laws`: material::johnson_cook
+// (material/johnson_cook.hpp) holds it with the temperature and damage it needs.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string_view>
+#include <utility>
+
+#include <rkpm/concepts/material.hpp>
+#include <rkpm/core/error.hpp>
+
+namespace rkpm::material::hardening {
+
+struct johnson_cook {
+  static constexpr std::string_view name = "johnson_cook";
+
+  double A;                  // Pa, the initial yield stress at the reference rate and room temperature
+  double B;                  // Pa, the hardening coefficient
+  double n;                  // the hardening exponent, in (0, 1]
+  double C;                  // the strain-rate coefficient, >= 0
+  double reference_rate;     // 1/s, > 0
+  double m;                  // the thermal-softening exponent, > 0
+  double room_temperature;   // K
+  double melt_temperature;   // K, above room_temperature
+
+  void validate() const {
+    const auto check = [](bool ok, std::string_view what, double v, std::string_view give) {
+      if (!ok) fail("hardening::johnson_cook: {} = {} is invalid: give {}", what, v, give);
+    };
+    check(std::isfinite(A) && A >= 0.0, "A", A, "a finite value >= 0 in Pa (OFHC copper: 90e6)");
+    check(std::isfinite(B) && B >= 0.0, "B", B, "a finite value >= 0 in Pa (OFHC copper: 292e6)");
+    check(A + B > 0.0, "A + B", A + B, "a positive flow stress (OFHC copper: A = 90e6, B = 292e6)");
+    check(std::isfinite(n) && n > 0.0 && n <= 1.0, "n", n, "a value in (0, 1] (OFHC copper: 0.31)");
+    check(std::isfinite(C) && C >= 0.0, "C", C, "a finite value >= 0 (OFHC copper: 0.025)");
+    check(std::isfinite(reference_rate) && reference_rate > 0.0, "reference_rate", reference_rate,
+          "a finite value > 0 in 1/s (OFHC copper: 1)");
+    check(std::isfinite(m) && m > 0.0, "m", m, "a finite value > 0 (OFHC copper: 1.09)");
+    check(std::isfinite(room_temperature) && room_temperature > 0.0, "room_temperature", room_temperature,
+          "a finite value > 0 in K (294)");
+    check(std::isfinite(melt_temperature) && melt_temperature > room_temperature, "melt_temperature",
+          melt_temperature, "a finite value above the room temperature in K (OFHC copper: 1356)");
+  }
+
+  // T* of (24b), clamped to [0, 1]; 0 when the temperature is unknown (NaN).
+  double homologous_temperature(double T) const {
+    if (!(T > room_temperature)) return 0.0;
+    return std::min(1.0, (T - room_temperature) / (melt_temperature - room_temperature));
+  }
+  // 1 - T*^m: 1 at room temperature, 0 at melt.
+  double thermal_factor(double T) const {
+    const double t = homologous_temperature(T);
+    if (t <= 0.0) return 1.0;
+    return t >= 1.0 ? 0.0 : 1.0 - std::pow(t, m);
+  }
+  // 1 + C ln max(rate*, 1).
+  double rate_factor(double rate) const {
+    const double r = rate / reference_rate;
+    return r > 1.0 ? 1.0 + C * std::log(r) : 1.0;
+  }
+  // A + B eps_p^n, the isothermal curve at the reference rate.
+  double strain_factor(double eps_p) const { return A + B * std::pow(eps_p, n); }
+
+  double flow_stress(double eps_p, const flow_point& at) const {
+    return strain_factor(eps_p) * rate_factor(at.plastic_strain_rate) * thermal_factor(at.temperature);
+  }
+  // d sigma_y / d eps_p at a fixed rate and temperature: n B eps_p^(n-1) (...) (...), infinite at
+  // eps_p = 0 when n < 1 (the return mapping then bisects).
+  double slope(double eps_p, const flow_point& at) const {
+    const double theta = thermal_factor(at.temperature);
+    if (theta == 0.0) return 0.0;
+    const double d = eps_p > 0.0 ? n * B * std::pow(eps_p, n - 1.0)
+                                 : (n < 1.0 && B > 0.0 ? std::numeric_limits<double>::infinity() : B);
+    return d * rate_factor(at.plastic_strain_rate) * theta;
+  }
+  // d sigma_y / d rate: (A + B eps_p^n) C / rate (1 - T*^m) above the reference rate, 0 below.
+  double rate_slope(double eps_p, const flow_point& at) const {
+    const double rate = at.plastic_strain_rate;
+    if (!(rate > reference_rate)) return 0.0;
+    return strain_factor(eps_p) * C / rate * thermal_factor(at.temperature);
+  }
+  // The law at one temperature, 1 - T*^m evaluated once: what the return mapping of a step
+  // iterates on (the temperature of a step is that of its start, material/johnson_cook.hpp),
+  // so that each Newton update costs the strain and rate terms only.
+  struct at_temperature_t {
+    static constexpr std::string_view name = "johnson_cook";
+    const johnson_cook* law;
+    double theta;  // 1 - T*^m
+    double flow_stress(double eps_p, const flow_point& at) const {
+      return law->strain_factor(eps_p) * law->rate_factor(at.plastic_strain_rate) * theta;
+    }
+    double slope(double eps_p, const flow_point& at) const {
+      if (theta == 0.0) return 0.0;
+      const double d = eps_p > 0.0 ? law->n * law->B * std::pow(eps_p, law->n - 1.0)
+                                   : (law->n < 1.0 && law->B > 0.0 ? std::numeric_limits<double>::infinity() : law->B);
+      return d * law->rate_factor(at.plastic_strain_rate) * theta;
+    }
+    double rate_slope(double eps_p, const flow_point& at) const {
+      const double rate = at.plastic_strain_rate;
+      if (!(rate > law->reference_rate)) return 0.0;
+      return law->strain_factor(eps_p) * law->C / rate * theta;
+    }
+    // slope and rate_slope at a point whose flow stress `flow` is known, without a pow:
+    // B eps_p^n R theta = flow - A R theta, and (A + B eps_p^n) theta = flow / R.
+    std::pair<double, double> slopes_at_flow(double eps_p, const flow_point& at, double flow) const {
+      if (theta == 0.0) return {0.0, 0.0};
+      const double rate = at.plastic_strain_rate;
+      const double R = law->rate_factor(rate);
+      const double strain = eps_p > 0.0 ? law->n * (flow - law->A * R * theta) / eps_p : slope(eps_p, at);
+      return {strain, rate > law->reference_rate ? flow / R * law->C / rate : 0.0};
+    }
+    // The work integral (32) over [from, to] at the step's rate, from the flow stresses the
+    // return mapping found: flow_from at rate 0 and eps_p = from, flow_to at `rate` and to
+    // (to^(n+1) = to (flow_to / (R theta) - A) / B: no pow). theta > 0.
+    double integral(double from, double to, double flow_from, double flow_to, double rate) const {
+      const double R = law->rate_factor(rate);
+      const double A = law->A;
+      const double strain = A * (to - from) + (to * (flow_to / (R * theta) - A) - from * (flow_from / theta - A)) / (law->n + 1.0);
+      return strain * R * theta;
+    }
+  };
+  at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
+
+  // The plastic work per unit volume int_from^to sigma_y de at a fixed rate and temperature (the
+  // step's, docs/method.md (32)): (1 + C ln rate*)(1 - T*^m) (A (to - from) + B (to^(n+1) -
+  // from^(n+1)) / (n + 1)).
+  double integral(double from, double to, const flow_point& at) const {
+    const double strain = A * (to - from) + B / (n + 1.0) * (std::pow(to, n + 1.0) - std::pow(from, n + 1.0));
+    return strain * rate_factor(at.plastic_strain_rate) * thermal_factor(at.temperature);
+  }
+};
+
+}  // namespace rkpm::material::hardening

@@ -1,0 +1,293 @@
+// material::johnson_cook (docs/method.md section 4.5) against what is known without the code:
+//   - the flow stress (24b), its slopes and work integral in closed form;
+//   - one point in uniaxial stress (a coaxial path: the log-strain model is 1D plasticity, q =
+//     tau11) at a constant strain rate below and above the reference rate: the stress is the
+//     Johnson-Cook curve at the point's plastic strain and rate and at the temperature of the
+//     adiabatic ODE dT / deps_p = beta sigma_y / (rho c_p) integrated here by RK4 (32a);
+//   - with C = 0 and no heating, the forms of the existing laws: A = 0 from eps_p = eps0 is the
+//     power law K (eps0 + eps_p)^n, n = 1 is linear hardening (on a path that yields, unloads
+//     and yields again, with shear and a hoop stretch);
+//   - damage: a bar in uniaxial tension fails when eps_p reaches eps_f(sigma* = 1/3) (32c);
+//     after failure no stress in tension and the pressure K ln J in compression (32d);
+//   - melt: no deviatoric stress; a return that cannot converge is an error; bad constants.
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <rkpm/material/hardening.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/material/johnson_cook.hpp>
+
+#include "support/error_message.hpp"
+#include "support/tensors.hpp"
+
+using rkpm::mat3;
+namespace h = rkpm::material::hardening;
+namespace mat = rkpm::material;
+
+namespace {
+
+using rkpm::test::diagonal;
+using rkpm::test::von_mises;
+
+// OFHC copper (Johnson & Cook 1983, Table 1): A, B, n, C, reference rate, m, room and melt.
+const h::johnson_cook copper_flow{90e6, 292e6, 0.31, 0.025, 1.0, 1.09, 294.0, 1356.0};
+const mat::elastic_constants copper{124e9, 0.34, 8960.0};
+const double rho_c = 8960.0 * 383.0;  // J/(m^3 K)
+
+// Drives one point in uniaxial stress along x: at the axial log strain e (this step's end) the
+// lateral log strain x with tau22 = tau33 = 0 is found by the secant method on copies of the
+// state, then the state advances. Returns tau.
+template <class M>
+mat3 uniaxial_step(const M& m, typename M::state_type& s, double e, double& lateral, double dt) {
+  const rkpm::material_step step{dt, 0.0, s.temperature};
+  const auto stress = [&](double x, auto& state) {
+    return m.kirchhoff_stress(diagonal(std::exp(e), std::exp(x), std::exp(x)), state, step);
+  };
+  const auto lateral_stress = [&](double x) {
+    auto trial = s;
+    return stress(x, trial)(1, 1);
+  };
+  double x0 = lateral, x1 = x0 - 1e-6, r0 = lateral_stress(x0), r1 = lateral_stress(x1);
+  for (int it = 0; it < 80 && std::abs(r1) > 1e-11 * copper_flow.A && r1 != r0; ++it) {
+    const double x2 = x1 - r1 * (x1 - x0) / (r1 - r0);
+    x0 = x1;
+    r0 = r1;
+    x1 = x2;
+    r1 = lateral_stress(x1);
+  }
+  REQUIRE(std::abs(r1) <= 1e-9 * copper_flow.A);
+  lateral = x1;
+  return stress(x1, s);
+}
+
+// The adiabatic temperature as a function of eps_p at a fixed plastic strain rate: RK4 of
+// dT / de = beta sigma_y(e, rate, T) / (rho c_p) from (0, T0), advanced to increasing e.
+struct adiabatic_ode {
+  h::johnson_cook law;
+  double beta, rate, e = 0.0, T;
+  double slope(double ee, double TT) const {
+    return beta * (law.A + law.B * std::pow(ee, law.n)) * (1.0 + law.C * std::log(std::max(rate / law.reference_rate, 1.0))) *
+           (1.0 - std::pow(std::clamp((TT - law.room_temperature) / (law.melt_temperature - law.room_temperature), 0.0, 1.0),
+                           law.m)) /
+           rho_c;
+  }
+  double at(double target) {
+    while (e < target) {
+      const double hh = std::min(1e-4, target - e);
+      const double k1 = slope(e, T), k2 = slope(e + hh / 2, T + hh / 2 * k1), k3 = slope(e + hh / 2, T + hh / 2 * k2),
+                   k4 = slope(e + hh, T + hh * k3);
+      T += hh / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+      e += hh;
+    }
+    return T;
+  }
+};
+
+// The same curve written out here (not the law's code): (A + B e^n)(1 + C ln max(r, 1))(1 - T*^m).
+double jc_curve(double e, double rate, double T) {
+  const auto& l = copper_flow;
+  const double Ts = std::clamp((T - l.room_temperature) / (l.melt_temperature - l.room_temperature), 0.0, 1.0);
+  return (l.A + l.B * std::pow(e, l.n)) * (1.0 + l.C * std::log(std::max(rate / l.reference_rate, 1.0))) *
+         (1.0 - std::pow(Ts, l.m));
+}
+
+// Plane strain stretch with shear, out and back, then past the first peak, with a hoop stretch.
+std::vector<mat3> mixed_path() {
+  std::vector<mat3> out;
+  for (int i = 0; i <= 120; ++i) {
+    const double s = i <= 40 ? i / 40.0 : i <= 70 ? 1.0 - (i - 40) / 60.0 : 0.5 + (i - 70) / 25.0;
+    mat3 F = mat3::Identity();
+    F(0, 0) = 1.0 + 0.08 * s;
+    F(1, 1) = 1.0 / (1.0 + 0.05 * s);
+    F(0, 1) = 0.06 * s;
+    F(2, 2) = 1.0 + 0.01 * s;
+    out.push_back(F);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("johnson_cook flow stress: rate term never below 1, T* clamped to [0, 1], slopes and work integral") {
+  const auto& l = copper_flow;
+  l.validate();
+  const rkpm::flow_point room{0.0, 294.0};
+  CHECK(l.flow_stress(0.0, room) == 90e6);
+  CHECK(l.flow_stress(0.2, room) == doctest::Approx(90e6 + 292e6 * std::pow(0.2, 0.31)).epsilon(1e-15));
+  // Slower than the reference rate: no softening; faster: 1 + C ln rate*.
+  CHECK(l.flow_stress(0.2, {0.01, 294.0}) == l.flow_stress(0.2, room));
+  CHECK(l.flow_stress(0.2, {1e3, 294.0}) == doctest::Approx(l.flow_stress(0.2, room) * (1 + 0.025 * std::log(1e3))).epsilon(1e-15));
+  // Below room temperature and with no temperature (NaN): T* = 0. At and above melt: 0.
+  CHECK(l.flow_stress(0.2, {0.0, 200.0}) == l.flow_stress(0.2, room));
+  CHECK(l.flow_stress(0.2, {0.0, NAN}) == l.flow_stress(0.2, room));
+  CHECK(l.flow_stress(0.2, {0.0, 1356.0}) == 0.0);
+  CHECK(l.flow_stress(0.2, {0.0, 2000.0}) == 0.0);
+  CHECK(l.flow_stress(0.2, {0.0, 825.0}) ==
+        doctest::Approx(l.flow_stress(0.2, room) * (1 - std::pow(0.5, 1.09))).epsilon(1e-15));
+  for (double e : {0.01, 0.1, 0.5, 2.0})
+    for (rkpm::flow_point at : {rkpm::flow_point{0.0, 294.0}, rkpm::flow_point{50.0, 600.0}}) {
+      CAPTURE(e);
+      const double de = 1e-7 * e, dr = 1e-6 * std::max(at.plastic_strain_rate, 1.0);
+      CHECK(l.slope(e, at) == doctest::Approx((l.flow_stress(e + de, at) - l.flow_stress(e - de, at)) / (2 * de)).epsilon(1e-7));
+      const rkpm::flow_point up{at.plastic_strain_rate + dr, at.temperature}, down{at.plastic_strain_rate - dr, at.temperature};
+      CHECK(l.rate_slope(e, at) ==
+            doctest::Approx(at.plastic_strain_rate > 1.0 ? (l.flow_stress(e, up) - l.flow_stress(e, down)) / (2 * dr) : 0.0)
+                .epsilon(1e-6));
+      // The work integral against Simpson's rule with 20,000 panels from e/2 to e.
+      const double a = 0.5 * e, b = e;
+      const int n = 20000;
+      double simpson = l.flow_stress(a, at) + l.flow_stress(b, at);
+      for (int i = 1; i < n; ++i) simpson += (i % 2 ? 4.0 : 2.0) * l.flow_stress(a + (b - a) * i / n, at);
+      simpson *= (b - a) / (3.0 * n);
+      CHECK(l.integral(a, b, at) == doctest::Approx(simpson).epsilon(1e-10));
+      // What the return mapping uses: the same integral and slopes from the flow stresses it knows.
+      const auto iso = l.at_temperature(at.temperature);
+      CHECK(iso.integral(a, b, l.flow_stress(a, {0.0, at.temperature}), l.flow_stress(b, at), at.plastic_strain_rate) ==
+            doctest::Approx(simpson).epsilon(1e-10));
+      const auto [strain_slope, rate_slope] = iso.slopes_at_flow(e, at, l.flow_stress(e, at));
+      CHECK(strain_slope == doctest::Approx(l.slope(e, at)).epsilon(1e-12));
+      CHECK(rate_slope == doctest::Approx(l.rate_slope(e, at)).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("johnson_cook, uniaxial stress at a constant strain rate: the JC curve at the adiabatic ODE's temperature") {
+  const mat::johnson_cook jc(copper, copper_flow, mat::johnson_cook_heating{383.0, 0.9});
+  for (double rate : {0.1, 1e3}) {  // below and above the reference rate (1/s)
+    CAPTURE(rate);
+    auto s = jc.initial_state();
+    CHECK(s.temperature == 294.0);
+    adiabatic_ode ode{copper_flow, 0.9, rate, 0.0, 294.0};
+    const int steps = 3000;
+    const double total = 0.6, dt = total / rate / steps;
+    double lateral = 0.0, worst = 0.0, worst_T = 0.0, last_eps_p = 0.0;
+    mat3 tau;
+    for (int k = 1; k <= steps; ++k) {
+      tau = uniaxial_step(jc, s, total * k / steps, lateral, dt);
+      const double plastic_rate = (s.equivalent_plastic_strain - last_eps_p) / dt;
+      last_eps_p = s.equivalent_plastic_strain;
+      if (s.equivalent_plastic_strain < 0.02) continue;  // past the elastic-plastic transition
+      const double T = ode.at(s.equivalent_plastic_strain);
+      worst = std::max(worst, std::abs(tau(0, 0) / jc_curve(s.equivalent_plastic_strain, plastic_rate, T) - 1.0));
+      worst_T = std::max(worst_T, std::abs(s.temperature - T));
+    }
+    MESSAGE("rate ", rate, "/s: eps_p ", s.equivalent_plastic_strain, ", T ", s.temperature, " K, tau11 ", tau(0, 0),
+            " Pa; largest relative stress difference ", worst, ", temperature ", worst_T, " K");
+    CHECK(s.equivalent_plastic_strain > 0.55);
+    CHECK(s.temperature - 294.0 > 30.0);  // the heating matters (about 3 % softening here)
+    CHECK(worst < 1e-4);
+    CHECK(worst_T < 0.02);
+    CHECK(von_mises(tau) == doctest::Approx(tau(0, 0)).epsilon(1e-8));  // uniaxial indeed
+    // The temperature is beta W_p / (rho c_p) of the point's own plastic work.
+    CHECK(s.temperature - 294.0 == doctest::Approx(0.9 * s.plastic_work / rho_c).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("johnson_cook with C = 0 and no heating: the power law from eps_p = eps0 with A = 0, linear hardening with n = 1") {
+  const double dt = 1e-7;  // a high rate, which C = 0 ignores
+  SUBCASE("power law") {
+    const h::power_law pl{576.79e6, 0.01658, 0.3593};
+    const mat::j2_plasticity<h::power_law> j2(copper, pl);
+    const mat::johnson_cook jc(copper, h::johnson_cook{0.0, 576.79e6, 0.3593, 0.0, 1.0, 1.0, 294.0, 1356.0},
+                               mat::johnson_cook_heating{383.0, 0.0});
+    auto a = j2.initial_state();
+    auto b = jc.initial_state();
+    b.equivalent_plastic_strain = pl.offset;
+    for (const mat3& F : mixed_path()) {
+      const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
+      CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
+      CHECK(b.equivalent_plastic_strain - pl.offset == doctest::Approx(a.equivalent_plastic_strain).epsilon(1e-9));
+      CHECK(b.plastic_work == doctest::Approx(a.plastic_work).epsilon(1e-9));
+      CHECK(b.temperature == 294.0);
+    }
+    CHECK(a.equivalent_plastic_strain > 0.05);
+  }
+  SUBCASE("linear") {
+    const mat::j2_plasticity<h::linear> j2(copper, h::linear{400e6, 100e6});
+    const mat::johnson_cook jc(copper, h::johnson_cook{400e6, 100e6, 1.0, 0.0, 1.0, 1.0, 294.0, 1356.0},
+                               mat::johnson_cook_heating{383.0, 0.0});
+    auto a = j2.initial_state();
+    auto b = jc.initial_state();
+    for (const mat3& F : mixed_path()) {
+      const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
+      CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
+      CHECK(b.equivalent_plastic_strain == doctest::Approx(a.equivalent_plastic_strain).epsilon(1e-9));
+      CHECK(b.plastic_work == doctest::Approx(a.plastic_work).epsilon(1e-9));
+    }
+    CHECK(a.equivalent_plastic_strain > 0.05);
+  }
+}
+
+TEST_CASE("johnson_cook damage: uniaxial tension fails at eps_f(sigma* = 1/3); then no tension, pressure in compression") {
+  const mat::johnson_cook_damage d{0.54, 4.89, -3.03, 0.014, 1.12};  // OFHC copper (Johnson & Cook 1985)
+  const mat::johnson_cook jc(copper, copper_flow, mat::johnson_cook_heating{383.0, 0.0}, d);  // isothermal: T* = 0
+  const double rate = 100.0;
+  const double eps_f = (0.54 + 4.89 * std::exp(-3.03 / 3.0)) * (1.0 + 0.014 * std::log(rate));
+  auto s = jc.initial_state();
+  const int steps = 4000;
+  const double total = 2.0 * eps_f, dt = total / rate / steps;
+  double lateral = 0.0, eps_p_at_failure = -1.0, last = 0.0, largest_step = 0.0;
+  int k = 1;
+  for (; k <= steps && !s.failed(); ++k) {
+    uniaxial_step(jc, s, total * k / steps, lateral, dt);
+    largest_step = std::max(largest_step, s.equivalent_plastic_strain - last);
+    last = s.equivalent_plastic_strain;
+  }
+  REQUIRE(s.failed());
+  eps_p_at_failure = s.equivalent_plastic_strain;
+  MESSAGE("eps_f(1/3) = ", eps_f, ", failed at eps_p = ", eps_p_at_failure, " (steps of ", largest_step, ")");
+  // The plastic rate is the applied one up to the elastic part (ln of it: ~1e-3 of D4 ln rate*).
+  CHECK(eps_p_at_failure >= eps_f - 1e-3 * eps_f);
+  CHECK(eps_p_at_failure <= eps_f + 2.0 * largest_step);
+  // Failed, in tension: no stress at all.
+  const mat3 stretched = diagonal(std::exp(total * k / steps), std::exp(lateral), std::exp(lateral));
+  const mat3 t1 = jc.kirchhoff_stress(stretched, s, {dt, 0.0, s.temperature});
+  CHECK(t1 == mat3::Zero());
+  CHECK(jc.current_kirchhoff_stress(stretched, s) == mat3::Zero());
+  // Failed, compressed and sheared: the pressure only, tau = K ln J 1 (plastic flow is isochoric,
+  // so the elastic volume change is the total one).
+  mat3 F = diagonal(0.9, 0.95, 0.97);
+  F(0, 1) = 0.2;
+  const double J = F.topLeftCorner<2, 2>().determinant() * F(2, 2);
+  const mat3 t2 = jc.kirchhoff_stress(F, s, {dt, 0.0, s.temperature});
+  const double p = copper.bulk_modulus() * std::log(J);
+  CHECK(p < 0.0);
+  CHECK((t2 - p * mat3::Identity()).norm() <= 1e-9 * std::abs(p));
+  CHECK((jc.current_kirchhoff_stress(F, s) - t2).norm() <= 1e-9 * std::abs(p));
+}
+
+TEST_CASE("johnson_cook: molten points carry pressure only; the Newton return is bounded; bad constants are errors") {
+  // At melt: the deviator of a shear disappears, the volume change keeps its pressure.
+  const mat::johnson_cook molten(copper, copper_flow, mat::johnson_cook_heating{383.0, 0.9, 1356.0});
+  auto s = molten.initial_state();
+  mat3 F = diagonal(1.01, 0.98, 1.0);
+  F(0, 1) = 0.05;
+  const mat3 tau = molten.kirchhoff_stress(F, s, {1e-7, 0.0, s.temperature});
+  CHECK(von_mises(tau) <= 1e-6 * std::abs(tau(0, 0)));
+  CHECK(tau(0, 0) == doctest::Approx(copper.bulk_modulus() * std::log(1.01 * 0.98)).epsilon(1e-12));
+  CHECK(s.temperature == 1356.0);
+
+  // One Newton update is not enough from eps_p = 0 (infinite slope for n < 1).
+  const mat::johnson_cook hasty(copper, copper_flow, mat::johnson_cook_heating{383.0}, std::nullopt, 1e-12, 1);
+  auto h1 = hasty.initial_state();
+  const std::string message = rkpm::test::error_message([&] { hasty.kirchhoff_stress(diagonal(1.01, 0.995, 0.995), h1, {1e-6, 0.0, 294.0}); });
+  CHECK(rkpm::test::contains(message, "did not converge"));
+  CHECK(rkpm::test::contains(message, "max_newton_iterations"));
+
+  auto bad = copper_flow;
+  bad.n = 1.5;
+  CHECK(rkpm::test::contains(rkpm::test::error_message([&] { bad.validate(); }), "n = 1.5 is invalid"));
+  bad = copper_flow;
+  bad.melt_temperature = 200.0;
+  CHECK(rkpm::test::contains(rkpm::test::error_message([&] { bad.validate(); }), "melt_temperature"));
+  bad = copper_flow;
+  bad.B = -1.0;
+  CHECK(rkpm::test::contains(rkpm::test::error_message([&] { bad.validate(); }), "B = -1 is invalid"));
+  CHECK(rkpm::test::contains(
+      rkpm::test::error_message([&] { mat::johnson_cook(copper, copper_flow, mat::johnson_cook_heating{-1.0}); }),
+      "specific_heat"));
+}
