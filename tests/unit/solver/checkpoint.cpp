@@ -7,9 +7,12 @@
 // step decides which face acts: leaving the held segments out of the checkpoint makes this test
 // fail) and axisymmetric J2 with a prescribed velocity (axis and velocity constraints).
 // A checkpoint of another configuration, format version, problem or section layout, a truncated
-// file and a file that is not a checkpoint are refused with a message naming the reason; the
-// write leaves no temporary file; the header (with the writer's description) is read without a
-// solver, and the latest checkpoint of a folder is found by its name.
+// file and a file that is not a checkpoint are refused with a message naming the reason; a file
+// with one bit flipped anywhere (2002 places: every byte of the prefix, header and section table,
+// three in every section, 600 pseudo-random) is refused as damaged, naming the part the bit is
+// in by the layout parsed here on its own, and leaves the solver as it was; the write leaves no
+// temporary file; the header (with the writer's description) is read without a solver, and the
+// latest checkpoint of a folder is found by its name.
 
 #include <doctest/doctest.h>
 
