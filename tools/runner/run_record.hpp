@@ -8,6 +8,7 @@
 // run's (docs/method.md section 9.5).
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,8 +80,26 @@ struct restart_point {
   json description;  // case, kernel, correction, quadrature, contact, resolution, parameters, record
 };
 
+// The latest checkpoint of the folder of `file` (a checkpoint_file_name) named before it that
+// reads intact, if any: where to restart when `file` is damaged or truncated.
+inline std::optional<std::filesystem::path> earlier_intact_checkpoint(const std::filesystem::path& file) {
+  const std::string name = file.filename().string();
+  if (!name.starts_with("checkpoint_")) return std::nullopt;
+  const auto all = io::checkpoints_in(file.has_parent_path() ? file.parent_path() : ".");
+  for (auto it = all.rbegin(); it != all.rend(); ++it) {
+    if (it->filename().string() >= name) continue;
+    try {
+      io::read_checkpoint_header(*it);
+      return *it;
+    } catch (const rkpm::error&) {
+    }
+  }
+  return std::nullopt;
+}
+
 // PATH is a checkpoint file or a run folder (its latest checkpoint). Refuses, in one line, a
-// path that is neither, a checkpoint the runner did not write and a truncated file.
+// path that is neither, a checkpoint the runner did not write, and a damaged or truncated file,
+// naming the folder's latest intact earlier checkpoint if there is one.
 inline restart_point find_restart_point(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   restart_point p;
@@ -96,7 +115,14 @@ inline restart_point find_restart_point(const std::filesystem::path& path) {
   } else {
     fail("--restart {}: no such checkpoint file or run folder", path.string());
   }
-  const io::checkpoint_header header = io::read_checkpoint_header(p.file);
+  io::checkpoint_header header;
+  try {
+    header = io::read_checkpoint_header(p.file);
+  } catch (const io::checkpoint_damaged& e) {
+    const auto earlier = earlier_intact_checkpoint(p.file);
+    if (!earlier) throw;
+    fail("{}: {}", e.what(), earlier->string());  // "...; restart from an earlier checkpoint: PATH"
+  }
   p.description = json::parse(header.description, nullptr, false);
   if (p.description.is_discarded() || !p.description.is_object() || !p.description.contains("record"))
     fail("checkpoint '{}' was not written by rkpm_run (its description is not the runner's): restart it "

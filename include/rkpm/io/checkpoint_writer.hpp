@@ -2,9 +2,11 @@
 // checkpoint_writer: builds a checkpoint file (layout: io/checkpoint_format.hpp) in memory and
 // puts it in place through a temporary file and a rename (io/files.hpp), so a run killed while
 // writing leaves the previous checkpoint usable. Classes add their sections through
-// save(checkpoint_writer&) const (see io/checkpoint.hpp).
+// save(checkpoint_writer&) const (see io/checkpoint.hpp). Each section's CRC-32 is taken as it
+// is added, the header's, the table's and the prefix's at commit().
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -14,6 +16,7 @@
 #include <rkpm/core/bitwise.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/checkpoint_format.hpp>
+#include <rkpm/io/crc32.hpp>
 #include <rkpm/io/files.hpp>
 
 namespace rkpm::io {
@@ -22,19 +25,18 @@ class checkpoint_writer {
  public:
   checkpoint_writer(std::filesystem::path path, const checkpoint_identity& id, std::string_view description = {})
       : path_(std::move(path)) {
-    bytes_.append(checkpoint_magic);
-    put(checkpoint_format_version);
-    text(id.configuration);
-    for (index_t n : {id.particles, id.points, id.slaves, id.tools}) put(static_cast<std::uint64_t>(n));
-    text(description);
+    bytes_.resize(checkpoint_prefix_bytes);  // filled in by commit()
+    text(bytes_, id.configuration);
+    for (index_t n : {id.particles, id.points, id.slaves, id.tools}) put(bytes_, static_cast<std::uint64_t>(n));
+    text(bytes_, description);
+    header_bytes_ = bytes_.size() - checkpoint_prefix_bytes;
   }
 
   template <bitwise_value T>
   void array(std::string_view name, std::span<const T> values) {
-    text(name);
-    put(static_cast<std::uint64_t>(values.size()));
-    put(static_cast<std::uint64_t>(sizeof(T)));
-    bytes_.append(reinterpret_cast<const char*>(values.data()), values.size_bytes());
+    const char* data = reinterpret_cast<const char*>(values.data());
+    sections_.push_back({std::string(name), values.size(), sizeof(T), crc32_of(data, values.size_bytes())});
+    bytes_.append(data, values.size_bytes());
   }
   template <bitwise_value T>
   void array(std::string_view name, const std::vector<T>& values) {
@@ -51,24 +53,44 @@ class checkpoint_writer {
     p.save(*this);
   }
 
-  // Closes the file and puts it in place (temporary file and rename).
+  // Appends the table, fills in the prefix and puts the file in place (temporary file and rename).
   void commit() {
-    array("end", std::span<const char>());
+    std::string table;
+    put(table, header_bytes_);
+    put(table, crc32_of(bytes_.data() + checkpoint_prefix_bytes, header_bytes_));
+    put(table, static_cast<std::uint64_t>(sections_.size()));
+    for (const checkpoint_section& s : sections_) {
+      text(table, s.name);
+      put(table, s.count);
+      put(table, s.value_bytes);
+      put(table, s.crc);
+    }
+    const std::uint64_t table_offset = bytes_.size();
+    bytes_ += table;
+    put(bytes_, crc32_of(table.data(), table.size()));
+
+    std::string prefix(checkpoint_magic);
+    put(prefix, checkpoint_format_version);
+    put(prefix, static_cast<std::uint64_t>(bytes_.size()));
+    put(prefix, table_offset);
+    put(prefix, crc32_of(prefix.data(), prefix.size()));
+    bytes_.replace(0, checkpoint_prefix_bytes, prefix);
     replace_file(path_, bytes_);
   }
 
  private:
   template <class T>
-  void put(const T& v) {
-    bytes_.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  static void put(std::string& out, const T& v) {
+    out.append(reinterpret_cast<const char*>(&v), sizeof(T));
   }
-  void text(std::string_view s) {
-    put(static_cast<std::uint64_t>(s.size()));
-    bytes_.append(s);
+  static void text(std::string& out, std::string_view s) {
+    put(out, static_cast<std::uint64_t>(s.size()));
+    out.append(s);
   }
-
   std::filesystem::path path_;
   std::string bytes_;
+  std::uint64_t header_bytes_ = 0;
+  std::vector<checkpoint_section> sections_;
 };
 
 }  // namespace rkpm::io

@@ -43,8 +43,9 @@ void write_checkpoint(const explicit_solver<G, M, Ct>& s, const std::filesystem:
 }
 
 // Refuses, with a one-line rkpm::error, a file that is not a checkpoint of this solver's build,
-// configuration and problem, or is truncated; the solver is unchanged when it is refused for
-// any of these reasons (a section of another build's layout is found only while loading).
+// configuration and problem, or is truncated or damaged (io::checkpoint_damaged, naming the
+// part whose checksum fails); the solver is unchanged when it is refused for any of these
+// reasons (a section of another build's layout is found only while loading).
 template <Geometry G, Material M, Contact Ct>
 void read_checkpoint(explicit_solver<G, M, Ct>& s, const std::filesystem::path& path, std::string_view configuration) {
   io::checkpoint_reader r(path, checkpoint_identity_of(s, configuration));

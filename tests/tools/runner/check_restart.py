@@ -8,7 +8,8 @@
     check_restart.py kill RKPM_RUN WORK_DIR   a run killed with SIGKILL after a checkpoint continues from its
                                                folder (--restart FOLDER) to the uninterrupted run's outputs;
                                                one stopped by Ctrl-C (SIGINT) checkpoints its last step
-    check_restart.py refused RKPM_RUN WORK_DIR restarts that cannot continue are refused in one line
+    check_restart.py refused RKPM_RUN WORK_DIR restarts that cannot continue are refused in one line; a
+                                               damaged checkpoint with the folder's earlier one to restart from
 
 The reference is always the same program's uninterrupted run of the same request: a restart must
 not change a run, so equality (not closeness) is the property.
@@ -126,11 +127,28 @@ def refused(rkpm_run, work):
              "--checkpoint-interval", "2e-6", "--out", os.path.join(folder, "run"), "--no-plots", "--quiet"])
     check(r.returncode == 0, f"set-up run failed: {r.stderr}")
     ck = [os.path.join(folder, "run", c) for c in checkpoints(os.path.join(folder, "run"))]
+    check(len(ck) == 2, f"set-up run: expected a mid-run and an end checkpoint, found {ck}")
     truncated = os.path.join(folder, "truncated.rkpmcp")
     data = read(ck[0], "rb")
     with open(truncated, "wb") as f:
         f.write(data[: len(data) // 2])
+    # A run folder whose latest checkpoint has one bit flipped: refused, naming the earlier one;
+    # a damaged checkpoint alone in its folder: refused without one to name.
+    damaged, alone = os.path.join(folder, "damaged"), os.path.join(folder, "alone")
+    for d, files in ((damaged, ck), (alone, ck[:1])):
+        os.makedirs(d)
+        for c in files:
+            shutil.copy(c, d)
+        latest = os.path.join(d, os.path.basename(files[-1]))
+        data = bytearray(read(latest, "rb"))
+        data[len(data) // 2] ^= 0x10
+        with open(latest, "wb") as f:
+            f.write(data)
+    earlier = os.path.join(damaged, os.path.basename(ck[-2]))
     cases = [
+        (["taylor_bar", "--restart", damaged],
+         [os.path.basename(ck[-1]), "fails its checksum", "the file is damaged; restart from an earlier checkpoint: " + earlier]),
+        (["taylor_bar", "--restart", alone], ["fails its checksum", "the file is damaged; restart from an earlier checkpoint"]),
         (["taylor_bar", "--restart", os.path.join(folder, "nosuch")], ["no such checkpoint"]),
         (["taylor_bar", "--restart", os.path.join(folder, "empty")], ["no checkpoint", "--checkpoint-interval"]),
         (["block_forging", "--restart", ck[0]], ["taylor_bar run", "rkpm_run taylor_bar"]),
@@ -148,6 +166,8 @@ def refused(rkpm_run, work):
         check(err.count("\n") == 0 and err.startswith("rkpm_run: "), f"'{label}': expected a one-line error: {err!r}")
         for w in words:
             check(w in err, f"'{label}': the error does not say {w!r}: {err!r}")
+        if alone in args:
+            check(err.endswith("restart from an earlier checkpoint"), f"'{label}': names an earlier checkpoint: {err!r}")
         print(f"ok  {label!r:60} -> {err}")
     # A later end time continues the finished run.
     r = run([rkpm_run, "taylor_bar", "--restart", ck[-1], "--end-time", "6e-6", "--out", os.path.join(folder, "later"),

@@ -7,17 +7,24 @@
 // step decides which face acts: leaving the held segments out of the checkpoint makes this test
 // fail) and axisymmetric J2 with a prescribed velocity (axis and velocity constraints).
 // A checkpoint of another configuration, format version, problem or section layout, a truncated
-// file and a file that is not a checkpoint are refused with a message naming the reason; the
-// write leaves no temporary file; the header (with the writer's description) is read without a
-// solver, and the latest checkpoint of a folder is found by its name.
+// file and a file that is not a checkpoint are refused with a message naming the reason; a file
+// with one bit flipped anywhere (2002 places: every byte of the prefix, header and section table,
+// three in every section, 600 pseudo-random) is refused as damaged, naming the part the bit is
+// in by the layout parsed here on its own, and leaves the solver as it was; the write leaves no
+// temporary file; the header (with the writer's description) is read without a solver, and the
+// latest checkpoint of a folder is found by its name.
 
 #include <doctest/doctest.h>
 
 #include <unistd.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
+#include <set>
 #include <string>
 
 #include "support/solver_fixtures.hpp"
@@ -77,6 +84,61 @@ std::string message_of(const std::function<void()>& f) {
     return e.what();
   }
   return "(no error)";
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Fields of a checkpoint's bytes (layout: io/checkpoint_format.hpp).
+template <class T>
+T load(const std::string& bytes, std::size_t at) {
+  T v;
+  std::memcpy(&v, bytes.data() + at, sizeof(T));
+  return v;
+}
+template <class T>
+void store(std::string& bytes, std::size_t at, const T& v) {
+  std::memcpy(bytes.data() + at, &v, sizeof(T));
+}
+// The prefix's and the table's checksums again: a file changed on purpose, as another version or
+// build would write it, rather than damaged.
+void reseal(std::string& bytes) {
+  const auto table = load<std::uint64_t>(bytes, 20);
+  store(bytes, bytes.size() - 4, io::crc32_of(bytes.data() + table, bytes.size() - 4 - table));
+  store(bytes, 28, io::crc32_of(bytes.data(), 28));
+}
+
+// A part of a checkpoint file, [begin, end), and how the reader names it when damaged.
+struct file_part {
+  std::size_t begin, end;
+  std::string name;
+};
+// The parts of a checkpoint, from its layout as documented, read here without the reader: the
+// prefix and the header ("the header"), each section's values and the table with its checksum.
+std::vector<file_part> layout_of(const std::string& bytes) {
+  const auto table = load<std::uint64_t>(bytes, 20);
+  std::size_t at = table;
+  auto next = [&]<class T>(T) {
+    at += sizeof(T);
+    return load<T>(bytes, at - sizeof(T));
+  };
+  const auto header_bytes = next(std::uint64_t{});
+  next(std::uint32_t{});
+  const auto sections = next(std::uint64_t{});
+  std::vector<file_part> parts{{0, io::checkpoint_prefix_bytes + header_bytes, "the header"}};
+  for (std::uint64_t k = 0; k < sections; ++k) {
+    const auto length = next(std::uint64_t{});
+    const std::string name = bytes.substr(at, length);
+    at += length;
+    const auto count = next(std::uint64_t{}), size = next(std::uint64_t{});
+    next(std::uint32_t{});
+    parts.push_back({parts.back().end, parts.back().end + count * size, "section '" + name + "'"});
+  }
+  CHECK(at + 4 == bytes.size());  // the table's checksum closes the file
+  parts.push_back({table, bytes.size(), "the section table"});
+  return parts;
 }
 
 bool same_state(const material::j2_state& a, const material::j2_state& b) {
@@ -215,14 +277,21 @@ TEST_CASE("a checkpoint that does not fit is refused with the reason") {
   CHECK(refusal(write("half.rkpmcp", bytes.substr(0, bytes.size() / 2))).find("is truncated") != std::string::npos);
   CHECK(refusal(write("cut.rkpmcp", bytes.substr(0, bytes.size() - 1))).find("is truncated") != std::string::npos);
   CHECK(refusal(write("notes.txt", "t = 1 ms\n")).find("is not an rkpm checkpoint file") != std::string::npos);
-  std::string later = bytes;
-  later[8] = static_cast<char>(io::checkpoint_format_version + 1);  // the format version follows the 8-byte magic
-  CHECK(refusal(write("later.rkpmcp", later))
-            .find(fmt::format("format version {}, this build reads version {}", io::checkpoint_format_version + 1,
-                              io::checkpoint_format_version)) != std::string::npos);
+  CHECK(refusal(write("prefix.rkpmcp", bytes.substr(0, 20))).find("is truncated") != std::string::npos);
+  CHECK(refusal(write("version.rkpmcp", bytes.substr(0, 10))).find("is truncated") != std::string::npos);
+  // Another version: a later one (its prefix checks) and one from before the checksums (3).
+  for (const std::uint32_t version : {io::checkpoint_format_version + 1, std::uint32_t{3}}) {
+    std::string other_version = bytes;
+    store(other_version, 8, version);  // the format version follows the 8-byte magic
+    reseal(other_version);
+    CHECK(refusal(write("version.rkpmcp", other_version))
+              .find(fmt::format("format version {}, this build reads version {}", version,
+                                io::checkpoint_format_version)) != std::string::npos);
+  }
   CHECK(refusal(dir / "missing.rkpmcp").find("does not exist") != std::string::npos);
-  std::string renamed = bytes;  // a section another build would write in its place
-  renamed.replace(renamed.find("solver.d"), 8, "solver.q");
+  std::string renamed = bytes;  // a section another build would write in its place, in the table
+  renamed.replace(renamed.find("solver.d", load<std::uint64_t>(bytes, 20)), 8, "solver.q");
+  reseal(renamed);
   CHECK(refusal(write("renamed.rkpmcp", renamed)).find("of another build: section 'solver.q' where 'solver.d' was expected") !=
         std::string::npos);
 
@@ -254,5 +323,83 @@ TEST_CASE("a checkpoint replaces the previous one through a temporary file") {
   auto again = make_solver<axi_cfg>(compressed_cylinder(), options());
   read_checkpoint(again, path, axi_cfg::name());
   CHECK(again.steps() == 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a checkpoint with any one bit flipped is refused, naming the damaged part") {
+  test::run_serially();
+  const auto dir = scratch_folder("damage");
+  auto s = make_solver<ps_contact_cfg>(striking_block(), options());
+  for (int k = 0; k < 40; ++k) s.step();
+  REQUIRE(s.last_contact().active > 0);  // so that the contact pairs' section is not empty
+  const auto good = dir / io::checkpoint_file_name(s.steps());
+  write_checkpoint(s, good, ps_contact_cfg::name(), R"({"case": "striking_block"})");
+  const std::string bytes = read_bytes(good);
+
+  // The parts tile the file (no padding, no byte outside a checked part).
+  const std::vector<file_part> parts = layout_of(bytes);
+  bool tiled = parts.front().begin == 0 && parts.back().end == bytes.size();
+  for (std::size_t k = 1; k < parts.size(); ++k) tiled = tiled && parts[k].begin == parts[k - 1].end;
+  CHECK(tiled);
+  CHECK(parts.size() > 20);
+
+  // Every byte of the prefix, the header and the table (the file's last byte among them), the
+  // first, middle and last byte of every section, and 600 pseudo-random places; the bit varies.
+  std::vector<std::size_t> places;
+  for (const file_part& p : parts) {
+    if (p.name.starts_with("section"))
+      for (std::size_t at : {p.begin, (p.begin + p.end) / 2, p.end - 1}) {
+        if (p.begin < p.end) places.push_back(at);
+      }
+    else
+      for (std::size_t at = p.begin; at < p.end; ++at) places.push_back(at);
+  }
+  std::mt19937_64 random(20240517);
+  for (int k = 0; k < 600; ++k) places.push_back(random() % bytes.size());
+
+  auto fresh = make_solver<ps_contact_cfg>(striking_block(), options());
+  const auto path = dir / "damaged.rkpmcp";
+  std::vector<std::string> wrong;
+  std::set<std::string> named;
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    const std::size_t at = places[k];
+    std::string damaged = bytes;
+    damaged[at] = static_cast<char>(damaged[at] ^ (1 << (k % 8)));
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << damaged;
+    const file_part& part = *std::ranges::find_if(parts, [&](const file_part& p) { return at < p.end; });
+    std::string message = "(no error)";
+    bool typed = false;
+    try {
+      read_checkpoint(fresh, path, ps_contact_cfg::name());
+    } catch (const io::checkpoint_damaged& e) {
+      message = e.what();
+      typed = true;
+    } catch (const rkpm::error& e) {
+      message = e.what();
+    }
+    const std::string expected = fmt::format("checkpoint '{}': {} fails its checksum: the file is damaged; restart "
+                                             "from an earlier checkpoint",
+                                             path.string(), part.name);
+    if (!typed || message != expected)
+      wrong.push_back(fmt::format("byte {} bit {} ({}): {}", at, k % 8, part.name, message));
+    named.insert(part.name);
+  }
+  std::string first_wrong;
+  for (std::size_t k = 0; k < wrong.size() && k < 5; ++k) first_wrong += "\n" + wrong[k];
+  INFO(wrong.size(), " of ", places.size(), " refused wrongly or accepted:", first_wrong);
+  CHECK(wrong.empty());
+  std::size_t empty_sections = 0;
+  for (const file_part& p : parts) empty_sections += p.begin == p.end;
+  CHECK(named.size() + empty_sections == parts.size());  // every part was damaged somewhere
+  CHECK(places.size() > 1000);
+  CHECK(fresh.steps() == 0);  // no refused file changed the solver
+
+  // The header alone (a restart's first read) refuses them too; the intact file still reads.
+  std::string header_damaged = bytes;
+  header_damaged[40] ^= 4;
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << header_damaged;
+  CHECK(message_of([&] { io::read_checkpoint_header(path); }).find("the header fails its checksum") != std::string::npos);
+  read_checkpoint(fresh, good, ps_contact_cfg::name());
+  CHECK(fresh.steps() == s.steps());
   std::filesystem::remove_all(dir);
 }
