@@ -159,17 +159,19 @@ class johnson_cook {
     const double dgamma = rr.increment;
     const flow_point at{step.dt > 0.0 ? dgamma / step.dt : 0.0, T};
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
+    // ln max(rate*, 1), once for the work's rate factor and the failure strain.
+    const double rate_star = at.plastic_strain_rate / flow_.reference_rate;
+    const double log_rate = rate_star > 1.0 ? std::log(rate_star) : 0.0;
     // (32) at the step's rate and T: the exact integral, from the flow stresses at both ends.
-    const double work = law.integral(eps_p, eps_p + dgamma, yield, rr.flow_stress, at.plastic_strain_rate);
+    const double work =
+        law.integral_at_factor(eps_p, eps_p + dgamma, yield, rr.flow_stress, 1.0 + flow_.C * log_rate);
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
     s.temperature = T + heat_per_work_ * work;  // (32a)
     if (damage_ && dgamma > 0.0) {
       const double q = rr.flow_stress;  // sqrt(3/2) 2 mu |e^e| = sigma_y at the root
       const double triaxiality = q > 0.0 ? bulk_ * t.volumetric / q : 0.0;  // (tr tau / 3) / q
-      const double r = at.plastic_strain_rate / flow_.reference_rate;
-      const double eps_f =
-          damage_->failure_strain(triaxiality, r > 1.0 ? std::log(r) : 0.0, flow_.homologous_temperature(T));
+      const double eps_f = damage_->failure_strain(triaxiality, log_rate, flow_.homologous_temperature(T));
       s.damage = eps_f > 0.0 ? s.damage + dgamma / eps_f : std::max(1.0, s.damage);  // (32b)
       if (s.failed()) {
         s.elastic_left_cauchy_green = isotropic(t.volumetric);

@@ -63,6 +63,39 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     const double dg = (q_trial - flow_at_start) / (three_mu + hardening.modulus);
     const double r = residual(dg);
     return {dg, 0, r, sigma};
+  } else if constexpr (requires { hardening.along_step(eps_p_n, step.dt, flow_at_start); }) {
+    // The same Newton in x = ln dgamma as the branch below, on the law's own curve along the
+    // step (hardening::johnson_cook::at_temperature_t::step_curve): the flow stress and its
+    // x-derivative together, ln rate* = x - ln(dt rate0) with no log, one exp per update.
+    const auto curve = hardening.along_step(eps_p_n, step.dt, flow_at_start);
+    const double limit = tolerance * q_trial;
+    double lo = 0.0;
+    double hi = q_trial / three_mu;
+    double dg = (q_trial - flow_at_start) / three_mu;
+    double x = std::log(dg);
+    auto p = curve(dg, x);
+    double r = q_trial - three_mu * dg - p.flow;
+    for (int it = 1;; ++it) {
+      if (std::abs(r) <= limit) return {dg, it, r, p.flow};
+      if (it > max_iterations || !std::isfinite(r))
+        fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
+             "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
+             "{}); raise max_newton_iterations or loosen newton_tolerance",
+             H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
+      (r > 0.0 ? lo : hi) = dg;
+      // dr/dx = -(3 mu dgamma + d sigma_y / dx).
+      const double next_x = x + r / (three_mu * dg + p.dflow_dx);
+      const double next = std::exp(next_x);
+      if (next > lo && next < hi) {
+        dg = next;
+        x = next_x;
+      } else {
+        dg = lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
+        x = std::log(dg);
+      }
+      p = curve(dg, x);
+      r = q_trial - three_mu * dg - p.flow;
+    }
   } else if constexpr (requires(const flow_point& p) { hardening.rate_slope(eps_p_n, p); }) {
     // A rate-dependent law (Johnson-Cook, docs/method.md (28a)): Newton in x = ln dgamma. The
     // flow stress rises with ln(rate) = x - ln dt and, for eps_p^n with n <= 1 or any

@@ -21,6 +21,7 @@
 #include <rkpm/material/hardening.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
+#include <rkpm/material/radial_return.hpp>
 
 #include "support/error_message.hpp"
 #include "support/tensors.hpp"
@@ -290,4 +291,39 @@ TEST_CASE("johnson_cook: molten points carry pressure only; the Newton return is
   CHECK(rkpm::test::contains(
       rkpm::test::error_message([&] { mat::johnson_cook(copper, copper_flow, mat::johnson_cook_heating{-1.0}); }),
       "specific_heat"));
+}
+
+TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per update) solves what the general rate branch solves") {
+  const auto& l = copper_flow;
+  const double three_mu = 3.0 * copper.shear_modulus();
+  for (double T : {294.0, 700.0})
+    for (double eps_n : {0.0, 1e-6, 0.05, 1.0})
+      for (double rate : {0.5, 1e2, 1e4, 1e6})
+        for (double dt : {1e-8, 1e-6}) {
+          CAPTURE(T);
+          CAPTURE(eps_n);
+          CAPTURE(rate);
+          CAPTURE(dt);
+          const auto iso = l.at_temperature(T);
+          // The curve along the step against the flow stress and its slopes at rate dg / dt.
+          const double y = iso.flow_stress(eps_n, {0.0, T});
+          const auto curve = iso.along_step(eps_n, dt, y);
+          for (double dg : {1e-9, 1e-4, 0.02 * eps_n, 0.2}) {
+            if (!(dg > 0.0)) continue;
+            const rkpm::flow_point at{dg / dt, T};
+            const auto p = curve(dg, std::log(dg));
+            CHECK(p.flow == doctest::Approx(l.flow_stress(eps_n + dg, at)).epsilon(1e-14));
+            CHECK(p.dflow_dx == doctest::Approx(dg * l.slope(eps_n + dg, at) + dg / dt * l.rate_slope(eps_n + dg, at)).epsilon(1e-12));
+            CHECK(p.rate_factor == doctest::Approx(l.rate_factor(dg / dt)).epsilon(1e-15));
+          }
+          // A trial stress past the rate-0 yield by 3 mu rate dt plus the overstress of `rate`.
+          const double q = iso.flow_stress(eps_n, {rate, T}) + three_mu * rate * dt;
+          const auto fast = rkpm::material::radial_return(iso, q, three_mu, eps_n, 1e-12, 50, y, {dt, 0.0, T});
+          const auto general = rkpm::material::radial_return(l, q, three_mu, eps_n, 1e-12, 50, y, {dt, 0.0, T});
+          CHECK(std::abs(fast.residual) <= 1e-12 * q);
+          CHECK(fast.flow_stress == doctest::Approx(l.flow_stress(eps_n + fast.increment, {fast.increment / dt, T})).epsilon(1e-13));
+          // Both roots within what the residual tolerance allows: |d dgamma| <= 2e-12 q / (3 mu).
+          CHECK(std::abs(fast.increment - general.increment) <= 2e-12 * q / three_mu);
+          CHECK(fast.iterations <= general.iterations + 1);
+        }
 }

@@ -122,10 +122,60 @@ struct johnson_cook {
     // return mapping found: flow_from at rate 0 and eps_p = from, flow_to at `rate` and to
     // (to^(n+1) = to (flow_to / (R theta) - A) / B: no pow). theta > 0.
     double integral(double from, double to, double flow_from, double flow_to, double rate) const {
-      const double R = law->rate_factor(rate);
+      return integral_at_factor(from, to, flow_from, flow_to, law->rate_factor(rate));
+    }
+    // The same with the step's rate factor R = 1 + C ln max(rate*, 1) known (no log).
+    double integral_at_factor(double from, double to, double flow_from, double flow_to, double R) const {
       const double A = law->A;
       const double strain = A * (to - from) + (to * (flow_to / (R * theta) - A) - from * (flow_from / theta - A)) / (law->n + 1.0);
       return strain * R * theta;
+    }
+
+    // The flow stress along one step's return mapping, for Newton in x = ln dgamma
+    // (radial_return.hpp, docs/method.md (28a)): sigma_y(eps_n + dg) at the rate* = dg / (dt rate0)
+    // and its x-derivative, with no log (ln rate* = x - ln(dt rate0)) and, while dg is a small
+    // fraction of eps_n, no pow: (eps_n + dg)^n = eps_n^n (1 + u)^n, u = dg / eps_n, summed as the
+    // binomial series (|u| <= 1/32: 12 terms below 1e-17 of the sum). eps_n^n comes from the flow
+    // stress at the step's start that the caller has (its yield check). Each Newton update then
+    // costs one exp (dg = e^x) and a few multiplications.
+    struct step_curve {
+      double A, B, n, C, theta;
+      double eps_n;       // eps_p at the start of the step
+      double power_n;     // eps_n^n
+      double log_offset;  // ln(dt rate0), +inf when dt = 0 (no rate term)
+      struct point {
+        double flow;     // sigma_y
+        double dflow_dx; // d sigma_y / d ln dgamma = dg d sigma_y / d eps_p + d sigma_y / d ln rate*
+        double rate_factor;  // 1 + C ln max(rate*, 1)
+      };
+      point operator()(double dg, double x) const {
+        const double eps = eps_n + dg;
+        const double u = dg / eps_n;
+        double power;
+        if (eps_n > 0.0 && u <= 1.0 / 32.0) {
+          double sum = 1.0, term = 1.0;
+          for (int k = 1; k <= 12; ++k) {
+            term *= (n - (k - 1)) / k * u;
+            sum += term;
+            if (std::abs(term) <= 1e-17 * sum) break;
+          }
+          power = power_n * sum;
+        } else {
+          power = std::pow(eps, n);
+        }
+        const double S = A + B * power;
+        const double log_rate = x - log_offset;
+        const double R = log_rate > 0.0 ? 1.0 + C * log_rate : 1.0;
+        return {S * R * theta, (dg * n * B * power / eps * R + (log_rate > 0.0 ? S * C : 0.0)) * theta, R};
+      }
+    };
+    // flow_at_start: sigma_y(eps_n) at the reference rate and this temperature, (A + B eps_n^n) theta.
+    step_curve along_step(double eps_n, double dt, double flow_at_start) const {
+      const double power_n = (eps_n > 0.0 && law->B > 0.0 && theta > 0.0)
+                                 ? std::max(0.0, (flow_at_start / theta - law->A) / law->B)
+                                 : (eps_n > 0.0 ? std::pow(eps_n, law->n) : 0.0);
+      return {law->A, law->B, law->n, law->C, theta, eps_n, power_n,
+              dt > 0.0 ? std::log(dt * law->reference_rate) : std::numeric_limits<double>::infinity()};
     }
   };
   at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
