@@ -18,6 +18,7 @@
 #include "tools/runner/case_file/read_body.hpp"
 
 #include "support/error_message.hpp"
+#include "support/tensors.hpp"
 
 using namespace rkpm;
 using runner::case_file::hardening_law;
@@ -26,26 +27,11 @@ namespace {
 
 const material::elastic_constants aluminium{71e9, 0.3, 2700.0};
 
-// Plane strain stretch with shear, out and back, then past the first peak (block-structured F).
-std::vector<mat3> path() {
-  std::vector<mat3> out;
-  for (int i = 0; i <= 120; ++i) {
-    const double s = i <= 40 ? i / 40.0 : i <= 70 ? 1.0 - (i - 40) / 60.0 : 0.5 + (i - 70) / 25.0;
-    mat3 F = mat3::Identity();
-    F(0, 0) = 1.0 + 0.08 * s;
-    F(1, 1) = 1.0 / (1.0 + 0.05 * s);
-    F(0, 1) = 0.06 * s;
-    F(2, 2) = 1.0 + 0.01 * s;  // a hoop stretch, as in axisymmetric geometry
-    out.push_back(F);
-  }
-  return out;
-}
-
 template <class Typed>
 void check_identical(const Typed& typed, const runner::case_file::material_type& file) {
   auto a = typed.initial_state();
   auto b = file.initial_state();
-  for (const mat3& F : path()) {
+  for (const mat3& F : test::stretch_shear_path()) {
     const mat3 ta = typed.kirchhoff_stress(F, a);
     const mat3 tb = file.kirchhoff_stress(F, b);
     CHECK(ta == tb);
@@ -139,7 +125,7 @@ TEST_CASE("no yield: the Hencky law of material::elastic up to round-off") {
   const runner::case_file::material_type file(aluminium, hardening_law::no_yield());
   material::elastic_state a;
   auto b = file.initial_state();
-  for (const mat3& F : path()) {
+  for (const mat3& F : test::stretch_shear_path()) {
     const mat3 ta = elastic.kirchhoff_stress(F, a);
     const mat3 tb = file.kirchhoff_stress(F, b);
     CHECK((ta - tb).norm() <= 1e-12 * ta.norm());

@@ -97,21 +97,6 @@ double jc_curve(double e, double rate, double T) {
          (1.0 - std::pow(Ts, l.m));
 }
 
-// Plane strain stretch with shear, out and back, then past the first peak, with a hoop stretch.
-std::vector<mat3> mixed_path() {
-  std::vector<mat3> out;
-  for (int i = 0; i <= 120; ++i) {
-    const double s = i <= 40 ? i / 40.0 : i <= 70 ? 1.0 - (i - 40) / 60.0 : 0.5 + (i - 70) / 25.0;
-    mat3 F = mat3::Identity();
-    F(0, 0) = 1.0 + 0.08 * s;
-    F(1, 1) = 1.0 / (1.0 + 0.05 * s);
-    F(0, 1) = 0.06 * s;
-    F(2, 2) = 1.0 + 0.01 * s;
-    out.push_back(F);
-  }
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("johnson_cook flow stress: rate term never below 1, T* clamped to [0, 1], slopes and work integral") {
@@ -198,7 +183,7 @@ TEST_CASE("johnson_cook with C = 0 and no heating: the power law from eps_p = ep
     auto a = j2.initial_state();
     auto b = jc.initial_state();
     b.equivalent_plastic_strain = pl.offset;
-    for (const mat3& F : mixed_path()) {
+    for (const mat3& F : test::stretch_shear_path()) {
       const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
       CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
       CHECK(b.equivalent_plastic_strain - pl.offset == doctest::Approx(a.equivalent_plastic_strain).epsilon(1e-9));
@@ -213,7 +198,7 @@ TEST_CASE("johnson_cook with C = 0 and no heating: the power law from eps_p = ep
                                mat::johnson_cook_heating{383.0, 0.0});
     auto a = j2.initial_state();
     auto b = jc.initial_state();
-    for (const mat3& F : mixed_path()) {
+    for (const mat3& F : test::stretch_shear_path()) {
       const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
       CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
       CHECK(b.equivalent_plastic_strain == doctest::Approx(a.equivalent_plastic_strain).epsilon(1e-9));
