@@ -48,7 +48,8 @@ inline constexpr std::string_view checkpoint_magic = "RKPMCKPT";
 // 2: F, tau and the J2 state as block entries (core/block_matrix.hpp), no points.F for J2.
 // 3: no points.det_F and points.stretch; no points.tau when the material recomputes tau.
 // 4: the checked prefix, a CRC-32 per part, the section table; no "end" section;
-//    solver.tool_impulse (each tool's impulse since t = 0).
+//    solver.tool_impulse and solver.tool_impulse_carry (each tool's impulse since t = 0, summed
+//    with compensation).
 inline constexpr std::uint32_t checkpoint_format_version = 4;
 // Earlier versions have no checked prefix: their version number is taken as it reads.
 inline constexpr std::uint32_t checkpoint_first_checked_version = 4;

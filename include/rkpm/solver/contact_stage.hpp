@@ -4,6 +4,8 @@
 // d(n+1) and v(n+1/2) on the predicted configuration, books the work of those velocity jumps
 // (docs/method.md section 7, energy.hpp's impulse_work_at) and each tool's impulse, the sum of
 // its reaction times the step (what a tool's mean force over an interval is computed from).
+// The impulse is summed with compensation (Kahan): a mean force is the difference of two
+// readings, and a plain sum over n steps can lose n x 1e-16 of the total.
 
 #include <algorithm>
 #include <ranges>
@@ -26,7 +28,8 @@ struct contact_stage {
   std::vector<index_t> slaves;  // the particles checked against the tools
   contact_result last;          // of the last step
   double max_penetration = 0.0;  // over the run
-  std::vector<vec2> impulse;     // per tool: sum over the steps of reactions() dt since t = 0 (N s)
+  std::vector<vec2> impulse;        // per tool: sum over the steps of reactions() dt since t = 0 (N s)
+  std::vector<vec2> impulse_carry;  // per tool: what the rounding of impulse left out
 
   // Rigid tools, or pairs of deformable bodies (contact/body_contact.hpp), to enforce contact with.
   bool active() const { return has_contact(policy); }
@@ -38,6 +41,7 @@ struct contact_stage {
     slaves = s.particle;
     policy.setup(body, s);
     impulse.assign(std::ranges::size(policy.tools()), vec2::Zero());
+    impulse_carry = impulse;
   }
 
   // Checkpoint sections (io/checkpoint.hpp).
@@ -51,7 +55,12 @@ struct contact_stage {
     last = policy.enforce(body, t, dt, d, v);
     max_penetration = std::max(max_penetration, last.max_penetration);
     const std::span<const vec2> reaction = policy.reactions();
-    for (std::size_t k = 0; k < impulse.size(); ++k) impulse[k] += reaction[k] * dt;
+    for (std::size_t k = 0; k < impulse.size(); ++k) {
+      const vec2 add = reaction[k] * dt - impulse_carry[k];
+      const vec2 sum = impulse[k] + add;
+      impulse_carry[k] = (sum - impulse[k]) - add;
+      impulse[k] = sum;
+    }
     return sums([&](index_t I, block_sums<2>::sums& s) {
       s[0] += impulse_work_at(body.mass[I], v[I], v_before[I], v_half_prev[I]);
     })[0];
@@ -62,6 +71,7 @@ struct contact_stage {
     a.value("solver.last_contact", s.last);
     a.value("solver.max_penetration", s.max_penetration);
     a.array("solver.tool_impulse", s.impulse);
+    a.array("solver.tool_impulse_carry", s.impulse_carry);
     a.part(s.policy);
   }
 };

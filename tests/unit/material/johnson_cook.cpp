@@ -183,7 +183,7 @@ TEST_CASE("johnson_cook with C = 0 and no heating: the power law from eps_p = ep
     auto a = j2.initial_state();
     auto b = jc.initial_state();
     b.equivalent_plastic_strain = pl.offset;
-    for (const mat3& F : test::stretch_shear_path()) {
+    for (const mat3& F : rkpm::test::stretch_shear_path()) {
       const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
       CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
       CHECK(b.equivalent_plastic_strain - pl.offset == doctest::Approx(a.equivalent_plastic_strain).epsilon(1e-9));
@@ -198,7 +198,7 @@ TEST_CASE("johnson_cook with C = 0 and no heating: the power law from eps_p = ep
                                mat::johnson_cook_heating{383.0, 0.0});
     auto a = j2.initial_state();
     auto b = jc.initial_state();
-    for (const mat3& F : test::stretch_shear_path()) {
+    for (const mat3& F : rkpm::test::stretch_shear_path()) {
       const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
       CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
       CHECK(b.equivalent_plastic_strain == doctest::Approx(a.equivalent_plastic_strain).epsilon(1e-9));
