@@ -33,14 +33,6 @@ struct body_partition {
   std::vector<index_t> particle_body;  // #particles
   std::vector<index_t> cell_body;      // #cells
   bool nodes_are_particles = false;    // particle i is mesh node i
-
-  // The particles of body b, ascending.
-  std::vector<index_t> particles_of(index_t b) const {
-    std::vector<index_t> out;
-    for (index_t I = 0; I < static_cast<index_t>(particle_body.size()); ++I)
-      if (particle_body[I] == b) out.push_back(I);
-    return out;
-  }
 };
 
 // Appends a body's particles and cells to those of a problem with several bodies; the body's

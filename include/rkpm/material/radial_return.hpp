@@ -27,6 +27,19 @@ struct radial_return_result {
   double flow_stress;  // sigma_y(eps_p_n + dgamma) in Pa
 };
 
+namespace detail {
+
+// The refusal of every Newton branch below, naming the flow law (J2's or Johnson-Cook's).
+[[noreturn]] inline void not_converged(std::string_view law, double r, int iterations, double limit, double q_trial,
+                                       double eps_p_n, double dg) {
+  fail("the return mapping of flow law {}: the Newton iteration did not converge: residual {} Pa after {} "
+       "iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = {}); raise max_newton_iterations or "
+       "loosen newton_tolerance",
+       law, r, iterations, limit, q_trial, eps_p_n, dg);
+}
+
+}  // namespace detail
+
 // tolerance is relative: converged when |r| <= tolerance * q_trial. flow_at_start is
 // sigma_y(eps_p_n), which the caller has from its yield check (one pow less per update).
 template <Hardening H>
@@ -78,10 +91,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     for (int it = 1;; ++it) {
       if (std::abs(r) <= limit) return {dg, it, r, p.flow};
       if (it > max_iterations || !std::isfinite(r))
-        fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
-             "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
-             "{}); raise max_newton_iterations or loosen newton_tolerance",
-             H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
+        detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
       // dr/dx = -(3 mu dgamma + d sigma_y / dx).
       const double next_x = x + r / (three_mu * dg + p.dflow_dx);
@@ -112,10 +122,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     for (int it = 1;; ++it) {
       if (std::abs(r) <= limit) return {dg, it, r, sigma};
       if (it > max_iterations || !std::isfinite(r))
-        fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
-             "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
-             "{}); raise max_newton_iterations or loosen newton_tolerance",
-             H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
+        detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
       // dr/dx = -dgamma (3 mu + d sigma_y / d dgamma).
       const double next = dg * std::exp(r / (dg * (three_mu + slope(dg, sigma))));
@@ -131,10 +138,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     for (int it = 0;; ++it) {
       if (std::abs(r) <= limit) return {dg, it, r, sigma};
       if (it == max_iterations || !std::isfinite(r))
-        fail("j2_plasticity<{}>: the return-mapping Newton iteration did not converge: residual "
-             "{} Pa after {} iterations (tolerance {} Pa, q_trial = {} Pa, eps_p = {}, dgamma = "
-             "{}); raise max_newton_iterations or loosen newton_tolerance",
-             H::name, r, it, limit, q_trial, eps_p_n, dg);
+        detail::not_converged(H::name, r, it, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
       const double next = dg + r / (three_mu + slope(dg, sigma));
       // Newton left the bracket (or made no progress while unconverged): bisect instead.

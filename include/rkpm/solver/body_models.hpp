@@ -72,7 +72,7 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
   model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
   if (bodies.count() == 1) {
     discrete_model m = detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition);
-    m.bodies = std::move(bodies);
+    m.set_bodies(std::move(bodies));
     return m;
   }
 
@@ -108,8 +108,7 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
   joined.own = ownership::single_process(n, joined.point_count());
   joined.particles = std::move(particles);
   joined.mesh = std::move(mesh);
-  joined.bodies = std::move(bodies);
-  joined.bodies.find_point_bodies(joined.points);
+  joined.set_bodies(std::move(bodies));
   return joined;
 }
 

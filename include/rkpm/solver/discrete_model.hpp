@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
@@ -52,6 +53,12 @@ struct discrete_model {
   std::vector<vec2> test_gradient;
   ownership own;
   model_bodies bodies;
+
+  // Takes the bodies found for these particles and cells, and finds each point's.
+  void set_bodies(model_bodies b) {
+    bodies = std::move(b);
+    bodies.find_point_bodies(points);
+  }
 
   index_t particle_count() const { return particles.size(); }
   index_t point_count() const { return points.size(); }
@@ -153,8 +160,7 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
   particles.validate();
   model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
   discrete_model m = detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition);
-  m.bodies = std::move(bodies);
-  m.bodies.find_point_bodies(m.points);
+  m.set_bodies(std::move(bodies));
   return m;
 }
 
@@ -167,10 +173,7 @@ using model_factory =
 // The model with its bodies found, if it was assembled without a builder that finds them.
 template <Geometry G>
 discrete_model with_bodies(discrete_model m) {
-  if (!m.bodies.found()) {
-    m.bodies = model_bodies(m.particles.position, m.mesh, G::is_axisymmetric);
-    m.bodies.find_point_bodies(m.points);
-  }
+  if (!m.bodies.found()) m.set_bodies(model_bodies(m.particles.position, m.mesh, G::is_axisymmetric));
   return m;
 }
 

@@ -19,32 +19,13 @@
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/solver/explicit_solver.hpp>
 
+// RKPM_SOLVER_PART(n): whether part n is compiled here (every part is declared extern).
 #if defined(RKPM_INSTANTIATE_SOLVERS)
-#define RKPM_SOLVER_INSTANCE(part, G, M, C) RKPM_SOLVER_INSTANCE_##part(G, M, C)
-#define RKPM_SOLVER_DEFINE(G, M, C) template class explicit_solver<G, M, C>;
-#define RKPM_SOLVER_SKIP(G, M, C)
-#if RKPM_INSTANTIATE_SOLVERS == 1
-#define RKPM_SOLVER_INSTANCE_1 RKPM_SOLVER_DEFINE
-#else
-#define RKPM_SOLVER_INSTANCE_1 RKPM_SOLVER_SKIP
-#endif
-#if RKPM_INSTANTIATE_SOLVERS == 2
-#define RKPM_SOLVER_INSTANCE_2 RKPM_SOLVER_DEFINE
-#else
-#define RKPM_SOLVER_INSTANCE_2 RKPM_SOLVER_SKIP
-#endif
-#if RKPM_INSTANTIATE_SOLVERS == 3
-#define RKPM_SOLVER_INSTANCE_3 RKPM_SOLVER_DEFINE
-#else
-#define RKPM_SOLVER_INSTANCE_3 RKPM_SOLVER_SKIP
-#endif
-#if RKPM_INSTANTIATE_SOLVERS == 4
-#define RKPM_SOLVER_INSTANCE_4 RKPM_SOLVER_DEFINE
-#else
-#define RKPM_SOLVER_INSTANCE_4 RKPM_SOLVER_SKIP
-#endif
+#define RKPM_SOLVER_INSTANCE(G, M, C) template class explicit_solver<G, M, C>;
+#define RKPM_SOLVER_PART(n) (RKPM_INSTANTIATE_SOLVERS == n)
 #elif defined(RKPM_EXTERN_SOLVERS)
-#define RKPM_SOLVER_INSTANCE(part, G, M, C) extern template class explicit_solver<G, M, C>;
+#define RKPM_SOLVER_INSTANCE(G, M, C) extern template class explicit_solver<G, M, C>;
+#define RKPM_SOLVER_PART(n) 1
 #endif
 
 #ifdef RKPM_SOLVER_INSTANCE
@@ -65,19 +46,28 @@ using penalty_coulomb = contact::particle_to_segment<e::penalty, f::coulomb>;
 
 namespace rkpm {
 // In four parts of about equal compile time, built side by side.
-RKPM_SOLVER_INSTANCE(1, solver_instances::plane, solver_instances::elastic, solver_instances::none)
-RKPM_SOLVER_INSTANCE(1, solver_instances::axi, solver_instances::elastic, solver_instances::none)
-RKPM_SOLVER_INSTANCE(1, solver_instances::plane, solver_instances::j2_linear, solver_instances::none)
-RKPM_SOLVER_INSTANCE(1, solver_instances::axi, solver_instances::j2_linear, solver_instances::none)
-RKPM_SOLVER_INSTANCE(2, solver_instances::plane, solver_instances::elastic, solver_instances::effective_frictionless)
-RKPM_SOLVER_INSTANCE(2, solver_instances::plane, solver_instances::elastic, solver_instances::effective_coulomb)
-RKPM_SOLVER_INSTANCE(2, solver_instances::plane, solver_instances::elastic, solver_instances::paper_frictionless)
-RKPM_SOLVER_INSTANCE(3, solver_instances::plane, solver_instances::elastic, solver_instances::paper_coulomb)
-RKPM_SOLVER_INSTANCE(3, solver_instances::plane, solver_instances::j2_linear, solver_instances::paper_coulomb)
-RKPM_SOLVER_INSTANCE(3, solver_instances::plane, solver_instances::j2_linear, solver_instances::penalty_coulomb)
-RKPM_SOLVER_INSTANCE(4, solver_instances::axi, solver_instances::j2_linear, solver_instances::paper_coulomb)
-RKPM_SOLVER_INSTANCE(4, solver_instances::axi, solver_instances::j2_linear, solver_instances::effective_coulomb)
-RKPM_SOLVER_INSTANCE(4, solver_instances::axi, solver_instances::j2_linear, solver_instances::penalty_coulomb)
+#if RKPM_SOLVER_PART(1)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::none)
+RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::elastic, solver_instances::none)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::j2_linear, solver_instances::none)
+RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::none)
+#endif
+#if RKPM_SOLVER_PART(2)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::effective_frictionless)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::effective_coulomb)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::paper_frictionless)
+#endif
+#if RKPM_SOLVER_PART(3)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::paper_coulomb)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::j2_linear, solver_instances::paper_coulomb)
+RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::j2_linear, solver_instances::penalty_coulomb)
+#endif
+#if RKPM_SOLVER_PART(4)
+RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::paper_coulomb)
+RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::effective_coulomb)
+RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::penalty_coulomb)
+#endif
 }  // namespace rkpm
 #undef RKPM_SOLVER_INSTANCE
+#undef RKPM_SOLVER_PART
 #endif

@@ -53,6 +53,23 @@ def compare(typed, from_file, label):
     print(f"ok  {label}: {b['steps']} steps, results {b['results']}")
 
 
+def run_document(rkpm_run, doc, work, name, *options):
+    """Writes the case document to WORK/NAME.json and runs it into WORK/NAME (no plots, quiet, and
+    the options); returns the run and its folder."""
+    path = os.path.join(work, name + ".json")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    out = os.path.join(work, name)
+    shutil.rmtree(out, ignore_errors=True)
+    return run([rkpm_run, path, "--out", out, "--no-plots", "--quiet", *options]), out
+
+
+def printed_imbalance(e):
+    """K + W_int - K0 - W_ext - W_contact - W_constraint from summary.json's energy terms."""
+    return (e["kinetic_J"] + e["internal_J"] - e["initial_kinetic_J"] - e["external_J"] - e["contact_J"] -
+            e["constraint_J"])
+
+
 def paper(rkpm_run, cases, work):
     # (case, end time, built-in override, the same override as a JSON pointer)
     requests = [
@@ -264,18 +281,12 @@ def ledger(rkpm_run, cases, work):
     doc["tools"] = []
     doc["bodies"][0]["initial_velocity_m_s"] = [0, 0]
     doc["bodies"][0]["constraints"] = [{"edge": "bottom", "velocity_m_s": [None, 100]}]
-    path = os.path.join(work, "pushed_bar.json")
-    with open(path, "w") as f:
-        json.dump(doc, f)
-    out = os.path.join(work, "pushed_bar")
-    shutil.rmtree(out, ignore_errors=True)
-    r = run([rkpm_run, path, "--out", out, "--end-time", "20e-6", "--no-plots", "--quiet"])
+    r, out = run_document(rkpm_run, doc, work, "pushed_bar", "--end-time", "20e-6")
     check(r.returncode == 0, f"pushed bar: the run failed: {r.stderr}")
     if r.returncode != 0:
         return
     e = summary(out)["energy"]
-    imbalance = (e["kinetic_J"] + e["internal_J"] - e["initial_kinetic_J"] - e["external_J"] - e["contact_J"] -
-                 e["constraint_J"])
+    imbalance = printed_imbalance(e)
     bound = (e["balance_error"] + 1e-14) * e["largest_term_J"]
     check(abs(imbalance) <= bound, f"pushed bar: the printed terms leave {imbalance} J, more than the printed error "
           f"allows ({bound} J)")
@@ -301,12 +312,7 @@ def voce(rkpm_run, cases, work):
                                       "poisson_ratio": 0.35, "density_kg_m3": 8930, "yield_stress_Pa": 400e6,
                                       "saturation_stress_Pa": saturation, "saturation_rate": 10.0,
                                       "hardening_modulus_Pa": 100e6}
-        path = os.path.join(work, f"voce_{label}.json")
-        with open(path, "w") as f:
-            json.dump(d, f)
-        out = os.path.join(work, "voce-" + label)
-        shutil.rmtree(out, ignore_errors=True)
-        r = run([rkpm_run, path, "--out", out, "--end-time", "20e-6", "--no-plots", "--quiet"])
+        r, out = run_document(rkpm_run, d, work, "voce_" + label, "--end-time", "20e-6")
         check(r.returncode == 0, f"voce ({label}): the run failed: {r.stderr}")
         if r.returncode != 0:
             return
@@ -337,19 +343,13 @@ def johnson_cook(rkpm_run, cases, work):
         doc = json.load(f)
     doc["bodies"][0]["shape"]["rectangle"]["particles"] = [9, 15]
     doc["output"] = {"snapshots": 2, "history_rows": 40}
-    path = os.path.join(work, "jc_small.json")
-    with open(path, "w") as f:
-        json.dump(doc, f)
-    out = os.path.join(work, "jc_small")
-    shutil.rmtree(out, ignore_errors=True)
-    r = run([rkpm_run, path, "--out", out, "--end-time", "8e-6", "--no-plots", "--quiet"])
+    r, out = run_document(rkpm_run, doc, work, "jc_small", "--end-time", "8e-6")
     check(r.returncode == 0, f"johnson_cook: the run failed: {r.stderr}")
     if r.returncode != 0:
         return
     s = summary(out)
     e = s["energy"]
-    imbalance = (e["kinetic_J"] + e["internal_J"] - e["initial_kinetic_J"] - e["external_J"] - e["contact_J"] -
-                 e["constraint_J"])
+    imbalance = printed_imbalance(e)
     check(abs(imbalance) <= (e["balance_error"] + 1e-14) * e["largest_term_J"], f"johnson_cook: imbalance {imbalance}")
     check(e["balance_error"] < 2e-2, f"johnson_cook: balance error {e['balance_error']}")
     check(e["plastic_J"] > 0.05 * e["initial_kinetic_J"], f"johnson_cook: little plastic work {e}")
@@ -399,10 +399,7 @@ def johnson_cook(rkpm_run, cases, work):
                                   "hardening_modulus_Pa": 100e6}
     bad.append(("temperature_of_j2", d, ["/histories/3/max_temperature/body", "no temperature", "johnson_cook"]))
     for name, d, words in bad:
-        path = os.path.join(work, f"jc_{name}.json")
-        with open(path, "w") as f:
-            json.dump(d, f)
-        r = run([rkpm_run, path, "--out", os.path.join(work, "jc_bad"), "--no-plots", "--quiet"])
+        r, _ = run_document(rkpm_run, d, work, f"jc_{name}")
         check(r.returncode != 0, f"{name}: accepted")
         for w in words:
             check(w in r.stderr, f"{name}: the error does not say {w!r}: {r.stderr!r}")
