@@ -25,6 +25,8 @@
 
 #include "cases/block_forging.hpp"
 
+namespace test_cases_block_forging {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -130,3 +132,5 @@ TEST_CASE_TEMPLATE("block forging to 20%: tools not crossed, volume kept, barrel
   CHECK(force < 1.6 * plane_strain_flow * w_mid);
   CHECK(s.energy().balance_error() < 0.02);
 }
+
+}  // namespace test_cases_block_forging

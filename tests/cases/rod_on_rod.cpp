@@ -26,6 +26,8 @@
 #include "cases/rod_on_rod.hpp"
 #include "cases/taylor_bar.hpp"
 
+namespace test_cases_rod_on_rod {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -164,3 +166,5 @@ TEST_CASE("rod on rod: two bodies of one material, each particle and point in it
   CHECK(again.bodies.particle_body() == m.bodies.particle_body());
   CHECK(again.bodies.point_body() == m.bodies.point_body());
 }
+
+}  // namespace test_cases_rod_on_rod

@@ -20,6 +20,8 @@
 
 #include "cases/taylor_bar.hpp"
 
+namespace test_cases_taylor_bar {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -194,3 +196,5 @@ TEST_CASE("Taylor bar in mm, us and mg: the SI run's steps, shape, plastic strai
   // Force: kN, so the wall's impulse in kN us = 1e-3 N s.
   CHECK(b.tool_impulses()[0].y() * 1e-3 == doctest::Approx(a.tool_impulses()[0].y()).epsilon(1e-9));
 }
+
+}  // namespace test_cases_taylor_bar

@@ -26,6 +26,8 @@
 
 #include "cases/wheel_forging.hpp"
 
+namespace test_cases_wheel_forging {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -151,3 +153,4 @@ TEST_CASE("wheel forging, 10 mm stroke: the punch's corners drag particles under
   CHECK(surface > 0.1);  // the check above sees what the layers remove
 }
 
+}  // namespace test_cases_wheel_forging

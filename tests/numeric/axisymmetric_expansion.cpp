@@ -15,6 +15,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_axisymmetric_expansion {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -98,3 +100,5 @@ TEST_CASE("uniform radial expansion stays u_r = a r; the axis stays at u_r = 0")
   // q2 (the diagonal Gauss pair) is about 25 times less accurate here: 9 % at 9 x 9, 4 % at 17 x 17.
   check_rule<cfg_q4::with_quadrature<quadrature::q2>>("q2", 0.15);
 }
+
+}  // namespace test_numeric_axisymmetric_expansion

@@ -27,6 +27,8 @@
 
 #include "support/error_message.hpp"
 
+namespace test_numeric_bodies_in_contact {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -260,3 +262,5 @@ TEST_CASE("bad input: overlapping bodies, a pair naming a body that does not exi
   // Touching bodies are allowed.
   CHECK(test::error_message([&] { make(0.0, 1); }).empty());
 }
+
+}  // namespace test_numeric_bodies_in_contact

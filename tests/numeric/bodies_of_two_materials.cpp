@@ -25,6 +25,8 @@
 
 #include "support/error_message.hpp"
 
+namespace test_numeric_bodies_of_two_materials {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -239,3 +241,5 @@ TEST_CASE("bad input: a wrong constant in body 2, a wrong number of body materia
   MESSAGE(parts);
   CHECK(test::contains(parts, "form 2 separate bodies"));
 }
+
+}  // namespace test_numeric_bodies_of_two_materials

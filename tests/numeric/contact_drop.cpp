@@ -20,6 +20,8 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+namespace test_numeric_contact_drop {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -155,3 +157,5 @@ TEST_CASE("penetration test fails for a wall the contact does not know about") {
                                                             contact::side::left)}));
   CHECK(r.worst_depth > 0.4 * h);
 }
+
+}  // namespace test_numeric_contact_drop

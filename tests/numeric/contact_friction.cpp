@@ -18,6 +18,8 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+namespace test_numeric_contact_friction {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -150,3 +152,5 @@ TEST_CASE_TEMPLATE("Coulomb friction: a tangential push below mu g sticks, above
   // Sliding: the same elastic start-up (~1 mm) on top of 0.5 (g_t - mu g) T^2 = 0.38 m.
   CHECK(slip.final_x == doctest::Approx(slip_theory).epsilon(0.01));
 }
+
+}  // namespace test_numeric_contact_friction

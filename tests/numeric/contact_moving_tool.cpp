@@ -21,6 +21,8 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+namespace test_numeric_contact_moving_tool {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -212,3 +214,5 @@ TEST_CASE("a sharp punch corner between two surface particles: the tool's vertex
   CHECK(with < 0.02 * h);
   CHECK(without > 5.0 * with);  // the check above sees what the vertex pass removes
 }
+
+}  // namespace test_numeric_contact_moving_tool

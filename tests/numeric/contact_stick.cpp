@@ -26,6 +26,8 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+namespace test_numeric_contact_stick {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -164,3 +166,5 @@ TEST_CASE("the slip measure tells: below the load ratio the row slides, at mu N"
   CHECK(r.worst_interior_slip > 0.2 * h);
   CHECK(r.load_ratio == doctest::Approx(mu).epsilon(0.05));
 }
+
+}  // namespace test_numeric_contact_stick

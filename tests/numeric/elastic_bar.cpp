@@ -14,6 +14,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_elastic_bar {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -89,3 +91,5 @@ TEST_CASE("free bar: fundamental period 2L/c, energy, convergence") {
   CHECK(error[1] < error[0]);
   CHECK(error[2] < error[1]);
 }
+
+}  // namespace test_numeric_elastic_bar

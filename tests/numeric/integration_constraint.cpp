@@ -26,6 +26,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_integration_constraint {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -274,3 +276,5 @@ TEST_CASE("linear patch test through the solver: f_int = P b_I with VCI and scni
   check_patch<geometry::plane_strain>();
   check_patch<geometry::axisymmetric>();
 }
+
+}  // namespace test_numeric_integration_constraint

@@ -33,6 +33,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_integration_convergence {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -224,3 +226,5 @@ TEST_CASE("scni: expansion and bar errors and rates (measurement)") {
   expansion_errors<quadrature::scni<>>();
   bar_errors<quadrature::scni<>>();
 }
+
+}  // namespace test_numeric_integration_convergence

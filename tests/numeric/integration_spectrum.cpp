@@ -26,6 +26,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_integration_spectrum {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -222,3 +224,5 @@ TEST_CASE("scni: SCNI's low-energy modes, and the stabilization that removes the
   check_scni<geometry::axisymmetric>("square 9x9", vec2(1e-3, 1e-3), true);
   check_scni<geometry::axisymmetric>("Taylor 4:1 9x9", vec2(8 * 0.16e-3, 8 * 0.648e-3), true);
 }
+
+}  // namespace test_numeric_integration_spectrum

@@ -28,6 +28,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_integration_statics {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -351,3 +353,5 @@ TEST_CASE("scni: manufactured and Lame errors and rates (measurement)") {
   lame_errors<quadrature::scni<>>();
   lame_errors<quadrature::scni_plain>();
 }
+
+}  // namespace test_numeric_integration_statics

@@ -12,6 +12,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_j2_block {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -107,3 +109,5 @@ TEST_CASE("uniaxial strain, boundary held, interior free") {
   CHECK(r.plastic == doctest::Approx(r.plastic_exact).epsilon(1e-4));
   CHECK(r.energy.balance_error() < 1e-6);
 }
+
+}  // namespace test_numeric_j2_block

@@ -12,6 +12,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_linear_fields {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -120,3 +122,5 @@ TEST_CASE("through the solver: uniform det F and Hencky stress") {
                     material::elastic, contact::none>;
   check_through_solver<ax>(Ar, vec2(0.0, 0.2));
 }
+
+}  // namespace test_numeric_linear_fields

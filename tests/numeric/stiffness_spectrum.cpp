@@ -17,6 +17,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_numeric_stiffness_spectrum {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -174,3 +176,5 @@ TEST_CASE("the one-point rule q1 has spurious zero-energy modes") {
   CHECK(q4.zero_modes(q4.omega2) == 3);
   CHECK(q1.relative(q1.omega2, 3) < 1e-2 * q4.relative(q4.omega2, 3));
 }
+
+}  // namespace test_numeric_stiffness_spectrum

@@ -21,6 +21,8 @@
 #include "tools/runner/case_file/build_problem.hpp"
 #include "tools/runner/case_file/measure.hpp"
 
+namespace test_unit_case_file_bodies {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 using test::case_json;
 using test::contains;
@@ -147,3 +149,5 @@ TEST_CASE("bad input: unknown body in a pair, a body with itself, overlap, a nam
   CHECK(reports(e, "/bodies/1/shape", "body 'steel' overlaps body 'beryllium' at t = 0"));
   CHECK(std::count(e.begin(), e.end(), '\n') == 0);
 }
+
+}  // namespace test_unit_case_file_bodies

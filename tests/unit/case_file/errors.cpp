@@ -8,6 +8,8 @@
 
 #include "support/case_files.hpp"
 
+namespace test_unit_case_file_errors {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 using test::case_json;
 using test::contains;
@@ -205,3 +207,5 @@ TEST_CASE("--set overrides: a field the file has, a JSON value or a string") {
   CHECK(reports(load_error(taylor(), override_list{{"/end_time_s", "soon"}}), "/end_time_s",
                 "expected a number, got a string \"soon\""));
 }
+
+}  // namespace test_unit_case_file_errors

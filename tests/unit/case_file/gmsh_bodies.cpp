@@ -15,6 +15,8 @@
 #include "support/case_files.hpp"
 #include "tools/runner/case_file/build_problem.hpp"
 
+namespace test_unit_case_file_gmsh_bodies {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 using test::case_json;
 using test::contains;
@@ -112,3 +114,5 @@ TEST_CASE("a mesh file body: used as given, its physical curves are its edges") 
   doc["bodies"][0]["shape"]["mesh"]["file"] = "junk.msh";
   CHECK(contains(test::load_error(doc), "case.json: /bodies/0/shape/mesh/file: cannot read"));
 }
+
+}  // namespace test_unit_case_file_gmsh_bodies

@@ -20,6 +20,8 @@
 #include "support/error_message.hpp"
 #include "support/tensors.hpp"
 
+namespace test_unit_case_file_hardening_law {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 using runner::case_file::hardening_law;
 
@@ -140,3 +142,5 @@ TEST_CASE("a hardening law is checked as the library's") {
                       aluminium, hardening_law::of(material::hardening::power_law{576.79e6, 0.0, 0.3})),
                   rkpm::error);
 }
+
+}  // namespace test_unit_case_file_hardening_law

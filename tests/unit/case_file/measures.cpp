@@ -24,6 +24,8 @@
 #include "tools/runner/case_file/build_problem.hpp"
 #include "tools/runner/case_file/measure.hpp"
 
+namespace test_unit_case_file_measures {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -110,3 +112,5 @@ TEST_CASE("the block's histories are the typed block's measures") {
   });
   CHECK(forced);
 }
+
+}  // namespace test_unit_case_file_measures

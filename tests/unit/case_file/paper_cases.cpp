@@ -13,6 +13,8 @@
 #include "support/case_files.hpp"
 #include "tools/runner/case_file/build_problem.hpp"
 
+namespace test_unit_case_file_paper_cases {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -139,3 +141,5 @@ TEST_CASE("elastic maps to J2 that never yields") {
   CHECK(!p.material.hardening().yields());
   CHECK(std::isinf(p.material.hardening().flow_stress(1.0)));
 }
+
+}  // namespace test_unit_case_file_paper_cases

@@ -16,6 +16,8 @@
 
 #include <rkpm/core/execution.hpp>
 
+namespace test_unit_core_execution {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -141,3 +143,5 @@ TEST_CASE("ownership and exchange on one process") {
   CHECK_NOTHROW(split.validate(10, 40));
   CHECK_THROWS_AS(exec::exchange(exchange_point::after_scatter, split, d), error);
 }
+
+}  // namespace test_unit_core_execution

@@ -8,6 +8,8 @@
 
 #include <rkpm/correction/polynomial_bases.hpp>
 
+namespace test_unit_correction_polynomial_bases {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::vec;
 using rkpm::correction::linear;
 using rkpm::correction::quadratic;
@@ -81,3 +83,5 @@ TEST_CASE_TEMPLATE("basis gradient against central differences", C, linear, quad
     }
   }
 }
+
+}  // namespace test_unit_correction_polynomial_bases

@@ -9,6 +9,8 @@
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 
+namespace test_unit_geometry_geometry {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 static_assert(Geometry<geometry::plane_strain> && Geometry<geometry::axisymmetric>);
@@ -28,3 +30,5 @@ TEST_CASE("axisymmetric") {
   CHECK(geometry::axisymmetric::out_of_plane_stretch(vec2(-0.05, 0.0), X) == doctest::Approx(0.2 / 0.25).epsilon(1e-15));
   CHECK(geometry::axisymmetric::name == "axisymmetric");
 }
+
+}  // namespace test_unit_geometry_geometry

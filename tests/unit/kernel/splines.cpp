@@ -12,6 +12,8 @@
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/kernel/quartic_spline.hpp>
 
+namespace test_unit_kernel_splines {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 namespace {
 
 using rkpm::kernel::cubic_spline;
@@ -136,3 +138,5 @@ TEST_CASE_TEMPLATE("kernel profile: derivatives against central differences", K,
       CHECK(std::abs(fd2 - K::second_derivative(z)) < 1e-7);
   }
 }
+
+}  // namespace test_unit_kernel_splines

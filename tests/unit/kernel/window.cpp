@@ -11,6 +11,8 @@
 #include <rkpm/kernel/quartic_spline.hpp>
 #include <rkpm/kernel/window.hpp>
 
+namespace test_unit_kernel_window {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::vec;
 using rkpm::vec2;
 using rkpm::kernel::cubic_spline;
@@ -82,3 +84,5 @@ TEST_CASE("in_support: strict, per direction") {
   // Isotropic support 3 would contain this offset; the rectangle 1 x 3 does not.
   CHECK_FALSE(rkpm::kernel::in_support<2>(vec2(2.0, 0.0), a));
 }
+
+}  // namespace test_unit_kernel_window

@@ -8,6 +8,8 @@
 
 #include <rkpm/material/elastic.hpp>
 
+namespace test_unit_material_elastic {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::mat3;
 using rkpm::material::elastic;
 using rkpm::material::elastic_constants;
@@ -138,3 +140,5 @@ TEST_CASE("a bad deformation gradient throws instead of returning NaN") {
   F(0, 2) = 0.1;
   CHECK_THROWS_WITH_AS(stress(F), doctest::Contains("out-of-plane"), rkpm::error);
 }
+
+}  // namespace test_unit_material_elastic

@@ -11,6 +11,8 @@
 
 #include "support/error_message.hpp"
 
+namespace test_unit_material_elastic_constants {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::test::contains;
 using rkpm::test::error_message;
 
@@ -79,3 +81,5 @@ TEST_CASE("out-of-range elastic constants are rejected with the parameter named"
   CHECK(contains(message, "0.5"));
   CHECK(contains(message, "(-1, 0.5)"));
 }
+
+}  // namespace test_unit_material_elastic_constants

@@ -10,6 +10,8 @@
 
 #include "support/error_message.hpp"
 
+namespace test_unit_material_hardening {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::test::contains;
 using rkpm::test::error_message;
 
@@ -100,3 +102,5 @@ TEST_CASE("bad hardening parameters are rejected with the parameter named") {
                  }),
                  "max_newton_iterations"));
 }
+
+}  // namespace test_unit_material_hardening

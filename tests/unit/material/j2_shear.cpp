@@ -14,6 +14,8 @@
 
 #include "support/paper_materials.hpp"
 
+namespace test_unit_material_j2_shear {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::mat3;
 using rkpm::material::elastic_constants;
 using rkpm::material::j2_plasticity;
@@ -155,3 +157,5 @@ TEST_CASE("small-strain limit of simple shear: tau12 = (s0 + H eps_p) / sqrt(3)"
   CHECK(m.eps_p == doctest::Approx(eps_p).epsilon(1e-2));  // finite-strain terms are O(g)
   CHECK(m.tau(0, 1) == doctest::Approx(mu * (g - std::sqrt(3.0) * eps_p)).epsilon(1e-3));
 }
+
+}  // namespace test_unit_material_j2_shear

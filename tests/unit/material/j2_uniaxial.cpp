@@ -16,6 +16,8 @@
 #include "support/tensors.hpp"
 #include "support/paper_materials.hpp"
 
+namespace test_unit_material_j2_uniaxial {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::mat3;
 using rkpm::material::elastic_constants;
 using rkpm::material::j2_plasticity;
@@ -217,3 +219,5 @@ TEST_CASE("power law, one large uniaxial-strain step: the local Newton converges
     CHECK(von_mises(tau) == doctest::Approx(wheel_hardening.flow_stress(eps_p)).epsilon(1e-11));
   }
 }
+
+}  // namespace test_unit_material_j2_uniaxial

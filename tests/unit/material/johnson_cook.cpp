@@ -26,6 +26,8 @@
 #include "support/error_message.hpp"
 #include "support/tensors.hpp"
 
+namespace test_unit_material_johnson_cook {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::mat3;
 namespace h = rkpm::material::hardening;
 namespace mat = rkpm::material;
@@ -312,3 +314,5 @@ TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per
           CHECK(fast.iterations <= general.iterations + 1);
         }
 }
+
+}  // namespace test_unit_material_johnson_cook

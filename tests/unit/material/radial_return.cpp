@@ -10,6 +10,8 @@
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/radial_return.hpp>
 
+namespace test_unit_material_radial_return {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::material::radial_return;
 namespace h = rkpm::material::hardening;
 
@@ -104,3 +106,5 @@ TEST_CASE("a softening user law is still bracketed: bisection keeps eps_p + dgam
   CHECK(std::abs(r.residual) <= 1e-12 * q_trial);
   CHECK(r.increment == doctest::Approx(bisection_root(law, q_trial, 0.1)).epsilon(1e-10));
 }
+
+}  // namespace test_unit_material_radial_return

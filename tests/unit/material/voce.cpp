@@ -16,6 +16,8 @@
 #include "support/tensors.hpp"
 #include "support/error_message.hpp"
 
+namespace test_unit_material_voce {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::mat3;
 namespace h = rkpm::material::hardening;
 
@@ -167,3 +169,5 @@ TEST_CASE("voce is a Hardening of the list and makes a typed configuration") {
   boost::hana::for_each(h::laws, [&](auto t) { listed = listed || std::is_same_v<typename decltype(t)::type, h::voce>; });
   CHECK(listed);
 }
+
+}  // namespace test_unit_material_voce

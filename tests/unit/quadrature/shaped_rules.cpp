@@ -15,6 +15,8 @@
 #include <rkpm/geometry/plane_strain.hpp>
 #include <rkpm/quadrature/shaped_rules.hpp>
 
+namespace test_unit_quadrature_shaped_rules {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -142,3 +144,5 @@ TEST_CASE("a mesh of several cells: weights add up to the area; inverted cells a
   CHECK_THROWS_WITH_AS((make_quadrature_points<quadrature::q2_tri, geometry::plane_strain>(clockwise)),
                        doctest::Contains("counter-clockwise"), error);
 }
+
+}  // namespace test_unit_quadrature_shaped_rules

@@ -29,6 +29,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_unit_solver_checkpoint {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -403,3 +405,5 @@ TEST_CASE("a checkpoint with any one bit flipped is refused, naming the damaged 
   CHECK(fresh.steps() == s.steps());
   std::filesystem::remove_all(dir);
 }
+
+}  // namespace test_unit_solver_checkpoint

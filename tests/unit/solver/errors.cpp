@@ -8,6 +8,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_unit_solver_errors {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -117,3 +119,5 @@ TEST_CASE("the body inverts: the error gives step, time and point") {
   omp_set_num_threads(threads);
 #endif
 }
+
+}  // namespace test_unit_solver_errors

@@ -17,6 +17,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_unit_solver_material_step {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -113,3 +115,5 @@ TEST_CASE("a law that needs nothing of the step keeps its two-argument form") {
   CHECK(a.equivalent_plastic_strain > 0.0);
   CHECK(a.equivalent_plastic_strain == b.equivalent_plastic_strain);
 }
+
+}  // namespace test_unit_solver_material_step

@@ -11,6 +11,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_unit_solver_point_storage {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -67,3 +69,5 @@ TEST_CASE("the F read from the J2 state is the deformation gradient of the coeff
   CHECK(sheared > 1e-4);  // the test sees a deformed configuration
   MESSAGE("largest shear F12 ", sheared, ", largest plastic strain ", plastic);
 }
+
+}  // namespace test_unit_solver_point_storage

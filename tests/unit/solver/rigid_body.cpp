@@ -12,6 +12,8 @@
 
 #include "support/solver_fixtures.hpp"
 
+namespace test_unit_solver_rigid_body {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 
 namespace {
@@ -91,3 +93,5 @@ TEST_CASE("internal forces sum to zero for an arbitrary deformed state") {
   CHECK(eps_p > 0.0);
   check.operator()<j2_cfg>();
 }
+
+}  // namespace test_unit_solver_rigid_body
