@@ -16,8 +16,14 @@ if(RKPM_PROGRAM_PCH)
     <nlohmann/json.hpp>)
 endif()
 
+# Compiled with -fPIC (the runner's library goes into the Python module, a shared object), so
+# every program that uses the header is too: a header is only used with the flags it was made with.
+if(RKPM_PROGRAM_PCH)
+  target_compile_options(rkpm_program_pch PRIVATE -fPIC)
+endif()
 function(rkpm_use_program_pch target)
   if(RKPM_PROGRAM_PCH)
     target_precompile_headers(${target} REUSE_FROM rkpm_program_pch)
+    target_compile_options(${target} PRIVATE -fPIC)
   endif()
 endfunction()

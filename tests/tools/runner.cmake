@@ -4,10 +4,6 @@
 # rkpm_run, build it first (cmake --build BUILD --target rkpm_run).
 set(rkpm_runner_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_runner.py)
 set(rkpm_runner_work ${CMAKE_CURRENT_BINARY_DIR}/tools/runner)
-find_program(RKPM_SYSTEM_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
-if(NOT RKPM_SYSTEM_PYTHON)
-  find_program(RKPM_SYSTEM_PYTHON NAMES python3)
-endif()
 
 add_test(NAME tools.runner.bad_options
          COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} bad-options $<TARGET_FILE:rkpm_run> ${rkpm_runner_work})

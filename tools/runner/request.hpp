@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "methods.hpp"
+#include "run_hooks.hpp"
 
 namespace rkpm::runner {
 
@@ -33,6 +34,7 @@ struct run_request {
   std::optional<double> checkpoint_interval;  // s of simulated time between checkpoints
   std::string restart;                        // checkpoint file or run folder to continue
   std::vector<std::string> given;             // the options given on the command line ("--kernel", ...)
+  run_hooks hooks;                            // none from the command line (run_hooks.hpp)
 
   // The key of the dispatch table: the contact enforcement (kernel, correction and rule are
   // chosen at run time).

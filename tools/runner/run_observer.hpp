@@ -23,6 +23,7 @@
 #include "figures.hpp"
 #include "interrupt.hpp"
 #include "json.hpp"
+#include "run_hooks.hpp"
 #include "run_record.hpp"
 
 namespace rkpm::runner {
@@ -35,11 +36,12 @@ class run_observer {
   // Writes into `dir`: history.csv (the record's rows so far, then one per interval), CASE.pvd
   // (the record's snapshots, then new ones) and the figure shapes. `identity` is the runner's
   // description of the run (case, policies, parameters), kept in every checkpoint with the
-  // record; `configuration` is the solver's configuration name (Config::name()).
+  // record; `configuration` is the solver's configuration name (Config::name()); `hooks` what an
+  // embedding caller asked for (run_hooks.hpp).
   run_observer(const std::filesystem::path& dir, const typename Case::parameters& params, const Solver& s,
-               run_record record, json identity, std::string configuration, bool quiet)
+               run_record record, json identity, std::string configuration, bool quiet, run_hooks hooks = {})
       : dir_(dir), params_(params), record_(std::move(record)), identity_(std::move(identity)),
-        configuration_(std::move(configuration)), quiet_(quiet),
+        configuration_(std::move(configuration)), quiet_(quiet), hooks_(std::move(hooks)),
         tools_(static_cast<index_t>(s.contact().tools().size())),
         mean_force_(tools_, vec2::Zero()),
         measures_(Case::measure(s, params, mean_force_)),
@@ -75,6 +77,9 @@ class run_observer {
     }
     if (const int signal_number = pending_interrupt().load(); signal_number != 0 && !last)
       fail("interrupted by signal {} at t = {:.6g} s, step {}", signal_number, t, s.steps());
+    if (hooks_.observe && (last || s.steps() % std::max(hooks_.every, 1L) == 0) &&
+        !hooks_.observe(particle_state_of(s)) && !last)
+      throw stop_requested{t, static_cast<long>(s.steps())};
   }
 
   // Writes checkpoint_<step>.rkpmcp for the solver's current state (once per step); returns its path.
@@ -158,6 +163,7 @@ class run_observer {
   json identity_;
   std::string configuration_;
   bool quiet_;
+  run_hooks hooks_;
   index_t tools_;
   std::vector<vec2> mean_force_;
   measures measures_;

@@ -131,14 +131,17 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   }
 
   run_observer<Case, Solver> observe(dir, params, s, std::move(record), identity,
-                                     method.configuration, request.quiet);
+                                     method.configuration, request.quiet, request.hooks);
   if (restart) observe.resume(fs::absolute(restart->file).parent_path());
   summary["status"] = "running";  // what a killed run's folder says
   write_json(dir / "summary.json", summary);
   std::string error;
+  bool stopped = false;
   try {
     s.run(observe, 1);
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
+  } catch (const stop_requested&) {
+    stopped = true;  // the caller's observer asked (run_hooks.hpp): not an error
   } catch (const std::exception& e) {
     error = e.what();
     // Stopped between steps (the step limit, Ctrl-C): the state is whole and can be continued.
@@ -152,7 +155,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   }
   observe.finish();
 
-  summary["status"] = error.empty() ? "completed" : "failed";
+  summary["status"] = !error.empty() ? "failed" : stopped ? "stopped" : "completed";
   if (!error.empty()) summary["error"] = error;
   summary["particles"] = s.model().particle_count();
   summary["quadrature_points"] = s.model().point_count();
@@ -185,13 +188,15 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
       fmt::print(stderr, "rkpm_run: figures skipped: {}\n", ex.what());
     }
   }
+  outcome.history = observe.table();
+  if (request.hooks.keep_final_state) outcome.final_state = particle_state_of(s);
   if (!error.empty()) {
     const std::string hint = observe.last_checkpoint().empty()
                                  ? std::string()
                                  : fmt::format("; continue with --restart {}", observe.last_checkpoint().string());
-    fail("{} (what was written so far is in {}{})", error, outcome.directory, hint);
+    throw run_failure(fmt::format("{} (what was written so far is in {}{})", error, outcome.directory, hint));
   }
-  outcome.completed = true;
+  outcome.completed = !stopped;
   return outcome;
 }
 
