@@ -3,6 +3,7 @@
 
 #include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/approximation/rk_shape_functions.hpp>
+#include <rkpm/contact/chosen_enforcement.hpp>
 #include <rkpm/contact/enforcement.hpp>
 #include <rkpm/contact/friction.hpp>
 #include <rkpm/contact/none.hpp>

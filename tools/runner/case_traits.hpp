@@ -37,6 +37,16 @@ json case_parameters(const typename Case::parameters& p) {
   return out;
 }
 
+// The penalty enforcement's stiffness (N/m): the typed case's parameter, or the case file's
+// "penalty_stiffness_N_m" (0 when it gives none: the file's checks refuse penalty then).
+template <class Case>
+double penalty_stiffness(const typename Case::parameters& p) {
+  if constexpr (is_file_case<Case>)
+    return p.penalty_stiffness.value_or(0.0);
+  else
+    return p.penalty_stiffness_N_m;
+}
+
 // History rows and snapshots over the run: the case file's "output", else 400 and 20.
 template <class Case>
 std::pair<int, int> output_counts(const typename Case::parameters& p) {

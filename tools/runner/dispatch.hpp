@@ -1,13 +1,14 @@
 #pragma once
-// The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --contact E`:
-// the case fixes geometry and material, the enforcement picks one of three compiled solver
-// types from a table built with Boost.Hana (methods.hpp), and kernel, correction and rule are
-// chosen at run time by the library's builder (rkpm/solver/make_model.hpp, compiled once per
-// geometry: models.hpp), since they change the model's tables, not the solver's type. Coulomb friction (coefficient 0 is frictionless) serves every
-// case.
+// The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --enforcement E`:
+// the case fixes geometry and material, so each case is one compiled solver type. Kernel,
+// correction and rule are chosen at run time by the library's builder (rkpm/solver/make_model.hpp,
+// compiled once per geometry: models.hpp), since they change the model's tables, not the solver's
+// type; the contact enforcement is contact::enforcement::chosen, which calls the policy the
+// request names (the same numbers as that policy compiled in). Coulomb friction (coefficient 0
+// is frictionless) serves every case.
 
 #include <boost/hana.hpp>
-#include <map>
+#include <type_traits>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -33,11 +34,18 @@
 
 namespace rkpm::runner {
 
-template <class Case, class E>
+// The runner's contact: the enforcement the request names, Coulomb friction.
+using runner_contact = contact::particle_to_segment<contact::enforcement::chosen, contact::friction::coulomb>;
+// Every enforcement the command line offers (methods.hpp, from the library's policy list) can be chosen.
+static_assert(hana::all_of(enforcements, [](auto t) {
+  return hana::bool_c<std::is_constructible_v<contact::enforcement::chosen, typename decltype(t)::type>>;
+}));
+
+template <class Case>
 run_outcome run_with(const run_request& r, const typename Case::parameters& p, const std::optional<restart_point>& restart) {
   using G = typename Case::geometry_type;
   using M = typename Case::material_type;
-  using Ct = contact::particle_to_segment<E, contact::friction::coulomb>;
+  using Ct = runner_contact;
   using Solver = explicit_solver<G, M, Ct>;
   run_options options;
   options.end_time = Case::end_time(p);
@@ -45,30 +53,15 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   const rkpm::method_names method{r.kernel, r.correction, r.quadrature};
   const std::function<Solver()> make = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
+    pr.contact.set_enforcement(contact::enforcement::chosen::named(r.contact, penalty_stiffness<Case>(p)));
     warn_if_too_large(pr.particles.size(), quadrature_point_count(r.quadrature, pr.mesh.cells(),
                                                                   static_cast<index_t>(pr.mesh.node.size())));
     return make_solver<G>(method, std::move(pr), options);
   };
   return simulate<Case, Solver>(r, p,
-                                {r.kernel, r.correction, r.quadrature, G::name, E::name,
+                                {r.kernel, r.correction, r.quadrature, G::name, r.contact,
                                  method.configuration_name<G, M, Ct>()},
                                 make, restart);
-}
-
-template <class Case>
-using run_function = run_outcome (*)(const run_request&, const typename Case::parameters&,
-                                     const std::optional<restart_point>&);
-
-// Contact enforcement name -> the run function with that enforcement (the solver's type);
-// kernel, correction and quadrature rule are chosen inside, at run time (models.hpp).
-template <class Case>
-std::map<std::string, run_function<Case>> dispatch_table() {
-  std::map<std::string, run_function<Case>> table;
-  hana::for_each(enforcements, [&](auto t) {
-    using E = typename decltype(t)::type;
-    table[std::string(E::name)] = &run_with<Case, E>;
-  });
-  return table;
 }
 
 // Runs the case named by the request, with its parameters from --set and --end-time (the
@@ -100,10 +93,7 @@ run_outcome run_case(const run_request& request) {
     else
       p.stroke_m = *r.end_time * p.tool_velocity_m_s;  // wheel forging: the stroke reached then
   }
-  const auto table = dispatch_table<Case>();
-  const auto it = table.find(r.method_key());
-  if (it == table.end()) fail("no compiled configuration for '{}'", r.method_key());
-  return it->second(r, p, restart);
+  return run_with<Case>(r, p, restart);
 }
 
 }  // namespace rkpm::runner

@@ -36,9 +36,6 @@ struct run_request {
   std::vector<std::string> given;             // the options given on the command line ("--kernel", ...)
   run_hooks hooks;                            // none from the command line (run_hooks.hpp)
 
-  // The key of the dispatch table: the contact enforcement (kernel, correction and rule are
-  // chosen at run time).
-  const std::string& method_key() const { return contact; }
   std::string output_directory() const { return out_dir.empty() ? "results/" + case_name + "-" + quadrature : out_dir; }
 };
 

@@ -1,4 +1,4 @@
-// The dispatch table of the block_forging case, compiled on its own so the cases build in parallel.
+// The run of the block_forging case, compiled on its own so the cases build in parallel.
 #include "cases/block_forging.hpp"
 #include "dispatch.hpp"
 

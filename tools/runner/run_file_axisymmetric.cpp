@@ -1,5 +1,5 @@
 // The case files in axisymmetric geometry (file_case_dispatch.hpp), compiled on their own so that the
-// dispatch tables build in parallel.
+// two geometries build in parallel.
 #include "file_case_dispatch.hpp"
 
 namespace rkpm::runner {

@@ -46,7 +46,7 @@ inline int active_threads() {
 
 // The policy names of a run, as summary.json records them, and its configuration's full name
 // (config<...>::name()'s form, which checkpoints check). Passed as values so that simulate is
-// compiled once per solver type (one per enforcement), not once per combination.
+// compiled once per solver type (one per case), not once per combination.
 struct run_policies {
   std::string_view kernel, correction, quadrature, geometry, contact;
   std::string configuration;

@@ -71,6 +71,11 @@ class particle_to_segment {
   std::span<const contact_pair> active_pairs() const { return tool_slaves_.active_pairs(); }
   const Friction& friction() const { return friction_; }
   const Enforcement& enforcement() const { return enforcement_; }
+  // Replaces the enforcement (e.g. enforcement::chosen's choice); before the solver is built.
+  void set_enforcement(Enforcement enforcement) {
+    enforcement.validate();
+    enforcement_ = enforcement;
+  }
 
   // Checkpoint (io/checkpoint.hpp): the tools' pass is the only one that reads the last step
   // (tool_slave_contact.hpp); the other passes start afresh every step.
