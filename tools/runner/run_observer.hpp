@@ -110,6 +110,7 @@ class run_observer {
   const std::filesystem::path& last_checkpoint() const { return last_checkpoint_; }
   history_table table() const { return {history_.columns(), record_.history_rows}; }
   const figure_recorder<Case>& figures() const { return figures_; }
+  const io::vtu_cells& cells() const { return cells_; }
 
  private:
   // history.csv columns: time, the case's measures, tool forces, energies.
