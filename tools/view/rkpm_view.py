@@ -26,7 +26,8 @@ except ImportError as e:
     sys.exit(f"rkpm view: {e}: install python3-meshio (apt-get install python3-meshio)")
 
 # As field_figure_preamble() in include/rkpm/io/field_figure.hpp.
-PREAMBLE = """set title {title}
+PREAMBLE = """set termoption noenhanced
+set title {title}
 set size ratio -1
 set xlabel 'r or x (mm)'
 set ylabel 'z or y (mm)'

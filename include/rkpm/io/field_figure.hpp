@@ -34,11 +34,11 @@ struct field_figure_options {
   int width = 900, height = 800;
 };
 
-// The gnuplot set-up shared with tools/view/rkpm_view.py: equal axes, a viridis-like palette,
+// The gnuplot set-up shared with tools/view/rkpm_view.py: text as written (no _ subscripts), equal axes, a viridis-like palette,
 // cells filled without borders (a fine mesh would be black with them).
 inline std::string field_figure_preamble(const std::string& title, const std::string& label) {
   return fmt::format(
-      "set title {}\nset size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset cblabel {}\n"
+      "set termoption noenhanced\nset title {}\nset size ratio -1\nset xlabel 'r or x (mm)'\nset ylabel 'z or y (mm)'\nset cblabel {}\n"
       "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21908d', 0.75 '#5dc963', 1 '#fde725')\n"
       "set style fill solid 1.0 noborder\nset key off\nset clip two\n",
       gnuplot_quote(title), gnuplot_quote(label));
