@@ -370,23 +370,20 @@ def view(script, out):
     nearest --time otherwise, any point field; an unknown field or folder is a one-line error."""
     sets = ElementTree.parse(os.path.join(out, "taylor_bar.pvd")).getroot().findall("./Collection/DataSet")
     last = len(sets) - 1
+    times = [float(d.get("timestep")) for d in sets]
+    nearest = min(range(len(times)), key=lambda i: abs(times[i] - 0.9e-6))
     cases = [([], f"view_equivalent_plastic_strain_{last:06d}.png"),
-             (["--field", "stress", "--time", "0"], "view_stress_000000.png"),
-             (["--field", "velocity:1", "--time", "0.9e-6"], None),
-             (["--field", "det_F", "--out", os.path.join(out, "mine.png")], "mine.png")]
+             (["--field", "stress"], f"view_stress_{last:06d}.png"),
+             (["--field", "velocity:1", "--time", "0.9e-6"], f"view_velocity_1_{nearest:06d}.png"),
+             (["--field", "det_F", "--time", "0", "--out", os.path.join(out, "mine.png")], "mine.png")]
     for args, name in cases:
         r = run(["/usr/bin/python3", script, out, *args])
         check(r.returncode == 0, f"view {args}: exit {r.returncode}: {r.stderr}")
         png = r.stdout.strip()
-        if name:
-            check(os.path.basename(png) == name, f"view {args}: wrote {png}, expected {name}")
-        if args[2:4] == ["--time", "0.9e-6"]:  # the nearest of the snapshot times
-            times = [float(d.get("timestep")) for d in sets]
-            k = min(range(len(times)), key=lambda i: abs(times[i] - 0.9e-6))
-            check(png.endswith(f"_{k:06d}.png"), f"view {args}: {png} is not snapshot {k}")
+        check(os.path.basename(png) == name, f"view {args}: wrote {png}, expected {name} (the snapshot nearest)")
         check(os.path.isfile(png) and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"view {args}: {png} no PNG")
-        # Drawn: an image wider than the frame alone, with more than the few colours of axes and text.
-        check(os.path.getsize(png) > 20000, f"view {args}: {png} is only {os.path.getsize(png)} bytes")
+        # Drawn: more than the axes and text of an empty plot.
+        check(os.path.getsize(png) > 10000, f"view {args}: {png} is only {os.path.getsize(png)} bytes")
     for args, words in [(["--field", "nosuch"], ["nosuch", "equivalent_plastic_strain", "det_F"]),
                         (["--field", "stress:9"], ["components 0 to 8"])]:
         r = run(["/usr/bin/python3", script, out, *args])
