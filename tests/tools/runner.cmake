@@ -18,9 +18,13 @@ add_test(NAME tools.runner.run
          COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} run $<TARGET_FILE:rkpm_run> ${rkpm_runner_work}/taylor_bar)
 add_test(NAME tools.runner.outputs COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} outputs ${rkpm_runner_work}/taylor_bar)
 add_test(NAME tools.runner.vtk COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} vtk ${rkpm_runner_work}/taylor_bar)
+# tools/rkpm view on that run's folder.
+add_test(NAME tools.runner.view
+         COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_runner_check} view ${PROJECT_SOURCE_DIR}/tools/view/rkpm_view.py
+                 ${rkpm_runner_work}/taylor_bar)
 set_tests_properties(tools.runner.run PROPERTIES FIXTURES_SETUP rkpm_runner_output)
-set_tests_properties(tools.runner.outputs tools.runner.vtk PROPERTIES FIXTURES_REQUIRED rkpm_runner_output)
-set_tests_properties(tools.runner.bad_options tools.runner.step_budget tools.runner.help tools.runner.rod_on_rod tools.runner.run tools.runner.outputs tools.runner.vtk
+set_tests_properties(tools.runner.outputs tools.runner.vtk tools.runner.view PROPERTIES FIXTURES_REQUIRED rkpm_runner_output)
+set_tests_properties(tools.runner.bad_options tools.runner.step_budget tools.runner.help tools.runner.rod_on_rod tools.runner.run tools.runner.outputs tools.runner.vtk tools.runner.view
                      PROPERTIES TIMEOUT 120 LABELS "tools/runner"
                                 ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
 

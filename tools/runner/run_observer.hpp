@@ -2,7 +2,8 @@
 // run_observer<Case, Solver>: what rkpm_run does after every step (simulate.hpp calls it through
 // explicit_solver::run): the progress line, a history.csv row at every history interval (the
 // case's measures, the tool forces averaged over the interval, the energies), a VTK snapshot at
-// every snapshot interval, the figure shapes, and a checkpoint after the first step that
+// every snapshot interval (the background cells on the particles, with the tools' vertices),
+// the figure shapes, and a checkpoint after the first step that
 // reaches each multiple of the checkpoint interval. Its whole state is a run_record, which the
 // checkpoints carry, so a restarted run continues the same outputs (run_record.hpp).
 
@@ -47,6 +48,7 @@ class run_observer {
         measures_(Case::measure(s, params, mean_force_)),
         history_(dir / "history.csv", column_names(s)),
         vtk_(dir / (case_name<Case>(params) + ".pvd"), record_.snapshots),
+        cells_(io::snapshot_cells(s)),
         figures_(dir, params),
         segment_start_(std::chrono::steady_clock::now()) {
     record_.start_impulse.resize(tools_, vec2::Zero());
@@ -65,7 +67,8 @@ class run_observer {
       record_.next_history += record_.history_interval;
     }
     if (t >= record_.next_snapshot || last) {
-      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_fields(s));
+      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), cells_, io::snapshot_fields(s), {},
+                                         io::snapshot_tools(s));
       record_.snapshots.emplace_back(t, vtu.filename().string());
       record_.next_snapshot += record_.snapshot_interval;
     }
@@ -112,6 +115,7 @@ class run_observer {
   const std::filesystem::path& last_checkpoint() const { return last_checkpoint_; }
   history_table table() const { return {history_.columns(), record_.history_rows}; }
   const figure_recorder<Case>& figures() const { return figures_; }
+  const io::vtu_cells& cells() const { return cells_; }
 
  private:
   // history.csv columns: time, the case's measures, tool forces, energies.
@@ -169,6 +173,7 @@ class run_observer {
   measures measures_;
   io::csv_writer history_;
   io::pvd_series vtk_;
+  io::vtu_cells cells_;  // the snapshots' cells: the model's, the same at every snapshot
   figure_recorder<Case> figures_;
   io::progress_line progress_{false};
   std::chrono::steady_clock::time_point segment_start_;

@@ -3,8 +3,10 @@
 // continues a checkpoint, runs one case to its end time and writes its results:
 //   summary.json  policies, sizes, steps, time-step range, timings, energies, key results
 //   history.csv   time, the case's key measures, tool forces, energies (flushed per row)
-//   CASE.pvd + CASE_NNNNNN.vtu  particles with displacement, velocity, stress, eps_p, det F
-//   shape_*.csv and PNG figures (figures.hpp, drawn from the shapes and history kept in memory)
+//   CASE.pvd + CASE_NNNNNN.vtu  particles (the background cells' nodes) with displacement,
+//                 velocity, stress, eps_p, det F, and the tools' vertices
+//   shape_*.csv and PNG figures (figures.hpp, drawn from the shapes and history kept in memory),
+//                 and final_plastic_strain.png (the plastic strain on the deformed cells)
 //   checkpoint_NNNNNNNNNN.rkpmcp  with --checkpoint-interval: after the first step reaching each
 //                 multiple of the interval, and at the end (run_observer.hpp, run_record.hpp)
 // A run that fails (NaN, inverted body) keeps what it wrote and records the error in
@@ -25,6 +27,7 @@
 #include <omp.h>
 #endif
 
+#include <rkpm/io/field_figure.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 
 #include "case_traits.hpp"
@@ -67,6 +70,20 @@ json run_identity(const run_request& request, const typename Case::parameters& p
   if constexpr (is_file_case<Case>) id["case_file"] = std::filesystem::absolute(params.file).string();
   id["parameters"] = case_parameters<Case>(params);
   return id;
+}
+
+// final_plastic_strain.png: the equivalent plastic strain on the deformed cells at the run's
+// end, with the tools (io/field_figure.hpp).
+template <class Solver>
+void final_plastic_strain_png(const std::filesystem::path& dir, const std::string& name, const Solver& s,
+                              const io::vtu_cells& cells) {
+  const auto eps = s.template project_to_particles<double>(
+      [&](index_t q) { return static_cast<double>(s.point_states()[q].equivalent_plastic_strain); });
+  std::vector<std::vector<vec2>> tools;
+  for (const auto& tool : s.contact().tools()) tools.push_back(tool.vertices(s.time()));
+  io::field_png(dir / "final_plastic_strain.png", s.particle_positions(), cells, eps, tools,
+                {.title = fmt::format("{}: equivalent plastic strain at t = {:.4g} us", name, s.time() * 1e6),
+                 .label = "equivalent plastic strain"});
 }
 
 template <class Case, class Solver>
@@ -184,6 +201,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   if (request.plots) {
     try {
       observe.figures().plot(observe.table());
+      final_plastic_strain_png(dir, case_name<Case>(params), s, observe.cells());
     } catch (const std::exception& ex) {
       fmt::print(stderr, "rkpm_run: figures skipped: {}\n", ex.what());
     }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -28,7 +29,9 @@ inline void ensure_parent_directory(const std::filesystem::path& path) {
 // Writes `content` to `path` through a temporary file in the same directory and a rename,
 // which POSIX makes atomic: readers (ParaView polling a .pvd, a crashed run) never see a
 // truncated file.
-inline void replace_file(const std::filesystem::path& path, std::string_view content) {
+// `pieces`: the content in pieces, written one after the other (a large file need not be
+// joined into one string first).
+inline void replace_file(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
   ensure_parent_directory(path);
   auto tmp = path;
   tmp += ".tmp";
@@ -36,7 +39,7 @@ inline void replace_file(const std::filesystem::path& path, std::string_view con
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out)
       fail("cannot open '{}' for writing: check that the directory is writable", tmp.string());
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    for (const std::string_view content : pieces) out.write(content.data(), static_cast<std::streamsize>(content.size()));
     out.flush();
     if (!out) fail("error while writing '{}': check free disk space", tmp.string());
   }
@@ -47,6 +50,10 @@ inline void replace_file(const std::filesystem::path& path, std::string_view con
     fail("cannot rename '{}' to '{}': check that the target is not a directory and is writable",
          tmp.string(), path.string());
   }
+}
+
+inline void replace_file(const std::filesystem::path& path, std::string_view content) {
+  replace_file(path, std::span<const std::string_view>(&content, 1));
 }
 
 }  // namespace rkpm::io

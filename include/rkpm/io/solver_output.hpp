@@ -8,6 +8,11 @@
 //                        stress, equivalent plastic strain, det F, and every extra double a
 //                        material state lists in `output_fields()` (temperature, damage, ...)
 //                        that is not NaN at every point (a state a material leaves unused);
+//   snapshot_cells(s)    the cells of a snapshot: the model's background cells as quads when the
+//                        particles are their nodes (grids, Gmsh bodies), else a vertex per
+//                        particle (io/vtu_cells.hpp); the same for every snapshot of a run;
+//   snapshot_tools(s)    the rigid tools' vertices at the solver's time, one <FieldData> array
+//                        "tool:NAME" each, for a viewer to draw them with the body;
 //   largest_state_field(s, name, in), failed_fraction(s, in)
 //                        the largest value of such a field over the points `in` selects, and
 //                        the fraction of them that have failed (a state with `failed()`);
@@ -25,6 +30,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/energy.hpp>
 
@@ -76,6 +82,23 @@ point_data snapshot_fields(const Solver& s) {
       }));
     }
   return data;
+}
+
+template <class Solver>
+vtu_cells snapshot_cells(const Solver& s) {
+  const auto& m = s.model();
+  const bool nodes = m.bodies.found() ? m.bodies.nodes_are_particles()
+                                      : rkpm::nodes_are_particles(m.particles.position, m.mesh);
+  return nodes ? quad_cells(m.mesh, static_cast<std::size_t>(m.particle_count()))
+               : vertex_cells(static_cast<std::size_t>(m.particle_count()));
+}
+
+template <class Solver>
+point_data snapshot_tools(const Solver& s) {
+  point_data tools;
+  if constexpr (requires { s.contact().tools(); })
+    for (const auto& tool : s.contact().tools()) tools.add("tool:" + tool.name(), tool.vertices(s.time()));
+  return tools;
 }
 
 // The largest value of the output field `name` over the points q with in(q) (NaN values left

@@ -1,8 +1,11 @@
 #pragma once
 // VTK XML output for ParaView (docs/method.md section 9.4): write_vtu() writes the particles of one
-// snapshot as an UnstructuredGrid of VTK_VERTEX cells (z = 0) with per-particle arrays
-// (displacement, velocity, stress, equivalent plastic strain, det F, ...); pvd_series keeps the
-// .pvd index of a time series valid after every added snapshot.
+// snapshot as the points (z = 0) of an UnstructuredGrid with per-particle point arrays
+// (displacement, velocity, stress, equivalent plastic strain, det F, ...) and cells on them:
+// the background cells as VTK_QUADs when the particles are their nodes, so ParaView draws the
+// deformed body as a surface coloured by any array, else a VTK_VERTEX per particle
+// (io/vtu_cells.hpp); pvd_series keeps the .pvd index of a time series valid after every added
+// snapshot.
 //
 // Arrays are Float64 so nothing is lost against the solver's doubles. Encodings, as VTK's own
 // vtkXMLWriter writes them (header_type UInt64, native byte order):
@@ -10,7 +13,8 @@
 //                       each DataArray naming its offset: the smallest and fastest file
 //   binary              base64 inside each DataArray (plain-text XML, a third larger)
 //   ascii               shortest round-trip decimal text
-// Binary data is zlib-compressed (compressor="vtkZLibDataCompressor", blocks of 32 KiB) when
+// Binary data is zlib-compressed (compressor="vtkZLibDataCompressor", blocks of 32 KiB compressed
+// in parallel by the OpenMP threads, the same bytes whatever their number: io/vtu_zlib.hpp) when
 // the header is compiled with RKPM_WITH_ZLIB and linked with zlib, which the rkpm CMake target
 // does when find_package(ZLIB) finds it; without it the writer is the same minus compression,
 // and asking for vtu_compression::zlib is an error saying so.
@@ -32,6 +36,7 @@
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/files.hpp>
+#include <rkpm/io/vtu_cells.hpp>
 #include <rkpm/io/vtu_encoding.hpp>
 
 namespace rkpm::io {
@@ -52,6 +57,9 @@ class point_data {
   }
   point_data& add(std::string name, const std::vector<double>& values) {
     return add(std::move(name), std::span<const double>(values));
+  }
+  point_data& add(std::string name, std::vector<double>&& values) {  // taken, not copied
+    return add_flat(std::move(name), 1, std::move(values));
   }
   // values  #points 2-vectors, written as 3 components with z = 0 so ParaView shows vectors
   point_data& add(std::string name, const std::vector<vec2>& values) {
@@ -84,15 +92,39 @@ class point_data {
   std::vector<array> arrays_;
 };
 
-// Writes one snapshot: points  #points particle positions (x, y) -> (x, y, 0), each a
-// VTK_VERTEX cell; data arrays must have one entry per point. The file is replaced atomically.
-inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points,
-                      const point_data& data = {}, const vtu_format& format = {}) {
+namespace detail {
+// Throws unless `cells` is a valid <Cells> block on n points.
+inline void check_cells(const std::filesystem::path& path, const vtu_cells& cells, std::size_t n) {
+  if (cells.offsets.size() != cells.types.size())
+    fail("write_vtu '{}': {} cell offsets for {} cell types; give one of each per cell", path.string(),
+         cells.offsets.size(), cells.types.size());
+  std::int64_t end = 0;
+  for (const std::int64_t o : cells.offsets) {  // every cell has at least one point
+    if (o <= end) fail("write_vtu '{}': cell offsets must increase (offset {} after {})", path.string(), o, end);
+    end = o;
+  }
+  if (static_cast<std::size_t>(end) != cells.connectivity.size())
+    fail("write_vtu '{}': the last cell offset is {}, the connectivity has {} entries", path.string(), end,
+         cells.connectivity.size());
+  for (const std::int64_t p : cells.connectivity)
+    if (p < 0 || static_cast<std::size_t>(p) >= n)
+      fail("write_vtu '{}': a cell refers to point {} of {}", path.string(), p, n);
+}
+}  // namespace detail
+
+// Writes one snapshot: points  #points particle positions (x, y) -> (x, y, 0); `cells` on them
+// (io/vtu_cells.hpp: the background cells as quads, or a vertex per point); data arrays must
+// have one entry per point; `field_arrays`, of any length, are the snapshot's <FieldData> (the
+// runner's: each tool's vertices at the snapshot's time, "tool:NAME"). The file is replaced
+// atomically.
+inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points, const vtu_cells& cells,
+                      const point_data& data, const vtu_format& format = {}, const point_data& field_arrays = {}) {
   const std::size_t n = points.size();
   for (const auto& a : data.arrays())
     if (a.values.size() != n * static_cast<std::size_t>(a.components))
       fail("write_vtu '{}': array \"{}\" has {} entries for {} points; give one per particle",
            path.string(), a.name, a.values.size() / static_cast<std::size_t>(a.components), n);
+  detail::check_cells(path, cells, n);
   std::string out;
   detail::vtu_arrays arrays(out, format);
   if (arrays.format().compression == vtu_compression::zlib) {
@@ -107,41 +139,49 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
   fmt::format_to(std::back_inserter(out),
                  "<?xml version=\"1.0\"?>\n"
                  "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\"{}>\n"
-                 "  <UnstructuredGrid>\n"
-                 "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+                 "  <UnstructuredGrid>\n",
                  std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian",
-                 arrays.format().compression == vtu_compression::zlib ? " compressor=\"vtkZLibDataCompressor\"" : "",
-                 n, n);
+                 arrays.format().compression == vtu_compression::zlib ? " compressor=\"vtkZLibDataCompressor\"" : "");
+  if (!field_arrays.empty()) {
+    out += "    <FieldData>\n";
+    for (const auto& a : field_arrays.arrays())
+      if (!a.values.empty())
+        arrays.add("Float64", a.name, a.components, std::span<const double>(a.values),
+                   a.values.size() / static_cast<std::size_t>(a.components));
+    out += "    </FieldData>\n";
+  }
+  fmt::format_to(std::back_inserter(out), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, cells.size());
 
   out += "      <PointData>\n";
   for (const auto& a : data.arrays())
     arrays.add("Float64", a.name, a.components, std::span<const double>(a.values));
   out += "      </PointData>\n";
 
-  std::vector<double> xyz;
-  xyz.reserve(3 * n);
-  for (const auto& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), 0.0});
+  std::vector<double> xyz(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xyz[3 * i] = points[i].x();
+    xyz[3 * i + 1] = points[i].y();
+    xyz[3 * i + 2] = 0.0;
+  }
   out += "      <Points>\n";
   arrays.add("Float64", "Points", 3, std::span<const double>(xyz));
   out += "      </Points>\n";
 
-  // Cell I is the single vertex I: connectivity = offsets - 1 = 0..n-1, type 1 (VTK_VERTEX).
-  std::vector<std::int64_t> connectivity(n), offsets(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    connectivity[i] = static_cast<std::int64_t>(i);
-    offsets[i] = static_cast<std::int64_t>(i + 1);
-  }
-  const std::vector<std::uint8_t> types(n, std::uint8_t{1});
   out += "      <Cells>\n";
-  arrays.add("Int64", "connectivity", 1, std::span<const std::int64_t>(connectivity));
-  arrays.add("Int64", "offsets", 1, std::span<const std::int64_t>(offsets));
-  arrays.add("UInt8", "types", 1, std::span<const std::uint8_t>(types));
+  arrays.add("Int64", "connectivity", 1, std::span<const std::int64_t>(cells.connectivity));
+  arrays.add("Int64", "offsets", 1, std::span<const std::int64_t>(cells.offsets));
+  arrays.add("UInt8", "types", 1, std::span<const std::uint8_t>(cells.types));
   out += "      </Cells>\n"
          "    </Piece>\n"
          "  </UnstructuredGrid>\n";
-  arrays.finish();
-  out += "</VTKFile>\n";
-  replace_file(path, out);
+  const auto pieces = arrays.finish("</VTKFile>\n");
+  replace_file(path, pieces);
+}
+
+// The same with every point a VTK_VERTEX cell.
+inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points,
+                      const point_data& data = {}, const vtu_format& format = {}) {
+  write_vtu(path, points, vertex_cells(points.size()), data, format);
 }
 
 // A .pvd collection: one DataSet per snapshot with its time, files given relative to the
@@ -162,13 +202,19 @@ class pvd_series {
   }
 
   // Writes <pvd stem>_<index, 6 digits>.vtu next to the .pvd and adds it; returns its path.
-  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const point_data& data,
-                                     const vtu_format& format = {}) {
+  // Without `cells`, every point is a vertex cell.
+  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const vtu_cells& cells,
+                                     const point_data& data, const vtu_format& format = {},
+                                     const point_data& field_arrays = {}) {
     const std::string name = fmt::format("{}_{:06d}.vtu", path_.stem().string(), entries_.size());
     const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, points, data, format);
+    write_vtu(vtu, points, cells, data, format, field_arrays);
     add(time, name);
     return vtu;
+  }
+  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const point_data& data,
+                                     const vtu_format& format = {}) {
+    return add_snapshot(time, points, vertex_cells(points.size()), data, format);
   }
 
   const std::filesystem::path& path() const { return path_; }

@@ -157,8 +157,9 @@ def mesh(rkpm_run, cases, work):
     for k in (1, 2):
         out = os.path.join(work, f"projectile-{k}")
         shutil.rmtree(out, ignore_errors=True)
+        plots = [] if k == 1 else ["--no-plots"]  # resolution 1 draws its figures
         r = run([rkpm_run, os.path.join(cases, "projectile", "projectile.json"), "--resolution", str(k),
-                 "--end-time", "10e-6", "--out", out, "--no-plots", "--quiet"])
+                 "--end-time", "10e-6", "--out", out, "--quiet", *plots])
         check(r.returncode == 0, f"projectile at resolution {k} failed: {r.stderr}")
         if r.returncode != 0:
             return
@@ -175,6 +176,7 @@ def mesh(rkpm_run, cases, work):
         # The symmetry line x = 0 (the physical curve "symmetry", held in x) stays at x = 0: read the
         # last snapshot's points and reference positions with meshio (an independent reader).
         import meshio
+        import numpy as np
         last = sorted(f for f in os.listdir(out) if f.endswith(".vtu"))[-1]
         m = meshio.read(os.path.join(out, last))
         reference = m.points[:, :2] - m.point_data["displacement"][:, :2]
@@ -182,6 +184,19 @@ def mesh(rkpm_run, cases, work):
         check(on_line.sum() >= 20 * k and abs(m.points[on_line, 0]).max() < 1e-12 and m.points[:, 0].min() > -1e-9,
               f"resolution {k}: the symmetry line moved: {on_line.sum()} particles on it, smallest x "
               f"{m.points[:, 0].min()}")
+        # The Gmsh quadrilaterals as VTK quads on the particles (the mesh's nodes), each
+        # counter-clockwise in the reference configuration, together the projectile's area, every
+        # particle a node of one.
+        check([c.type for c in m.cells] == ["quad"], f"resolution {k}: cell blocks {[c.type for c in m.cells]}")
+        quads = m.cells[0].data
+        xy = reference[quads]
+        areas = 0.5 * (xy[..., 0] * np.roll(xy[..., 1], -1, axis=1) - np.roll(xy[..., 0], -1, axis=1) * xy[..., 1]).sum(1)
+        check(bool((areas > 0).all()), f"resolution {k}: {(areas <= 0).sum()} quads not counter-clockwise")
+        check(abs(areas.sum() / area - 1) < 2e-3, f"resolution {k}: quads cover {areas.sum()} m^2 of {area}")
+        check(len(np.unique(quads)) == len(m.points), f"resolution {k}: particles outside every quad")
+        if k == 1:
+            for png in ("shape.png", "final_plastic_strain.png"):
+                check(os.path.isfile(os.path.join(out, png)), f"resolution 1: no {png}")
         check(res["length_mm"] < 25.0 and res["half_width_mm"] > 5.0 and res["wall_force_N_per_m"] > 0,
               f"resolution {k}: the projectile did not shorten and spread on the wall: {res}")
         print(f"ok  projectile at resolution {k}: {s['particles']} particles, kinetic energy {kinetic0:.1f} J/m "

@@ -6,6 +6,7 @@
     check_runner.py run RKPM_RUN OUT_DIR           a short Taylor bar run (the fixture of the next two)
     check_runner.py outputs OUT_DIR                summary.json keys and values, history.csv, .pvd, PNGs
     check_runner.py vtk OUT_DIR                    the VTK series read back with meshio (independent reader)
+    check_runner.py view VIEW_SCRIPT OUT_DIR      tools/rkpm view (tools/view/rkpm_view.py) on that run's folder
     check_runner.py rod-on-rod RKPM_RUN WORK_DIR   rod_on_rod with every contact policy, rule, kernel, correction
 
 The numbers are checked against physics and the run's own request (particle count 21 x 21, end time,
@@ -269,6 +270,7 @@ def outputs(out):
 
     pngs = [f for f in os.listdir(out) if f.endswith(".png")]
     check(len(pngs) >= 1, "no PNG figure written")
+    check("final_plastic_strain.png" in pngs, f"no final_plastic_strain.png among {pngs}")
     for p in pngs:
         with open(os.path.join(out, p), "rb") as f:
             check(f.read(8) == b"\x89PNG\r\n\x1a\n", f"{p} is not a PNG")
@@ -321,6 +323,24 @@ def vtk(out):
               f"{path}: Cauchy stress is not symmetric")
     first, last = meshes[0], meshes[-1]
     ref = first.points
+    # The background cells as VTK quads on the particles: the grid's (RADIAL - 1) x (AXIAL - 1)
+    # cells, particle i + RADIAL j at (r_i, z_j), each counter-clockwise in the (r, z) plane
+    # (positive area in the reference section), together the section's area R x L.
+    quads = [[i + RADIAL * j, i + 1 + RADIAL * j, i + 1 + RADIAL * (j + 1), i + RADIAL * (j + 1)]
+             for j in range(AXIAL - 1) for i in range(RADIAL - 1)]
+    for m, d in zip(meshes, sets):
+        check([c.type for c in m.cells] == ["quad"], f"{d.get('file')}: cell blocks {[c.type for c in m.cells]}")
+        check(len(m.cells) == 1 and np.array_equal(m.cells[0].data, np.array(quads)),
+              f"{d.get('file')}: the quads are not the grid's cells")
+        tools = [k for k in m.field_data if k.startswith("tool:")]
+        check(len(tools) == 1, f"{d.get('file')}: tools in <FieldData> {list(m.field_data)}, expected the wall")
+    if failures:
+        return
+    xy = ref[np.array(quads)][..., :2]
+    area = 0.5 * np.sum(xy[..., 0] * np.roll(xy[..., 1], -1, axis=1) - np.roll(xy[..., 0], -1, axis=1) * xy[..., 1],
+                        axis=1)
+    check(bool(np.all(area > 0)), f"quads not counter-clockwise in (r, z): {np.sum(area <= 0)} with area <= 0")
+    check(abs(area.sum() - RADIUS_MM * HEIGHT_MM * 1e-6) < 1e-12 * area.sum(), f"quads cover {area.sum()} m^2")
     check(bool(np.all(first.point_data["displacement"] == 0.0)), "the t = 0 snapshot has non-zero displacement")
     # The bar starts in uniform motion at -227 m/s (RK reproduces constants exactly).
     v0 = first.point_data["velocity"]
@@ -343,6 +363,34 @@ def vtk(out):
     check(x[:, 1].min() > -0.02 * HEIGHT_MM * 1e-3 / (AXIAL - 1), "particles below the wall")
     print(f"ok  vtk: {len(meshes)} snapshots of {s['particles']} particles; final radius {radius_mm:.4f} mm, "
           f"height {height_mm:.4f} mm")
+
+
+def view(script, out):
+    """tools/rkpm view on the run's folder: a PNG of the last snapshot by default, of the snapshot
+    nearest --time otherwise, any point field; an unknown field or folder is a one-line error."""
+    sets = ElementTree.parse(os.path.join(out, "taylor_bar.pvd")).getroot().findall("./Collection/DataSet")
+    last = len(sets) - 1
+    times = [float(d.get("timestep")) for d in sets]
+    nearest = min(range(len(times)), key=lambda i: abs(times[i] - 0.9e-6))
+    cases = [([], f"view_equivalent_plastic_strain_{last:06d}.png"),
+             (["--field", "stress"], f"view_stress_{last:06d}.png"),
+             (["--field", "velocity:1", "--time", "0.9e-6"], f"view_velocity_1_{nearest:06d}.png"),
+             (["--field", "det_F", "--time", "0", "--out", os.path.join(out, "mine.png")], "mine.png")]
+    for args, name in cases:
+        r = run(["/usr/bin/python3", script, out, *args])
+        check(r.returncode == 0, f"view {args}: exit {r.returncode}: {r.stderr}")
+        png = r.stdout.strip()
+        check(os.path.basename(png) == name, f"view {args}: wrote {png}, expected {name} (the snapshot nearest)")
+        check(os.path.isfile(png) and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"view {args}: {png} no PNG")
+        # Drawn: more than the axes and text of an empty plot.
+        check(os.path.getsize(png) > 10000, f"view {args}: {png} is only {os.path.getsize(png)} bytes")
+    for args, words in [(["--field", "nosuch"], ["nosuch", "equivalent_plastic_strain", "det_F"]),
+                        (["--field", "stress:9"], ["components 0 to 8"])]:
+        r = run(["/usr/bin/python3", script, out, *args])
+        check(r.returncode != 0 and all(w in r.stderr for w in words), f"view {args}: {r.returncode} {r.stderr!r}")
+    r = run(["/usr/bin/python3", script, os.path.join(out, "nosuch")])
+    check(r.returncode != 0 and "not a folder" in r.stderr, f"view of no folder: {r.stderr!r}")
+    print(f"ok  view: {len(cases)} pictures of {out}")
 
 
 def rod_on_rod(rkpm_run, work):
@@ -394,6 +442,8 @@ def main(argv):
         outputs(argv[2])
     elif mode == "vtk":
         vtk(argv[2])
+    elif mode == "view":
+        view(argv[2], argv[3])
     elif mode == "rod-on-rod":
         rod_on_rod(argv[2], argv[3])
     else:

@@ -1,9 +1,15 @@
 """Independent check of VTK files written by tests/unit/io/vtk.cpp, read with meshio.
 
-  /usr/bin/python3 check_vtu.py vtu FILE N [ENCODING COMPRESSOR]
+  /usr/bin/python3 check_vtu.py vtu FILE N [ENCODING COMPRESSOR [LEVEL]]
                                                 one snapshot with N particles (formulas below);
                                                 ENCODING appended|binary|ascii and COMPRESSOR
                                                 zlib|none are what the file must declare
+  /usr/bin/python3 check_vtu.py cells FILE NX NY EXTRA [LEVEL]
+                                                a snapshot of the NX x NY grid's nodes (the same
+                                                formulas) and EXTRA points beyond them: one
+                                                VTK_QUAD per grid cell, counter-clockwise, then a
+                                                VTK_VERTEX per extra point, and a tool in
+                                                <FieldData>; appended zlib at LEVEL
   /usr/bin/python3 check_vtu.py pvd FILE T0,N0 T1,N1 ...
                                                 a .pvd listing exactly those (time, N) snapshots
 Expected values are recomputed here from the same closed formulas the C++ test uses, so a
@@ -11,7 +17,9 @@ value is only accepted if the writer put the right double at the right place. Ap
 data is also walked here without meshio: each array's UInt64 header (byte count, or VTK's
 compression header [#blocks, block size, last partial block, compressed sizes]) must match its
 data, decompress with Python's zlib to the declared sizes, and the arrays, taken in order of
-offset (any order is valid VTK), must tile the block.
+offset (any order is valid VTK), must tile the block; given a LEVEL, each block must be the
+bytes Python's zlib.compress(block, LEVEL) gives (one stream per block, as a serial writer
+compresses them, whatever the writer's thread count).
 Exit 0 if all checks pass; 2 if meshio is missing; 1 with a message otherwise.
 """
 import os
@@ -60,8 +68,15 @@ def check_vtu(path, n):
         assert np.array_equal(got, want), f"{name}: values differ, max |diff| {np.abs(got - want).max()}"
 
 
-def check_format(path, n, encoding, compressor):
-    """The file declares what was asked for, and appended raw data is laid out as VTK reads it."""
+def vertex_sizes(n):
+    """Values per array of a snapshot of n points as vertex cells, by name."""
+    return {"eps_p": n, "u": 3 * n, "sigma": 9 * n, "det F <J>": n, "Points": 3 * n, "connectivity": n,
+            "offsets": n, "types": n}
+
+
+def check_format(path, sizes, encoding, compressor, level=None):
+    """The file declares what was asked for, and appended raw data is laid out as VTK reads it.
+    sizes: the number of values of each DataArray, by name."""
     with open(path, "rb") as f:
         raw = f.read()
     start = raw.find(b"<AppendedData")
@@ -73,7 +88,8 @@ def check_format(path, n, encoding, compressor):
         want = None
     assert root.get("compressor") == want, f"compressor {root.get('compressor')!r} != {want!r}"
     arrays = root.findall(".//DataArray")
-    assert len(arrays) == 4 + 3 + 1, f"{len(arrays)} DataArrays"
+    assert sorted(a.get("Name") for a in arrays) == sorted(sizes), \
+        f"DataArrays {[a.get('Name') for a in arrays]} != {list(sizes)}"
     formats = {a.get("format") for a in arrays}
     assert formats == {encoding}, f"DataArray formats {formats} != {{{encoding!r}}}"
     if encoding != "appended":
@@ -89,7 +105,7 @@ def check_format(path, n, encoding, compressor):
     pos = 0
     for a in sorted(arrays, key=lambda a: int(a.get("offset"))):
         assert int(a.get("offset")) == pos, f"{a.get('Name')}: offset {a.get('offset')} != {pos}"
-        size = n * int(a.get("NumberOfComponents", "1")) * item[a.get("type")]
+        size = sizes[a.get("Name")] * item[a.get("type")]
         block = data[pos:]
         if compressor == "none":
             assert u64(block, 0) == size, f"{a.get('Name')}: byte count {u64(block, 0)} != {size}"
@@ -106,11 +122,94 @@ def check_format(path, n, encoding, compressor):
             plain = zlib.decompress(block[body:body + c])
             full = block_size if k + 1 < blocks or last == 0 else last
             assert len(plain) == full, f"{a.get('Name')}: block {k} holds {len(plain)} bytes, not {full}"
+            if level is not None:
+                assert block[body:body + c] == zlib.compress(plain, level), \
+                    f"{a.get('Name')}: block {k} is not zlib.compress(block, {level})"
             body += c
             total += len(plain)
         assert total == size, f"{a.get('Name')}: {total} bytes, expected {size}"
         pos += body
     assert pos == len(data), f"arrays end at {pos}, the appended block at {len(data)}"
+
+
+def grid(nx, ny, extra):
+    """The test's grid: nodes i + nx j at (x, y) of expected() (point k = i + nx j), cells (i, j) on
+    nodes [k, k+1, k+1+nx, k+nx] (counter-clockwise in x right, y up), then `extra` points."""
+    cells = [[i + nx * j, i + 1 + nx * j, i + 1 + nx * (j + 1), i + nx * (j + 1)]
+             for j in range(ny - 1) for i in range(nx - 1)]
+    return np.array(cells, dtype=np.int64), np.arange(nx * ny, nx * ny + extra)
+
+
+def grid_points(nx, ny, extra):
+    n = nx * ny + extra
+    points = np.zeros((n, 3))
+    k = np.arange(n)
+    i, j = (k % nx).astype(float), (k // nx).astype(float)
+    points[:, 0] = i * 0.5 + 0.01 * j * j  # the C++ test's order of operations, to the bit
+    points[:, 1] = j * 0.25 - 0.002 * i * i
+    return points
+
+
+def shoelace(xy):
+    """Signed area of each polygon, rows of (x, y) corners: positive when counter-clockwise."""
+    x, y = xy[..., 0], xy[..., 1]
+    return 0.5 * np.sum(x * np.roll(y, -1, axis=-1) - np.roll(x, -1, axis=-1) * y, axis=-1)
+
+
+def check_cells(path, nx, ny, extra, level):
+    """Quads on the grid's nodes, VTK's counter-clockwise order, vertices for the rest; read by
+    meshio and again from the raw <Cells> arrays (types, offsets, connectivity)."""
+    n = nx * ny + extra
+    quads, lone = grid(nx, ny, extra)
+    points = grid_points(nx, ny, extra)
+    mesh = meshio.read(path)
+    assert np.array_equal(mesh.points, points), "points differ"
+    kinds = [c.type for c in mesh.cells]
+    want = ["quad"] + (["vertex"] if extra else [])
+    assert kinds == want, f"cell blocks {kinds} != {want}"
+    assert np.array_equal(mesh.cells[0].data, quads), f"quad connectivity {mesh.cells[0].data} != {quads}"
+    if extra:
+        assert np.array_equal(mesh.cells[1].data[:, 0], lone), f"vertex cells {mesh.cells[1].data}"
+    area = shoelace(points[quads][..., :2])
+    assert np.all(area > 0), f"quads not counter-clockwise: areas {area[area <= 0]}"
+    # The points that are the nodes of an (x, y)-sheared grid: its cells' areas add up to the
+    # polygon of the grid's outline.
+    outline = ([i for i in range(nx)] + [nx - 1 + nx * j for j in range(1, ny)] +
+               [i + nx * (ny - 1) for i in range(nx - 2, -1, -1)] + [nx * j for j in range(ny - 2, 0, -1)])
+    assert abs(area.sum() - shoelace(points[outline][:, :2])) < 1e-12 * area.sum(), "quads do not tile the grid"
+    # Every per-point array is point data (ParaView interpolates it over the quads).
+    assert list(mesh.point_data) == ["eps_p", "u"], f"point arrays {list(mesh.point_data)}"
+    assert np.array_equal(mesh.point_data["eps_p"], np.arange(n) / 7.0 - 2.5), "eps_p"
+    tool = np.array([[-1.0, -0.5, 0.0], [3.0, -0.5, 0.0], [3.5, 2.0, 0.0]])
+    got = np.asarray(mesh.field_data.get("tool:die", np.zeros(0))).reshape(-1, 3)
+    assert np.array_equal(got, tool), f"field data tool:die {got}"
+    # The raw arrays as VTK reads them: types 9 (VTK_QUAD) then 1 (VTK_VERTEX), offsets 4, 8, ...
+    cells = len(quads) + extra
+    sizes = {"eps_p": n, "u": 3 * n, "Points": 3 * n, "connectivity": 4 * len(quads) + extra, "offsets": cells,
+             "types": cells, "tool:die": 9}
+    check_format(path, sizes, "appended", "zlib", level)
+    types, offsets, conn = (raw_array(path, name) for name in ("types", "offsets", "connectivity"))
+    assert list(types) == [9] * len(quads) + [1] * extra, f"types {types}"
+    assert list(offsets) == [4 * (k + 1) for k in range(len(quads))] + [4 * len(quads) + k + 1 for k in range(extra)], \
+        f"offsets {offsets}"
+    assert np.array_equal(conn, np.concatenate([quads.ravel(), lone])), "connectivity"
+
+
+def raw_array(path, name):
+    """One appended zlib-compressed DataArray decoded here, without meshio."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    start = raw.find(b"<AppendedData")
+    root = ET.fromstring(raw[:start] + b"</VTKFile>")
+    a = next(a for a in root.iter("DataArray") if a.get("Name") == name)
+    data = raw[re.search(rb'<AppendedData encoding="raw">\s*_', raw).end():]
+    block = data[int(a.get("offset")):]
+    u64 = lambda k: struct.unpack_from("<Q", block, 8 * k)[0]
+    blocks, body, plain = u64(0), 8 * (3 + u64(0)), b""
+    for k in range(blocks):
+        plain += zlib.decompress(block[body:body + u64(3 + k)])
+        body += u64(3 + k)
+    return np.frombuffer(plain, dtype={"Int64": "<i8", "UInt8": "u1", "Float64": "<f8"}[a.get("type")])
 
 
 def check_pvd(path, expect):
@@ -131,7 +230,10 @@ def main():
     if kind == "vtu":
         check_vtu(path, int(sys.argv[3]))
         if len(sys.argv) > 4:
-            check_format(path, int(sys.argv[3]), sys.argv[4], sys.argv[5])
+            check_format(path, vertex_sizes(int(sys.argv[3])), sys.argv[4], sys.argv[5],
+                         int(sys.argv[6]) if len(sys.argv) > 6 else None)
+    elif kind == "cells":
+        check_cells(path, int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]), int(sys.argv[6]))
     else:
         expect = [(float(a), int(b)) for a, b in (s.split(",") for s in sys.argv[3:])]
         check_pvd(path, expect)

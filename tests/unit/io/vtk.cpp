@@ -1,12 +1,16 @@
 // VTK XML output read back by an independent reader: meshio under /usr/bin/python3
 // (Debian python3-meshio) checks coordinates, vertex cells and every array's shape and values,
 // recomputed in Python from the same closed formulas, for every encoding (appended raw, inline
-// base64, ascii), with and without zlib, and for a .pvd series; check_vtu.py also walks the
-// appended block's headers and zlib blocks itself.
+// base64, ascii), with and without zlib, and for a .pvd series; the background cells as quads
+// (connectivity from the grid's formula, counter-clockwise: positive areas, tiling the grid),
+// the rest as vertices, the tools in <FieldData>; check_vtu.py also walks the appended block's
+// headers and zlib blocks itself, each block the bytes of a serial zlib.compress.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -17,6 +21,11 @@
 
 #include <fmt/format.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/io/vtk.hpp>
 
 #include "support/run_capture.hpp"
@@ -105,10 +114,83 @@ TEST_CASE("vtu: meshio reads points, vertex cells and scalar/vector/tensor array
         const auto s = make(n);
         const auto path = dir / "one" / fmt::format("snap_{}_{}_{}.vtu", name(encoding), name(compression), n);
         rkpm::io::write_vtu(path, s.points, s.data, vtu_format(encoding, compression));
-        check_with_meshio(fmt::format("vtu '{}' {} {} {}", path.string(), n, name(encoding), name(compression)));
+        // Compressed appended blocks: also each the bytes of zlib.compress(block, 1), the default level.
+        const bool blocks = encoding == vtu_encoding::appended && compression == vtu_compression::zlib;
+        check_with_meshio(fmt::format("vtu '{}' {} {} {}{}", path.string(), n, name(encoding), name(compression),
+                                      blocks ? " 1" : ""));
       }
     }
   }
+  fs::remove_all(dir);
+}
+
+// The grid of check_vtu.py's grid(): nx x ny nodes, point k = i + nx j at a sheared position,
+// then `extra` points that no cell uses.
+static std::vector<vec2> vtk_grid_points(int nx, int ny, int extra) {
+  std::vector<vec2> x;
+  for (int k = 0; k < nx * ny + extra; ++k) {
+    const double i = k % nx, j = k / nx;
+    x.emplace_back(i * 0.5 + 0.01 * j * j, j * 0.25 - 0.002 * i * i);
+  }
+  return x;
+}
+
+TEST_CASE("vtu: the background cells as counter-clockwise VTK quads on the particles, the rest vertices") {
+  const auto dir = vtk_scratch() / "cells";
+  for (const auto& [nx, ny, extra, level] : {std::array{2, 2, 0, 6}, std::array{7, 5, 3, 1}, std::array{40, 30, 1, 6}}) {
+    CAPTURE(nx);
+    CAPTURE(extra);
+    // The cells of the solver's grid numbering (make_grid_mesh), on the sheared points.
+    auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(1.0, 1.0), Eigen::Vector2i(nx, ny));
+    const auto points = vtk_grid_points(nx, ny, extra);
+    mesh.node.assign(points.begin(), points.begin() + nx * ny);
+    const auto cells = rkpm::io::quad_cells(mesh, points.size());
+    REQUIRE(cells.size() == static_cast<std::size_t>((nx - 1) * (ny - 1) + extra));
+    rkpm::io::point_data data, tools;
+    std::vector<double> eps;
+    std::vector<vec2> u;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      eps.push_back(static_cast<double>(k) / 7.0 - 2.5);
+      u.push_back(points[k] * 1e-3);
+    }
+    data.add("eps_p", eps).add("u", u);
+    tools.add("tool:die", std::vector<vec2>{vec2(-1.0, -0.5), vec2(3.0, -0.5), vec2(3.5, 2.0)});
+    vtu_format format;
+    format.zlib_level = level;
+    const auto path = dir / fmt::format("grid_{}_{}_{}.vtu", nx, ny, extra);
+    rkpm::io::write_vtu(path, points, cells, data, format, tools);
+    check_with_meshio(fmt::format("cells '{}' {} {} {} {}", path.string(), nx, ny, extra, level));
+  }
+  // A cell on a point that does not exist is refused before anything is written.
+  auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(1.0, 1.0), Eigen::Vector2i(3, 3));
+  CHECK_THROWS_AS(rkpm::io::quad_cells(mesh, 8), rkpm::error);
+  auto cells = rkpm::io::quad_cells(mesh, 9);
+  cells.connectivity.back() = 9;
+  CHECK_THROWS_AS(rkpm::io::write_vtu(dir / "bad.vtu", mesh.node, cells, {}), rkpm::error);
+  CHECK_FALSE(fs::exists(dir / "bad.vtu"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vtu: the zlib blocks are compressed in parallel, the file the same bytes on 1 and 2 threads") {
+  const auto dir = vtk_scratch() / "threads";
+  const auto s = make(20000);  // the tensor array: 1.44 MB, 44 blocks
+  std::string bytes[2];
+  for (int threads : {1, 2}) {
+#ifdef _OPENMP
+    omp_set_num_threads(threads);
+#endif
+    const auto path = dir / fmt::format("t{}.vtu", threads);
+    rkpm::io::write_vtu(path, s.points, s.data);
+    std::ifstream in(path, std::ios::binary);
+    bytes[threads - 1].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+#ifdef _OPENMP
+  omp_set_num_threads(omp_get_num_procs());
+#endif
+  CHECK(bytes[0].size() > 100000);
+  CHECK(bytes[0] == bytes[1]);
+  // Each block as a serial zlib.compress(block, 1) gives it (check_vtu.py).
+  check_with_meshio(fmt::format("vtu '{}' 20000 appended zlib 1", (dir / "t2.vtu").string()));
   fs::remove_all(dir);
 }
 
@@ -133,11 +215,13 @@ TEST_CASE("vtu: appended raw is smaller than base64, zlib smaller still, ascii l
   if (rkpm::io::vtu_zlib_available) {
     const auto zlib = size({vtu_encoding::appended, vtu_compression::zlib});
     CHECK(zlib < appended / 2);  // the vertex cells and zero z components compress to almost nothing
-    vtu_format level1{vtu_encoding::appended, vtu_compression::zlib};
-    level1.zlib_level = 1;
-    CHECK(size(level1) >= zlib);
-    level1.zlib_level = 0;
-    CHECK_THROWS_AS(rkpm::io::write_vtu(dir / "bad.vtu", s.points, s.data, level1), rkpm::error);
+    // The default is level 1 (io/vtu_encoding.hpp says why); zlib's default, 6, is no larger.
+    CHECK(vtu_format{}.zlib_level == 1);
+    vtu_format level6{vtu_encoding::appended, vtu_compression::zlib};
+    level6.zlib_level = 6;
+    CHECK(size(level6) <= zlib);
+    level6.zlib_level = 0;
+    CHECK_THROWS_AS(rkpm::io::write_vtu(dir / "bad.vtu", s.points, s.data, level6), rkpm::error);
   }
   fs::remove_all(dir);
 }

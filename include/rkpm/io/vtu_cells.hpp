@@ -1,0 +1,78 @@
+#pragma once
+// The cells of a VTK snapshot (io/vtk.hpp, docs/method.md section 9.4), as the three arrays of
+// an UnstructuredGrid's <Cells>: connectivity (the points of every cell, one cell after the
+// other), offsets (where each cell ends in connectivity) and types (VTK's cell type numbers).
+//   vertex_cells(n)        one VTK_VERTEX per point: ParaView shows a cloud of dots
+//   quad_cells(mesh, n)    one VTK_QUAD per background cell on the points that are the mesh's
+//                          nodes (point i = node i), so ParaView draws the body as a surface and
+//                          interpolates every point array across it; a point that no cell uses
+//                          stays a VTK_VERTEX, after the quads
+// VTK orders a quad's nodes counter-clockwise around it; background_mesh::validate() refuses a
+// cell that is not counter-clockwise in the reference configuration, so its node order is VTK's.
+// In an axisymmetric run the points are (r, z) -> (x, y): the section drawn in its plane.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+
+namespace rkpm::io {
+
+inline constexpr std::uint8_t vtk_vertex = 1;  // VTK_VERTEX in VTK's vtkCellType.h
+inline constexpr std::uint8_t vtk_quad = 9;    // VTK_QUAD
+
+struct vtu_cells {
+  std::vector<std::int64_t> connectivity;
+  std::vector<std::int64_t> offsets;  // one per cell: the end of its points in connectivity
+  std::vector<std::uint8_t> types;    // one per cell
+
+  std::size_t size() const { return types.size(); }
+  bool empty() const { return types.empty(); }
+};
+
+namespace detail {
+inline void add_vertex(vtu_cells& c, std::size_t point) {
+  c.connectivity.push_back(static_cast<std::int64_t>(point));
+  c.offsets.push_back(static_cast<std::int64_t>(c.connectivity.size()));
+  c.types.push_back(vtk_vertex);
+}
+}  // namespace detail
+
+// Cell i is the single point i.
+inline vtu_cells vertex_cells(std::size_t points) {
+  vtu_cells c;
+  c.connectivity.reserve(points);
+  c.offsets.reserve(points);
+  c.types.reserve(points);
+  for (std::size_t i = 0; i < points; ++i) detail::add_vertex(c, i);
+  return c;
+}
+
+// The mesh's cells as quads on `points` points whose first mesh.node.size() are the mesh's
+// nodes in order; every point no cell uses (a node left out of the cells, or a point beyond the
+// nodes) becomes a vertex cell after the quads.
+inline vtu_cells quad_cells(const background_mesh& mesh, std::size_t points) {
+  if (mesh.node.size() > points)
+    fail("quad_cells: the mesh has {} nodes for {} points; the points must include the nodes", mesh.node.size(),
+         points);
+  vtu_cells c;
+  std::vector<bool> used(points, false);
+  c.connectivity.reserve(4 * mesh.cell.size() + points);
+  c.offsets.reserve(mesh.cell.size() + points);
+  c.types.reserve(mesh.cell.size() + points);
+  for (const auto& cell : mesh.cell) {
+    for (const auto n : cell) {
+      c.connectivity.push_back(static_cast<std::int64_t>(n));
+      used[static_cast<std::size_t>(n)] = true;
+    }
+    c.offsets.push_back(static_cast<std::int64_t>(c.connectivity.size()));
+    c.types.push_back(vtk_quad);
+  }
+  for (std::size_t i = 0; i < points; ++i)
+    if (!used[i]) detail::add_vertex(c, i);
+  return c;
+}
+
+}  // namespace rkpm::io

@@ -1,0 +1,83 @@
+// rkpm_bench_vtu: the time to write one VTU snapshot (io/vtk.hpp) of about 10^6 particles, as
+// the runner writes them (appended raw, zlib, the background cells as quads), per OpenMP thread
+// count and zlib level (tools/rkpm bench --vtu [Google Benchmark options]).
+//   BM_write_vtu/T/L   write_vtu on T threads at zlib level L, to a file in the temporary
+//                      directory (the page cache: the disk is not timed); counters: file MB,
+//                      particles
+// The fields are smooth functions of position with full-precision mantissas, as a solver's are
+// (displacement, velocity, a plane stress tensor with zero out-of-plane shear, a plastic strain
+// that is zero over half the body, det F), so that zlib sees data like a run's.
+// The machine may be shared: compare the thread counts within one run.
+
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/io/vtk.hpp>
+
+namespace {
+
+using rkpm::mat3;
+using rkpm::vec2;
+
+struct snapshot {
+  std::vector<vec2> points;
+  rkpm::io::vtu_cells cells;
+  rkpm::io::point_data data;
+};
+
+// side x side particles on a 10 mm square, its (side - 1)^2 cells as quads.
+const snapshot& bench_snapshot(int side) {
+  static snapshot s = [side] {
+    snapshot out;
+    const auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(0.01, 0.01), Eigen::Vector2i(side, side));
+    out.cells = rkpm::io::quad_cells(mesh, mesh.node.size());
+    const std::size_t n = mesh.node.size();
+    std::vector<vec2> u(n), v(n);
+    std::vector<mat3> sigma(n);
+    std::vector<double> eps(n), det(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = mesh.node[i][0] * 300.0, y = mesh.node[i][1] * 300.0;
+      u[i] = vec2(1e-4 * std::sin(x) * std::cos(0.7 * y), -2e-4 * std::cos(0.3 * x + y));
+      v[i] = vec2(3.0 * std::cos(x + 0.2 * y), -227.0 + 5.0 * std::sin(y));
+      const double sxx = 3e8 * std::sin(0.5 * x + y), syy = -2e8 * std::cos(x - 0.4 * y), sxy = 5e7 * std::sin(x * y);
+      sigma[i] << sxx, sxy, 0.0, sxy, syy, 0.0, 0.0, 0.0, 0.3 * (sxx + syy);
+      eps[i] = std::max(0.0, 0.4 * std::sin(0.8 * x) * std::cos(0.5 * y));
+      det[i] = 1.0 + 1e-3 * std::sin(x + y);
+      out.points.push_back(mesh.node[i] + u[i]);
+    }
+    out.data.add("displacement", u).add("velocity", v).add("stress", sigma);
+    out.data.add("equivalent_plastic_strain", eps).add("det_F", det);
+    return out;
+  }();
+  return s;
+}
+
+void BM_write_vtu(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  const auto& s = bench_snapshot(1000);
+  rkpm::io::vtu_format format;
+  format.zlib_level = static_cast<int>(state.range(1));
+  const auto path = std::filesystem::temp_directory_path() / "rkpm_bench_snapshot.vtu";
+  omp_set_num_threads(threads);
+  for (auto _ : state) rkpm::io::write_vtu(path, s.points, s.cells, s.data, format);
+  state.counters["file_MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  state.counters["particles"] = static_cast<double>(s.points.size());
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+
+// Thread count x zlib level: 1 (the runner's) and 6 (zlib's default).
+BENCHMARK(BM_write_vtu)
+    ->ArgsProduct({{1, 2}, {1, 6}})
+    ->ArgNames({"threads", "level"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+
+BENCHMARK_MAIN();
