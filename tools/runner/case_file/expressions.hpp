@@ -129,7 +129,8 @@ class expression {
   bool uses_variables_ = false;
 };
 
-// "the constant 'x' takes the name of a variable; ..." or "" for a name a constant may have.
+// Why `name` cannot name a constant ("the constant 'x' has the name of a variable; ..."), or ""
+// if it can.
 inline std::string constant_name_problem(const std::string& name) {
   if (std::find(variable_names.begin(), variable_names.end(), name) != variable_names.end())
     return fmt::format("the constant '{}' has the name of a variable ({}); rename it", name, list_choices(variable_names));
