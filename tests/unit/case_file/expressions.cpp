@@ -10,6 +10,8 @@
 //   - a tool ramped to speed, -v min(1, t / T), and one at A sin(omega t): velocity and
 //     displacement against the closed forms, also as the solver moves the tool, and the
 //     displacement a function of t alone (a restart moves the tool as the uninterrupted run);
+//   - a body force -k t on a free block: every particle's velocity is -k t^2 / 2 (the
+//     trapezoidal rule of the central difference is exact for a force linear in t);
 //   - each mistake: one line with its pointer and the fix.
 #include <doctest/doctest.h>
 
@@ -224,6 +226,29 @@ TEST_CASE("a tool ramped to speed, and one oscillating, follow the closed forms"
     CHECK(std::abs(m[0].second - u_ramp(s.time())) <= 1e-13 * v * s.time());
     CHECK(s.contact().tools()[1].velocity(s.time()).y() == -v * std::min(1.0, s.time() / T));
   }
+}
+
+TEST_CASE("a body force ramped in time, b = -k t, on a free block: v = -k t^2 / 2 at every particle") {
+  // No tool, no stress: every particle accelerates as b(t). The step's velocity update is the
+  // trapezoidal rule on b(t(n)), b(t(n+1)) (docs/method.md 5.4), exact for b linear in t.
+  const double k = 2e7;  // m/s^3
+  case_json doc = small_block();
+  doc["tools"] = case_json::array();
+  doc["histories"] = case_json::array();
+  doc["constants"] = {{"k", k}};
+  doc["bodies"][0]["initial_velocity_m_s"] = {0, 0};
+  doc["bodies"][0]["body_force_m_s2"] = {"0", "-k * t"};
+  const auto c = test::load_document(doc);
+  run_options o;
+  o.end_time = c.end_time;
+  auto s = make_solver<file_config>(runner::case_file::build_problem<contact_t>(c, 1), o);
+  for (int step = 0; step < 40; ++step) s.step();
+  const double t = s.time(), expected = -0.5 * k * t * t;
+  double worst = 0.0;
+  for (const vec2& v : s.particle_velocities()) worst = std::max(worst, (v - vec2(0.0, expected)).norm());
+  MESSAGE("t = " << t * 1e6 << " us: v = " << expected << " m/s, largest difference " << worst << " m/s");
+  CHECK(std::abs(expected) > 1.0);
+  CHECK(worst < 1e-12 * std::abs(expected));
 }
 
 TEST_CASE("expression mistakes: one line each, with the pointer and the fix") {
