@@ -16,6 +16,7 @@
 // exchanges ghost values: after the prediction, after contact and constraints, after the scatter.
 
 #include <algorithm>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -67,7 +68,10 @@ class explicit_solver {
   // Checkpoint sections (io/checkpoint.hpp; solver/checkpoint.hpp writes and reads the files),
   // whole only between steps: between_steps() is false after an error thrown inside step().
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
-  void load(io::checkpoint_reader& r) { sections(r, *this); }
+  void load(io::checkpoint_reader& r) {
+    sections(r, *this);
+    if (body_force_field_) body_force_at(timeline_.time);  // a function of t: not saved
+  }
   bool between_steps() const { return timeline_.between_steps(); }
 
   // ---- results -----------------------------------------------------------------------
@@ -135,7 +139,17 @@ class explicit_solver {
     a.part(s.contact_);   // what the run reports of contact, then the policy's state
   }
 
-  vec2 external_force(index_t I) const { return mass_[I] * body_force_; }
+  // f_ext at the time of the last body_force_at (a constant body force: at any time).
+  vec2 external_force(index_t I) const { return body_force_field_ ? f_ext_[I] : mass_[I] * body_force_; }
+  // f_ext over the step just predicted, for its work: the mean of f_ext(n) and f_ext(n+1).
+  vec2 external_force_over_step(index_t I) const {
+    return body_force_field_ ? vec2(0.5 * (f_ext_before_[I] + f_ext_[I])) : vec2(mass_[I] * body_force_);
+  }
+  // f_ext,I = m_I b(X_I, t) from the problem's body_force_field, on one thread (problem.hpp).
+  void body_force_at(double t) {
+    const auto& X = model_.particles.position;
+    for (index_t I = 0; I < model_.particle_count(); ++I) f_ext_[I] = mass_[I] * body_force_field_(X[I], t);
+  }
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).
   void compute_internal_force() {
@@ -151,6 +165,8 @@ class explicit_solver {
   run_options options_;
   std::vector<double> mass_;
   vec2 body_force_ = vec2::Zero();
+  std::function<vec2(const vec2&, double)> body_force_field_;
+  std::vector<vec2> f_ext_, f_ext_before_;  // with a body_force_field: f_ext at t(n+1) and t(n)
   std::vector<vec2> d_, v_, a_, v_half_prev_, f_int_;
   std::vector<vec2> d_start_;  // d(n) at the particles the constraints touch (constraints_.touched())
   block_sums<2> sums_;
@@ -177,6 +193,12 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
   d_.assign(n, vec2::Zero());
   v_ = a_ = v_half_prev_ = f_int_ = d_;
   body_force_ = prob.body_force;
+  body_force_field_ = std::move(prob.body_force_field);
+  if (body_force_field_) {
+    f_ext_.resize(n);
+    body_force_at(0.0);
+    f_ext_before_ = f_ext_;
+  }
   sums_ = block_sums<2>(model_.own.particles.size());  // owned particles come first
   points_ = point_materials<G, M>(model_, materials_);
   add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
@@ -216,13 +238,17 @@ void explicit_solver<G, M, Ct>::step() {
     for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
   }
   exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
+  if (body_force_field_) {  // f_ext(n+1), keeping f_ext(n) for the work
+    std::swap(f_ext_before_, f_ext_);
+    body_force_at(timeline_.time + dt);
+  }
   // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
   // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
   const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
     v_half_prev_[I] = v_[I];
     const vec2 dd = dt * v_[I];
     s[0] += 0.5 * f_int_[I].dot(dd);
-    s[1] += external_force(I).dot(dd);
+    s[1] += external_force_over_step(I).dot(dd);
   });
   compute_internal_force();
   // The kinetic energy here unless the constraints change v(n+1) afterwards.

@@ -1,7 +1,8 @@
 #pragma once
 // problem: the run-time description of one simulation that a case builds for any
 // configuration type (docs/method.md section 9.1): particles, cells, material, contact (with its
-// tools), initial velocity, constraints and body force; and run_options for the stepping.
+// tools), initial velocity, constraints and body force (constant, or a field b(X, t)); and
+// run_options for the stepping.
 // Several bodies (docs/method.md section 3.1) are the connected parts of the cells; add_body
 // appends one with its own material constants and returns its number.
 
@@ -31,6 +32,10 @@ struct problem {
   // Prescribed physical velocities; in axisymmetric geometry u_r = 0 on the axis is added.
   std::vector<velocity_constraint> constraints;
   vec2 body_force = vec2::Zero();  // acceleration (m/s^2), e.g. gravity
+  // Or an acceleration that varies, b(X, t) at the particle's reference position X and time t
+  // (m/s^2), in place of body_force when given: f_ext,I = m_I b(X_I, t). Called from one thread,
+  // once per particle per step (so it need not be thread-safe).
+  std::function<vec2(const vec2& X, double t)> body_force_field;
   // Contact slave particles; empty means the boundary nodes of the mesh when the mesh nodes are
   // the particles (make_grid_mesh + make_grid_particles), else none.
   std::vector<index_t> slave_particles;

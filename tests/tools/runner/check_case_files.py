@@ -30,12 +30,19 @@
                                                             projectile's alone (1/2 rho_Cu A v^2), the energy
                                                             balances, the projectile stays out of the plate; and
                                                             overlapping bodies stop before any step
+    check_case_files.py expressions RKPM_RUN CASES_DIR WORK_DIR
+                                                            fields as expressions: cases/spinning_disc.json turns
+                                                            at w with no net momentum; a tool ramped by a
+                                                            velocity_expression and a body force ramped in time
+                                                            close the ledger and restart bit for bit; a bad
+                                                            expression stops the run with its pointer
 
 The built-in cases (cases/*.hpp) and the case files are two independent descriptions of the same
 problems: one in C++, one in JSON through the generic bodies, tools and histories.
 """
 import csv
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -421,11 +428,82 @@ def johnson_cook(rkpm_run, cases, work):
         print(f"ok  {name}: {r.stderr.strip()}")
 
 
+def expressions(rkpm_run, cases, work):
+    """Fields given as expressions (tools/runner/case_file/README.md, "Expressions"):
+    cases/spinning_disc.json for a quarter turn: the momentum kept, the rim particle turned by about
+    w t, the ledger closed; the block forging with its top tool ramped to speed by a
+    velocity_expression and a body force ramped in time: the ledger closes with the work of a
+    varying body force, and a restart from the mid-run checkpoint gives the uninterrupted run's
+    outputs bit for bit (the tool's displacement and the body force are functions of t alone);
+    a bad expression stops the run before any step with its pointer."""
+    out = os.path.join(work, "spinning_disc")
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, os.path.join(cases, "spinning_disc.json"), "--end-time", "8e-5", "--out", out, "--no-plots",
+             "--quiet"])
+    check(r.returncode == 0, f"spinning_disc.json: the run failed: {r.stderr}")
+    if r.returncode == 0:
+        s = summary(out)
+        w, R, t = 2e4, 10e-3, s["end_time_s"]
+        res = s["results"]
+        turned = math.atan2(res["rim_y_mm"], res["rim_x_mm"])
+        # The momentum is that of the mesh's centre of mass (about, not exactly, at the centre):
+        # constant, to round-off of the particles' m w R.
+        mass = 7800 * math.pi * R * R  # per metre, about (a 32-gon)
+        rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+        P = [float(row["momentum_x_N_s"]) for row in rows]
+        check(len(P) > 10 and max(P) - min(P) < 1e-12 * mass * w * R and abs(P[0]) < 1e-3 * mass * w * R,
+              f"spinning disc: momentum from {P[0]} to {P[-1]} N s")
+        check(abs(turned - w * t) < 0.02 * w * t, f"spinning disc: turned {turned} rad, w t = {w * t}")
+        e = s["energy"]
+        check(e["balance_error"] < 1e-3, f"spinning disc: balance error {e['balance_error']}")
+        print(f"ok  spinning_disc.json: {s['steps']} steps, turned {turned:.4f} rad (w t = {w * t:.4f}), "
+              f"momentum {P[0]:.6e} N s changed by {max(P) - min(P):.1e}, balance error {e['balance_error']:.2e}")
+
+    with open(os.path.join(cases, "block_forging.json")) as f:
+        doc = json.load(f)
+    doc["constants"] = {"v": 10, "T": 1e-3}
+    doc["tools"][1]["motion"] = {"type": "velocity_expression", "velocity_m_s": [0, "-v * min(1, t / T)"]}
+    doc["bodies"][0]["body_force_m_s2"] = ["0", "-2e3 * min(1, t / T) * (1 + x)"]
+    doc["histories"].append({"name": "top_tool_y_mm", "tool_displacement": {"tool": "top_tool", "component": "y",
+                                                                              "scale": 1e3}})
+    r, full = run_document(rkpm_run, doc, work, "ramped", "--end-time", "0.004", "--checkpoint-interval", "0.002")
+    check(r.returncode == 0, f"ramped block: the run failed: {r.stderr}")
+    if r.returncode != 0:
+        return
+    s = summary(full)
+    u = s["results"]["top_tool_y_mm"] * 1e-3
+    t, v, T = s["end_time_s"], 10.0, 1e-3
+    check(abs(u + v * (t - T / 2)) < 1e-12 * v * t, f"ramped block: the top tool moved {u} m, not {-v * (t - T / 2)}")
+    e = s["energy"]
+    imbalance = printed_imbalance(e)
+    check(e["external_J"] != 0.0 and abs(imbalance) <= (e["balance_error"] + 1e-14) * e["largest_term_J"],
+          f"ramped block: external work {e['external_J']} J, imbalance {imbalance} J")
+    check(e["balance_error"] < 1e-2, f"ramped block: balance error {e['balance_error']}")
+    ck = sorted(f for f in os.listdir(full) if f.endswith(".rkpmcp"))
+    check(len(ck) == 2, f"ramped block: expected two checkpoints, found {ck}")
+    if ck:
+        cont = os.path.join(work, "ramped-cont")
+        shutil.rmtree(cont, ignore_errors=True)
+        r = run([rkpm_run, os.path.join(work, "ramped.json"), "--restart", os.path.join(full, ck[0]), "--out", cont,
+                 "--no-plots", "--quiet"])
+        check(r.returncode == 0, f"ramped block: the restart failed: {r.stderr}")
+        if r.returncode == 0:
+            compare(full, cont, "ramped block restarted from " + ck[0])
+
+    doc["bodies"][0]["initial_velocity_m_s"] = ["0", "2 +* x"]
+    r, _ = run_document(rkpm_run, doc, work, "bad_expression")
+    words = ["bad_expression.json: /bodies/0/initial_velocity_m_s/1:", "does not parse", "position 3"]
+    check(r.returncode != 0 and all(w in r.stderr for w in words) and r.stderr.strip().count("\n") == 0,
+          f"bad expression: {r.stderr!r}")
+    print(f"ok  bad_expression.json: {r.stderr.strip()}")
+
+
 def main(argv):
     mode, rkpm_run, cases, work = argv[1:5]
     os.makedirs(work, exist_ok=True)
     {"paper": paper, "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies,
-     "ledger": ledger, "voce": voce, "johnson_cook": johnson_cook}[mode](rkpm_run, cases, work)
+     "ledger": ledger, "voce": voce, "johnson_cook": johnson_cook, "expressions": expressions}[mode](
+        rkpm_run, cases, work)
     return exit_status()
 
 

@@ -23,6 +23,7 @@
 #include <rkpm/solver/problem.hpp>
 
 #include "body_edges.hpp"
+#include "body_fields.hpp"
 #include "case_description.hpp"
 #include "case_material.hpp"
 #include "cases/contact_setup.hpp"
@@ -35,10 +36,7 @@ namespace rkpm::runner::case_file {
 
 // One line "FILE: POINTER: message", as load_case_file reports.
 [[noreturn]] inline void fail_at(const case_description& c, const std::string& at, const std::string& message) {
-  diagnostics d(c.file.string());
-  d.error(at, message);
-  d.throw_if_any();
-  throw rkpm::error(message);  // not reached
+  fail_in_file(c.file.string(), at, message);
 }
 
 inline material_type make_material(const material_description& m) {
@@ -162,15 +160,15 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
                                               detail::make_body_pairs(c)),
       .initial_velocity = {},
       .constraints = {},
-      .body_force = first.body_force,
+      .body_force = vec2::Zero(),  // set_body_force below
       .slave_particles = {},
   };
   std::vector<std::pair<particle_set<2>, background_mesh>> parts;
   std::vector<index_t> start;  // first particle of each body
-  bool listed_slaves = false, one_velocity = true;
+  bool listed_slaves = false;
   for (std::size_t k = 0; k < c.bodies.size(); ++k) {
     const body_description& b = c.bodies[k];
-    if (b.body_force != first.body_force)
+    if (!(b.body_force == first.body_force))
       fail_at(c, child_pointer(b.at, "body_force_m_s2"),
               fmt::format("body '{}' has another body force than body '{}'; the solver takes one acceleration for "
                           "all bodies (gravity): give them the same", b.name, first.name));
@@ -188,20 +186,11 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
       fail_at(c, child_pointer(b.at, "shape"), e.what());
     }
     listed_slaves = listed_slaves || b.slave_layers != 1;
-    one_velocity = one_velocity && b.initial_velocity == first.initial_velocity;
   }
   start.push_back(static_cast<index_t>(pr.particles.size()));
   if (c.bodies.size() == 1) pr.body_materials.clear();
-  if (one_velocity) {
-    if (first.initial_velocity != vec2::Zero()) pr.initial_velocity = [v = first.initial_velocity](const vec2&) { return v; };
-  } else {
-    std::vector<vec2> v0;
-    for (const auto& b : c.bodies) v0.push_back(b.initial_velocity);
-    pr.initial_particle_velocity = [v0, start](index_t I, const vec2&) {
-      const auto k = std::upper_bound(start.begin(), start.end(), I) - start.begin() - 1;
-      return v0[static_cast<std::size_t>(k)];
-    };
-  }
+  set_initial_velocity(c, pr, start);
+  set_body_force(c, pr);
   // Slaves: none given means every body's boundary nodes; "all" lists a body's every particle,
   // {"layers": K} those within K cell layers of its surface (the axis is not surface).
   if (listed_slaves)

@@ -7,6 +7,8 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -23,6 +25,21 @@ namespace rkpm::runner::case_file {
 // Policy names exactly as the policies' ::name (tools/runner/methods.hpp lists the choices).
 struct method_choice {
   std::string kernel, correction, quadrature, contact;
+};
+
+// The file's "constants": {"w": 100}, named numbers the expressions may use.
+using constant_table = std::map<std::string, double, std::less<>>;
+
+// A vector given per body or per tool: two numbers, or, per component, a number or an
+// expression (a string) of the field's variables and the file's constants (expressions.hpp).
+// An expression that names no variable ("-190", "2 * w") is read as the number it gives, so that
+// ["0", "-190"] runs exactly as [0, -190].
+struct vector_field {
+  vec2 value = vec2::Zero();              // the numbers (0 where an expression gives the component)
+  std::array<std::string, 2> expression;  // "" where the component is a number
+  std::string at;                         // the JSON pointer of the pair
+  bool varies() const { return !expression[0].empty() || !expression[1].empty(); }
+  bool operator==(const vector_field& o) const { return value == o.value && expression == o.expression; }
 };
 
 // ---- bodies -----------------------------------------------------------------------------
@@ -60,8 +77,8 @@ struct body_description {
   std::string name;
   body_shape shape;
   material_description material;
-  vec2 initial_velocity = vec2::Zero();
-  vec2 body_force = vec2::Zero();  // acceleration, m/s^2
+  vector_field initial_velocity;  // m/s; expressions of x, y (the reference position, m)
+  vector_field body_force;        // acceleration, m/s^2; expressions of x, y and t (s)
   std::vector<constraint_description> constraints;
   // "slaves": "boundary" (1), "all" (0) or {"layers": K}: the particles within K cell layers of
   // the surface (discretization/boundary_chains.hpp surface_layers).
@@ -78,8 +95,11 @@ struct body_pair_description {
 
 // ---- tools ------------------------------------------------------------------------------
 struct tool_motion_description {
-  std::string type = "fixed";  // "fixed", "constant_velocity", "velocity_table"
-  vec2 velocity = vec2::Zero();
+  std::string type = "fixed";  // "fixed", "constant_velocity", "velocity_table", "velocity_expression"
+  vec2 velocity = vec2::Zero();  // constant_velocity
+  // velocity_expression: the velocity (m/s) as expressions of t (s); the displacement is its
+  // integral from t = 0 (expression_motion.hpp).
+  vector_field velocity_expression;
   // velocity_table rows: t (s, first 0, increasing), vx, vy (m/s); linear between rows,
   // constant after the last.
   std::vector<std::array<double, 3>> table;
@@ -147,6 +167,7 @@ struct case_description {
   std::filesystem::path file;  // for messages and relative paths
   json document;               // the file with the overrides applied, for summary.json
   std::string name, description;
+  constant_table constants;    // "constants": named numbers the expressions may use
   std::string geometry;        // "plane_strain" or "axisymmetric"
   method_choice method;
   double support_factor = 2.0;

@@ -46,6 +46,14 @@ class diagnostics {
   std::vector<std::string> lines_;
 };
 
+// Throws the one line "FILE: POINTER: message", for a mistake found after loading (building).
+[[noreturn]] inline void fail_in_file(const std::string& file, std::string_view pointer, std::string_view message) {
+  diagnostics d(file);
+  d.error(pointer, message);
+  d.throw_if_any();
+  throw rkpm::error(std::string(message));  // not reached
+}
+
 // "/bodies/0" + "material" -> "/bodies/0/material", escaping '~' and '/' as RFC 6901 says.
 inline std::string child_pointer(std::string_view parent, std::string_view key) {
   std::string out(parent);

@@ -1,10 +1,12 @@
 #pragma once
 // The rigid tools of a case file as contact::rigid_tool, with their motions: fixed, constant
-// velocity, or a velocity table (linear between rows, constant after the last) whose
-// displacement is its exact integral from t = 0.
+// velocity, a velocity table (linear between rows, constant after the last) whose
+// displacement is its exact integral from t = 0, or a velocity given as expressions of t whose
+// displacement is its integral to quadrature accuracy (expression_motion.hpp).
 
 #include <algorithm>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include <rkpm/contact/tool_motion.hpp>
 
 #include "case_description.hpp"
+#include "expression_motion.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -50,8 +53,15 @@ class velocity_table {
   std::vector<vec2> v_, u_;
 };
 
-inline contact::tool_motion make_motion(const tool_motion_description& m) {
+// `constants` and `file`: for a velocity given as expressions (expression_motion.hpp).
+inline contact::tool_motion make_motion(const tool_motion_description& m, const constant_table& constants = {},
+                                        const std::string& file = "case file") {
   if (m.type == "constant_velocity") return contact::tool_motion::constant_velocity(m.velocity);
+  if (m.type == "velocity_expression") {
+    // Expressions that name no t are numbers (read_expressions.hpp): a constant velocity, exactly.
+    if (!m.velocity_expression.varies()) return contact::tool_motion::constant_velocity(m.velocity_expression.value);
+    return expression_motion(m.velocity_expression, constants, file);
+  }
   if (m.type == "velocity_table") {
     const auto table = std::make_shared<const velocity_table>(m.table);
     return contact::tool_motion::prescribed([table](double t) { return table->displacement(t); },
@@ -64,7 +74,7 @@ inline std::vector<contact::rigid_tool> make_tools(const case_description& c) {
   std::vector<contact::rigid_tool> tools;
   for (const auto& t : c.tools)
     tools.emplace_back(t.name, t.polyline, t.body_on_left ? contact::side::left : contact::side::right,
-                       make_motion(t.motion), t.contact_depth);
+                       make_motion(t.motion, c.constants, c.file.string()), t.contact_depth);
   return tools;
 }
 

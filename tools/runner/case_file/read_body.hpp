@@ -1,6 +1,7 @@
 #pragma once
 // Reading one entry of "bodies": its shape (rectangle, polygon or Gmsh mesh), material,
-// initial velocity, body force, edge constraints and contact slaves. Values are checked one by
+// initial velocity and body force (numbers or expressions: read_expressions.hpp), edge
+// constraints and contact slaves. Values are checked one by
 // one here (types, signs, ranges); what needs the whole body (a polygon with no area, an edge
 // name, a tool inside it) is checked in cross_checks.hpp.
 
@@ -23,6 +24,7 @@
 
 #include "case_description.hpp"
 #include "json_fields.hpp"
+#include "read_expressions.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -276,7 +278,7 @@ inline std::optional<constraint_description> read_constraint(diagnostics& d, con
 }  // namespace detail
 
 inline body_description read_body(diagnostics& d, const json& value, const std::string& at,
-                                   const std::filesystem::path& folder) {
+                                   const std::filesystem::path& folder, const constant_table& constants = {}) {
   object_reader r(d, value, at, {"name", "shape", "material", "initial_velocity_m_s", "body_force_m_s2",
                                  "constraints", "slaves"});
   body_description b;
@@ -287,8 +289,10 @@ inline body_description read_body(diagnostics& d, const json& value, const std::
     if (auto shape = detail::read_shape(d, *s, r.at("shape"), folder)) b.shape = std::move(*shape);
   if (const json* m = r.required("material", "{\"law\": \"j2\", ...}"))
     b.material = detail::read_material(d, *m, r.at("material"));
-  b.initial_velocity = r.point_or("initial_velocity_m_s", vec2::Zero());
-  b.body_force = r.point_or("body_force_m_s2", vec2::Zero());
+  b.initial_velocity = vector_field_or(r, "initial_velocity_m_s", position_variables(), constants,
+                                       "[0, -190] or [\"-w * y\", \"w * x\"] (x, y: the reference position, m)");
+  b.body_force = vector_field_or(r, "body_force_m_s2", position_time_variables(), constants,
+                                 "[0, -9.81] or [\"0\", \"-9.81 * min(1, t / 1e-3)\"] (x, y in m, t in s)");
   if (const json* cs = r.find("constraints")) {
     if (!cs->is_array())
       d.error(r.at("constraints"), fmt::format("expected a list of constraints, got {}; give e.g. "

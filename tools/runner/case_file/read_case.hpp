@@ -1,5 +1,5 @@
 #pragma once
-// Reading the top level of a case file into a case_description: name, geometry, method,
+// Reading the top level of a case file into a case_description: name, constants, geometry, method,
 // support factor, end time, bodies, tools, contact, output and histories. Each part reports
 // its own mistakes through diagnostics; checks across parts are in cross_checks.hpp.
 
@@ -18,6 +18,7 @@
 #include "case_description.hpp"
 #include "json_fields.hpp"
 #include "read_body.hpp"
+#include "read_expressions.hpp"
 #include "read_histories.hpp"
 #include "read_tools.hpp"
 
@@ -60,13 +61,14 @@ inline case_description read_case(diagnostics& d, const json& document, const st
   case_description c;
   c.file = file;
   c.document = document;
-  object_reader r(d, document, "", {"name", "description", "geometry", "method", "support_factor", "end_time_s",
-                                    "bodies", "tools", "contact", "output", "histories"});
+  object_reader r(d, document, "", {"name", "description", "constants", "geometry", "method", "support_factor",
+                                    "end_time_s", "bodies", "tools", "contact", "output", "histories"});
   if (!r.valid()) return c;
   c.name = r.text("name", "taylor_bar").value_or("");
   if (c.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
     d.error(r.at("name"), fmt::format("'{}' would not make a file name; use letters, digits, '_' and '-'", c.name));
   c.description = r.text_or("description", "");
+  c.constants = read_constants(d, r.find("constants"), r.at("constants"));
   const std::array<std::string_view, 2> geometries{geometry::plane_strain::name, geometry::axisymmetric::name};
   c.geometry = r.choice("geometry", geometries, "geometry").value_or("");
   c.method = detail::read_method(d, r.find("method"), r.at("method"));
@@ -81,12 +83,15 @@ inline case_description read_case(diagnostics& d, const json& document, const st
   if (const json* b = r.required("bodies", "[{\"name\": \"bar\", \"shape\": ..., \"material\": ...}]")) {
     c.bodies = detail::read_list(d, *b, r.at("bodies"), "[{\"name\": \"bar\", ...}]",
                                  [&](diagnostics& dd, const json& v, const std::string& at) {
-                                   return read_body(dd, v, at, folder);
+                                   return read_body(dd, v, at, folder, c.constants);
                                  });
     if (b->is_array() && b->empty()) d.error(r.at("bodies"), "the list is empty; give the deformable body");
   }
   if (const json* t = r.find("tools"))
-    c.tools = detail::read_list(d, *t, r.at("tools"), "[{\"name\": \"wall\", \"polyline_m\": ...}]", read_tool);
+    c.tools = detail::read_list(d, *t, r.at("tools"), "[{\"name\": \"wall\", \"polyline_m\": ...}]",
+                                [&](diagnostics& dd, const json& v, const std::string& at) {
+                                  return read_tool(dd, v, at, c.constants);
+                                });
   if (const json* k = r.find("contact")) {
     object_reader cr(d, *k, r.at("contact"), {"friction", "penalty_stiffness_N_m", "pairs", "two_pass"});
     c.friction = cr.number_or("friction", 0.0);

@@ -1,8 +1,8 @@
 #pragma once
 // Reading one entry of "tools": a rigid polyline at t = 0, the side of it the body lies on,
-// its prescribed translation (fixed, constant velocity or a velocity table) and the deepest
-// penetration its faces act on (contact/rigid_tool.hpp). Whether a tool starts inside the
-// body is checked in cross_checks.hpp.
+// its prescribed translation (fixed, constant velocity, a velocity table, or a velocity given
+// as expressions of t: read_expressions.hpp) and the deepest penetration its faces act on
+// (contact/rigid_tool.hpp). Whether a tool starts inside the body is checked in cross_checks.hpp.
 
 #include <array>
 #include <optional>
@@ -14,24 +14,42 @@
 
 #include "case_description.hpp"
 #include "json_fields.hpp"
+#include "read_expressions.hpp"
+#include "vector_expression.hpp"
 
 namespace rkpm::runner::case_file {
 
 namespace detail {
 
-inline tool_motion_description read_motion(diagnostics& d, const json& value, const std::string& at) {
-  static constexpr std::array<std::string_view, 3> types{"fixed", "constant_velocity", "velocity_table"};
+inline tool_motion_description read_motion(diagnostics& d, const json& value, const std::string& at,
+                                           const constant_table& constants) {
+  static constexpr std::array<std::string_view, 4> types{"fixed", "constant_velocity", "velocity_table",
+                                                         "velocity_expression"};
   const std::string type = value.is_object() && value.contains("type") && value["type"].is_string()
                                ? value["type"].get<std::string>() : "";
   std::vector<std::string_view> known{"type"};
   if (type != "fixed" && type != "velocity_table") known.push_back("velocity_m_s");
-  if (type != "fixed" && type != "constant_velocity") known.push_back("table");
+  if (type != "fixed" && type != "constant_velocity" && type != "velocity_expression") known.push_back("table");
   object_reader r(d, value, at, known);
   tool_motion_description m;
   if (!r.valid()) return m;
   m.type = r.choice("type", types, "motion type").value_or("fixed");
   if (m.type == "constant_velocity") {
-    m.velocity = r.point("velocity_m_s", "[0, -10]").value_or(vec2::Zero());
+    // Numbers, or expressions of the constants alone ("-v0"); one of t is a velocity_expression.
+    if (const json* v = r.required("velocity_m_s", "[0, -10]"))
+      if (auto f = to_vector_field(d, *v, r.at("velocity_m_s"), {}, constants,
+                                   "[0, -10] (for a velocity that varies: \"type\": \"velocity_expression\")"))
+        m.velocity = f->value;
+  } else if (m.type == "velocity_expression") {
+    const std::string example = "[\"0\", \"-10 * min(1, t / 1e-4)\"] (t: the time, s)";
+    if (const json* v = r.required("velocity_m_s", example))
+      if (auto f = to_vector_field(d, *v, r.at("velocity_m_s"), time_variables(), constants, example)) {
+        const vector_expression velocity(*f, time_variables(), constants);
+        if (const auto bad = velocity.not_finite(velocity(std::array{0.0}), "t = 0 s",
+                                                 "make it finite from t = 0 (the tool's velocity at the start)"))
+          d.error(bad->first, bad->second);
+        m.velocity_expression = std::move(*f);
+      }
   } else if (m.type == "velocity_table") {
     const std::string example = "[[0, 0, -10], [1e-3, 0, 0]] (rows: t_s, vx_m_s, vy_m_s)";
     const json* t = r.required("table", example);
@@ -64,7 +82,8 @@ inline tool_motion_description read_motion(diagnostics& d, const json& value, co
 
 }  // namespace detail
 
-inline tool_description read_tool(diagnostics& d, const json& value, const std::string& at) {
+inline tool_description read_tool(diagnostics& d, const json& value, const std::string& at,
+                                   const constant_table& constants = {}) {
   object_reader r(d, value, at, {"name", "polyline_m", "body_side", "motion", "contact_depth_m"});
   tool_description t;
   t.at = at;
@@ -80,7 +99,7 @@ inline tool_description read_tool(diagnostics& d, const json& value, const std::
                           t.polyline[k].x(), t.polyline[k].y()));
   static constexpr std::array<std::string_view, 2> sides{"left", "right"};
   t.body_on_left = r.choice("body_side", sides, "body side").value_or("left") == "left";
-  if (const json* m = r.find("motion")) t.motion = detail::read_motion(d, *m, r.at("motion"));
+  if (const json* m = r.find("motion")) t.motion = detail::read_motion(d, *m, r.at("motion"), constants);
   t.contact_depth = r.number_or("contact_depth_m", 0.0);
   check_non_negative(d, r.at("contact_depth_m"), t.contact_depth, "2e-3 (0 picks half the shortest segment)");
   return t;
