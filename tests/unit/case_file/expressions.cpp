@@ -30,6 +30,8 @@
 #include "tools/runner/case_file/make_tools.hpp"
 #include "tools/runner/case_file/measure.hpp"
 
+namespace test_unit_case_file_expressions {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using namespace rkpm;
 using test::case_json;
 using test::contains;
@@ -336,3 +338,5 @@ TEST_CASE("expression mistakes: one line each, with the pointer and the fix") {
   CHECK(contains(test::error_message([&] { tools[1].displacement(2e-6); }),
                  "case.json: /tools/1/motion/velocity_m_s/1: the expression \"sqrt(1e-6 - t)\" gives -nan at t ="));
 }
+
+}  // namespace test_unit_case_file_expressions
