@@ -4,8 +4,8 @@
 // XML and collects the raw appended block, handed to the file as pieces (the arrays' bytes are
 // not copied into one string). Arrays as VTK's own vtkXMLWriter writes them (header_type
 // UInt64, native byte order); zlib compression (compressor="vtkZLibDataCompressor", blocks of
-// 32 KiB compressed in parallel: io/vtu_zlib.hpp) when compiled with RKPM_WITH_ZLIB and linked
-// with zlib.
+// 32 KiB compressed in parallel: io/vtu_zlib.hpp) when compiled with RKPM_WITH_LIBDEFLATE and
+// linked with libdeflate, or with RKPM_WITH_ZLIB and linked with zlib.
 
 #include <algorithm>
 #include <bit>
@@ -28,12 +28,7 @@ namespace rkpm::io {
 enum class vtu_encoding { appended, binary, ascii };
 enum class vtu_compression { none, zlib };
 
-// True if this translation unit can compress (compiled with RKPM_WITH_ZLIB, linked with zlib).
-#ifdef RKPM_WITH_ZLIB
-inline constexpr bool vtu_zlib_available = true;
-#else
-inline constexpr bool vtu_zlib_available = false;
-#endif
+// zlib when this translation unit can write it (io/vtu_zlib.hpp: libdeflate or zlib).
 inline constexpr vtu_compression default_vtu_compression =
     vtu_zlib_available ? vtu_compression::zlib : vtu_compression::none;
 
@@ -47,6 +42,7 @@ struct vtu_format {
   // for files 1% smaller (a snapshot of 10^6 particles: 85.4 MB at 6, 86.2 MB at 1, of 201 MB;
   // tools/bench/vtu.cpp).
   int zlib_level = 1;
+  vtu_deflater deflater = default_vtu_deflater;  // who writes the streams at that level
 
   vtu_format() = default;
   vtu_format(vtu_encoding e, vtu_compression c = default_vtu_compression) : encoding(e), compression(c) {}  // NOLINT
@@ -110,15 +106,14 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
     block.raw = std::span<const unsigned char>(bytes, size);
     return block;
   }
-#ifdef RKPM_WITH_ZLIB
+  if (!vtu_deflater_available(format.deflater))
+    fail("write_vtu: array \"{}\": zlib compression by {} asked for, but rkpm was compiled without it; "
+         "install libdeflate-dev or zlib1g-dev and reconfigure (or compile with -DRKPM_WITH_LIBDEFLATE "
+         "and link -ldeflate, -DRKPM_WITH_ZLIB and -lz), or use vtu_compression::none", name,
+         format.deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
   block.is_compressed = true;
-  compress_vtu_blocks(bytes, size, format.zlib_level, name, block.header, block.compressed);
+  compress_vtu_blocks(bytes, size, format.zlib_level, format.deflater, name, block.header, block.compressed);
   return block;
-#else
-  fail("write_vtu: array \"{}\": zlib compression asked for, but rkpm was compiled without zlib; "
-       "install zlib (Debian zlib1g-dev), compile with -DRKPM_WITH_ZLIB and link -lz, or use "
-       "vtu_compression::none", name);
-#endif
 }
 
 // Writes the XML of the DataArrays and collects the appended block: one object per file.
