@@ -38,9 +38,9 @@ struct vtu_format {
   vtu_encoding encoding = vtu_encoding::appended;
   vtu_compression compression = default_vtu_compression;
   // 1 (fastest) .. 9 (smallest). 1, not zlib's default 6: a solver's doubles have
-  // full-precision mantissas that no level finds matches in, so level 6 spends twice the time
-  // for files 1% smaller (a snapshot of 10^6 particles: 85.4 MB at 6, 86.2 MB at 1, of 201 MB;
-  // tools/bench/vtu.cpp).
+  // full-precision mantissas that no level finds matches in, so a higher level only spends time
+  // (a snapshot of 10^6 particles, 201 MB of arrays: zlib 86.2 MB at 1, 85.4 MB at 6 in twice
+  // the time; libdeflate 85.4 MB at 1, 85.6 MB at 6 in 2.3 times the time; tools/bench/vtu.cpp).
   int zlib_level = 1;
   vtu_deflater deflater = default_vtu_deflater;  // who writes the streams at that level
 
