@@ -90,7 +90,7 @@ inline void append_base64(std::string& out, const unsigned char* bytes, std::siz
 // io/vtu_zlib.hpp then the zlib streams of the 32 KiB blocks.
 struct binary_block {
   std::vector<unsigned char> header;
-  std::vector<unsigned char> compressed;  // the zlib blocks, when compressed
+  byte_buffer compressed;                 // the zlib blocks, when compressed
   std::span<const unsigned char> raw;     // the values, when not
   bool is_compressed = false;
 

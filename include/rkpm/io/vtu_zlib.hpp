@@ -20,8 +20,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <new>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -68,6 +71,27 @@ inline constexpr bool vtu_deflater_available(vtu_deflater d) {
 namespace rkpm::io::detail {
 
 inline constexpr std::size_t vtu_block_size = 32768;
+
+// A byte vector whose resize() leaves the new bytes uninitialised. Each thread's buffer is sized
+// for the worst case (a little more than the raw bytes) and the compressors fill less than half
+// of it on a solver's data: zeroing it first would write and fault in pages never used.
+template <class T>
+struct uninitialized_allocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = uninitialized_allocator<U>;
+  };
+  using std::allocator<T>::allocator;
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+using byte_buffer = std::vector<unsigned char, uninitialized_allocator<unsigned char>>;
 
 inline void append_u64(std::vector<unsigned char>& out, std::uint64_t v) {
   unsigned char b[sizeof v];
@@ -124,7 +148,7 @@ class libdeflate_block_deflater {
 // each block compressed by a Deflater (one per thread) at `level`.
 template <class Deflater>
 void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int level, std::string_view name,
-                              std::vector<unsigned char>& header, std::vector<unsigned char>& body) {
+                              std::vector<unsigned char>& header, byte_buffer& body) {
   const std::size_t blocks = (size + vtu_block_size - 1) / vtu_block_size;
   std::vector<std::uint64_t> compressed(blocks, 0);
   int threads = 1;
@@ -133,7 +157,7 @@ void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int 
   threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(omp_get_max_threads()),
                                                    std::max<std::size_t>(1, blocks / 8)));
 #endif
-  std::vector<std::vector<unsigned char>> part(static_cast<std::size_t>(threads));
+  std::vector<byte_buffer> part(static_cast<std::size_t>(threads));
   std::size_t failed = blocks;  // the first block any thread failed to compress
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
@@ -145,7 +169,7 @@ void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int 
     // This thread's blocks: first .. last-1, contiguous, in thread order.
     const std::size_t first = blocks * static_cast<std::size_t>(t) / static_cast<std::size_t>(team);
     const std::size_t last = blocks * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(team);
-    std::vector<unsigned char>& out = part[static_cast<std::size_t>(t)];
+    byte_buffer& out = part[static_cast<std::size_t>(t)];
     std::optional<Deflater> deflater;
     if (first < last) deflater.emplace(level);
     std::size_t at = 0, bad = blocks;
@@ -183,8 +207,7 @@ void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int 
 
 // The same with the library `deflater` names, which the caller has checked is compiled in.
 inline void compress_vtu_blocks(const unsigned char* bytes, std::size_t size, int level, vtu_deflater deflater,
-                                std::string_view name, std::vector<unsigned char>& header,
-                                std::vector<unsigned char>& body) {
+                                std::string_view name, std::vector<unsigned char>& header, byte_buffer& body) {
 #ifdef RKPM_WITH_LIBDEFLATE
   if (deflater == vtu_deflater::libdeflate)
     return compress_vtu_blocks_with<libdeflate_block_deflater>(bytes, size, level, name, header, body);
