@@ -1,9 +1,13 @@
 // rkpm_bench_vtu: the time to write one VTU snapshot (io/vtk.hpp) of about 10^6 particles, as
-// the runner writes them (appended raw, zlib, the background cells as quads), per OpenMP thread
-// count and zlib level (tools/rkpm bench --vtu [Google Benchmark options]).
-//   BM_write_vtu/T/L   write_vtu on T threads at zlib level L, to a file in the temporary
-//                      directory (the page cache: the disk is not timed); counters: file MB,
-//                      particles
+// the runner writes them (appended raw, zlib format, the background cells as quads), per OpenMP
+// thread count, library and level (tools/rkpm bench --vtu [Google Benchmark options]).
+//   BM_write_vtu/threads:T/libdeflate:D/level:L
+//                      write_vtu on T threads, the zlib streams by libdeflate (D = 1) or zlib
+//                      (D = 0) at level L, to a file in the temporary directory (the page cache:
+//                      the disk is not timed); counters: file MB, particles. A library this
+//                      build lacks is skipped with a message.
+//   BM_write_vtu_uncompressed/threads:T
+//                      the same without compression: what is not compression
 // The fields are smooth functions of position with full-precision mantissas, as a solver's are
 // (displacement, velocity, a plane stress tensor with zero out-of-plane shear, a plastic strain
 // that is zero over half the body, det F), so that zlib sees data like a run's.
@@ -59,9 +63,16 @@ const snapshot& bench_snapshot(int side) {
 
 void BM_write_vtu(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
-  const auto& s = bench_snapshot(1000);
   rkpm::io::vtu_format format;
-  format.zlib_level = static_cast<int>(state.range(1));
+  format.deflater = state.range(1) ? rkpm::io::vtu_deflater::libdeflate : rkpm::io::vtu_deflater::zlib;
+  format.zlib_level = static_cast<int>(state.range(2));
+  if (!rkpm::io::vtu_deflater_available(format.deflater)) {
+    state.SkipWithError("this build lacks the library (libdeflate-dev or zlib1g-dev)");
+    for (auto _ : state) {
+    }
+    return;
+  }
+  const auto& s = bench_snapshot(1000);
   const auto path = std::filesystem::temp_directory_path() / "rkpm_bench_snapshot.vtu";
   omp_set_num_threads(threads);
   for (auto _ : state) rkpm::io::write_vtu(path, s.points, s.cells, s.data, format);
@@ -70,12 +81,31 @@ void BM_write_vtu(benchmark::State& state) {
   std::filesystem::remove(path);
 }
 
+void BM_write_vtu_uncompressed(benchmark::State& state) {
+  const auto& s = bench_snapshot(1000);
+  const rkpm::io::vtu_format format(rkpm::io::vtu_encoding::appended, rkpm::io::vtu_compression::none);
+  const auto path = std::filesystem::temp_directory_path() / "rkpm_bench_snapshot.vtu";
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  for (auto _ : state) rkpm::io::write_vtu(path, s.points, s.cells, s.data, format);
+  state.counters["file_MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 
-// Thread count x zlib level: 1 (the runner's) and 6 (zlib's default).
+// Thread count x library (zlib, libdeflate: the runner's when compiled in) x level: 1 (the
+// runner's) and 6 (zlib's default). Google Benchmark varies the first argument fastest: 1 and 2
+// threads follow each other, then the other library, so the ratios compare runs seconds apart.
 BENCHMARK(BM_write_vtu)
-    ->ArgsProduct({{1, 2}, {1, 6}})
-    ->ArgNames({"threads", "level"})
+    ->ArgsProduct({{1, 2}, {0, 1}, {1, 6}})
+    ->ArgNames({"threads", "libdeflate", "level"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_write_vtu_uncompressed)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);

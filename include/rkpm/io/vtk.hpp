@@ -14,10 +14,11 @@
 //   binary              base64 inside each DataArray (plain-text XML, a third larger)
 //   ascii               shortest round-trip decimal text
 // Binary data is zlib-compressed (compressor="vtkZLibDataCompressor", blocks of 32 KiB compressed
-// in parallel by the OpenMP threads, the same bytes whatever their number: io/vtu_zlib.hpp) when
-// the header is compiled with RKPM_WITH_ZLIB and linked with zlib, which the rkpm CMake target
-// does when find_package(ZLIB) finds it; without it the writer is the same minus compression,
-// and asking for vtu_compression::zlib is an error saying so.
+// in parallel by the OpenMP threads, the same bytes whatever their number: io/vtu_zlib.hpp) by
+// libdeflate when the header is compiled with RKPM_WITH_LIBDEFLATE and linked with libdeflate,
+// else by zlib (RKPM_WITH_ZLIB, linked with zlib); the rkpm CMake target does either when it
+// finds the library (libdeflate-dev, zlib1g-dev). Without both the writer is the same minus
+// compression, and asking for vtu_compression::zlib is an error saying so.
 
 #include <algorithm>
 #include <bit>
@@ -128,9 +129,10 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
   std::string out;
   detail::vtu_arrays arrays(out, format);
   if (arrays.format().compression == vtu_compression::zlib) {
-    if (!vtu_zlib_available)
-      fail("write_vtu '{}': zlib compression asked for, but rkpm was compiled without zlib; install "
-           "zlib (Debian zlib1g-dev) and reconfigure, or use vtu_compression::none", path.string());
+    if (!vtu_deflater_available(format.deflater))
+      fail("write_vtu '{}': zlib compression by {} asked for, but rkpm was compiled without it; install "
+           "libdeflate-dev or zlib1g-dev and reconfigure, or use vtu_compression::none", path.string(),
+           format.deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
     if (format.zlib_level < 1 || format.zlib_level > 9)
       fail("write_vtu '{}': zlib level {} must be 1 to 9", path.string(), format.zlib_level);
   }

@@ -4,8 +4,8 @@
 // XML and collects the raw appended block, handed to the file as pieces (the arrays' bytes are
 // not copied into one string). Arrays as VTK's own vtkXMLWriter writes them (header_type
 // UInt64, native byte order); zlib compression (compressor="vtkZLibDataCompressor", blocks of
-// 32 KiB compressed in parallel: io/vtu_zlib.hpp) when compiled with RKPM_WITH_ZLIB and linked
-// with zlib.
+// 32 KiB compressed in parallel: io/vtu_zlib.hpp) when compiled with RKPM_WITH_LIBDEFLATE and
+// linked with libdeflate, or with RKPM_WITH_ZLIB and linked with zlib.
 
 #include <algorithm>
 #include <bit>
@@ -28,12 +28,7 @@ namespace rkpm::io {
 enum class vtu_encoding { appended, binary, ascii };
 enum class vtu_compression { none, zlib };
 
-// True if this translation unit can compress (compiled with RKPM_WITH_ZLIB, linked with zlib).
-#ifdef RKPM_WITH_ZLIB
-inline constexpr bool vtu_zlib_available = true;
-#else
-inline constexpr bool vtu_zlib_available = false;
-#endif
+// zlib when this translation unit can write it (io/vtu_zlib.hpp: libdeflate or zlib).
 inline constexpr vtu_compression default_vtu_compression =
     vtu_zlib_available ? vtu_compression::zlib : vtu_compression::none;
 
@@ -43,10 +38,11 @@ struct vtu_format {
   vtu_encoding encoding = vtu_encoding::appended;
   vtu_compression compression = default_vtu_compression;
   // 1 (fastest) .. 9 (smallest). 1, not zlib's default 6: a solver's doubles have
-  // full-precision mantissas that no level finds matches in, so level 6 spends twice the time
-  // for files 1% smaller (a snapshot of 10^6 particles: 85.4 MB at 6, 86.2 MB at 1, of 201 MB;
-  // tools/bench/vtu.cpp).
+  // full-precision mantissas that no level finds matches in, so a higher level only spends time
+  // (a snapshot of 10^6 particles, 201 MB of arrays: zlib 86.2 MB at 1, 85.4 MB at 6 in twice
+  // the time; libdeflate 85.4 MB at 1, 85.6 MB at 6 in 2.3 times the time; tools/bench/vtu.cpp).
   int zlib_level = 1;
+  vtu_deflater deflater = default_vtu_deflater;  // who writes the streams at that level
 
   vtu_format() = default;
   vtu_format(vtu_encoding e, vtu_compression c = default_vtu_compression) : encoding(e), compression(c) {}  // NOLINT
@@ -94,7 +90,7 @@ inline void append_base64(std::string& out, const unsigned char* bytes, std::siz
 // io/vtu_zlib.hpp then the zlib streams of the 32 KiB blocks.
 struct binary_block {
   std::vector<unsigned char> header;
-  std::vector<unsigned char> compressed;  // the zlib blocks, when compressed
+  byte_buffer compressed;                 // the zlib blocks, when compressed
   std::span<const unsigned char> raw;     // the values, when not
   bool is_compressed = false;
 
@@ -110,15 +106,14 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
     block.raw = std::span<const unsigned char>(bytes, size);
     return block;
   }
-#ifdef RKPM_WITH_ZLIB
+  if (!vtu_deflater_available(format.deflater))
+    fail("write_vtu: array \"{}\": zlib compression by {} asked for, but rkpm was compiled without it; "
+         "install libdeflate-dev or zlib1g-dev and reconfigure (or compile with -DRKPM_WITH_LIBDEFLATE "
+         "and link -ldeflate, -DRKPM_WITH_ZLIB and -lz), or use vtu_compression::none", name,
+         format.deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
   block.is_compressed = true;
-  compress_vtu_blocks(bytes, size, format.zlib_level, name, block.header, block.compressed);
+  compress_vtu_blocks(bytes, size, format.zlib_level, format.deflater, name, block.header, block.compressed);
   return block;
-#else
-  fail("write_vtu: array \"{}\": zlib compression asked for, but rkpm was compiled without zlib; "
-       "install zlib (Debian zlib1g-dev), compile with -DRKPM_WITH_ZLIB and link -lz, or use "
-       "vtu_compression::none", name);
-#endif
 }
 
 // Writes the XML of the DataArrays and collects the appended block: one object per file.

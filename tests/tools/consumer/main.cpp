@@ -1,15 +1,22 @@
 // Consumer of an installed rkpm: builds RK shape functions (cubic kernel, linear correction)
 // on a small grid and checks what linear reproduction guarantees at every point,
 //   sum_I N_I = 1,  sum_I grad N_I = 0,  sum_I N_I X_I = x,  sum_I grad N_I (x) X_I = I.
+// Then writes the particles as a compressed VTU snapshot, which needs the compression library
+// the installed package links (libdeflate or zlib, re-found by rkpmConfig.cmake).
 // Exit status 0 only if every check holds, so the packaging test fails on a wrong install
 // as well as on wrong numbers.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/discretization/shape_table.hpp>
+#include <rkpm/io/vtk.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 
 int main() {
@@ -47,6 +54,21 @@ int main() {
                 table.points(), table.entries(), worst);
     if (table.points() != static_cast<rkpm::index_t>(points.size()) || !(worst < 1e-10)) {
       std::printf("rkpm consumer: FAILED (tolerance 1e-10)\n");
+      return 1;
+    }
+    const auto vtu = std::filesystem::temp_directory_path() / "rkpm_consumer_snapshot.vtu";
+    rkpm::io::point_data data;
+    data.add("volume", particles.volume);
+    rkpm::io::write_vtu(vtu, particles.position, data);
+    std::ifstream in(vtu, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(vtu);
+    const bool compressed = text.find("compressor=\"vtkZLibDataCompressor\"") != std::string::npos;
+    std::printf("rkpm consumer: VTU snapshot of %zu bytes, %s\n", text.size(),
+                compressed ? (rkpm::io::vtu_libdeflate_available ? "compressed by libdeflate" : "compressed by zlib")
+                           : "not compressed");
+    if (compressed != rkpm::io::vtu_zlib_available) {
+      std::printf("rkpm consumer: FAILED (the snapshot's compression)\n");
       return 1;
     }
     return 0;

@@ -4,10 +4,13 @@
 // base64, ascii), with and without zlib, and for a .pvd series; the background cells as quads
 // (connectivity from the grid's formula, counter-clockwise: positive areas, tiling the grid),
 // the rest as vertices, the tools in <FieldData>; check_vtu.py also walks the appended block's
-// headers and zlib blocks itself, each block the bytes of a serial zlib.compress.
+// headers and zlib blocks itself (each block one whole zlib stream of its declared sizes, by
+// libdeflate or zlib), and fails on a header that lies.
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -53,6 +56,15 @@ void check_with_meshio(const std::string& args) {
   CHECK(rc == 0);
 }
 
+// Runs check_vtu.py on a file it must refuse, with a message containing `why`.
+void check_vtu_refuses(const std::string& args, const std::string& why) {
+  const auto script = fs::path(__FILE__).parent_path() / "check_vtu.py";
+  const auto [rc, out] = run_capture(python.string() + " '" + script.string() + "' " + args);
+  INFO("check_vtu.py " << args << "\n" << out);
+  CHECK(rc == 1);
+  CHECK(out.find(why) != std::string::npos);
+}
+
 // The same closed formulas as expected() in check_vtu.py.
 struct snapshot {
   std::vector<vec2> points;
@@ -84,6 +96,7 @@ fs::path vtk_scratch() {
 }  // namespace
 
 using rkpm::io::vtu_compression;
+using rkpm::io::vtu_deflater;
 using rkpm::io::vtu_encoding;
 using rkpm::io::vtu_format;
 
@@ -91,11 +104,23 @@ const char* name(vtu_encoding e) {
   return e == vtu_encoding::appended ? "appended" : e == vtu_encoding::binary ? "binary" : "ascii";
 }
 const char* name(vtu_compression c) { return c == vtu_compression::zlib ? "zlib" : "none"; }
+const char* name(vtu_deflater d) { return d == vtu_deflater::zlib ? "zlib" : "libdeflate"; }
 
-TEST_CASE("vtu: this build compresses (zlib1g-dev is a listed package)") {
-  // The runner's snapshots rely on it; a build that lost zlib should say so here.
+// The libraries this build writes zlib streams with: libdeflate (the default) first.
+std::vector<vtu_deflater> deflaters() {
+  std::vector<vtu_deflater> out;
+  for (auto d : {vtu_deflater::libdeflate, vtu_deflater::zlib})
+    if (rkpm::io::vtu_deflater_available(d)) out.push_back(d);
+  return out;
+}
+
+TEST_CASE("vtu: this build compresses, with libdeflate (libdeflate-dev and zlib1g-dev are listed packages)") {
+  // The runner's snapshots rely on it; a build that lost either library should say so here.
   CHECK(rkpm::io::vtu_zlib_available);
+  CHECK(rkpm::io::vtu_libdeflate_available);
+  CHECK(rkpm::io::vtu_zlib_library_available);
   CHECK(rkpm::io::default_vtu_compression == vtu_compression::zlib);
+  CHECK(vtu_format{}.deflater == vtu_deflater::libdeflate);
   CHECK(vtu_format{}.encoding == vtu_encoding::appended);
 }
 
@@ -105,19 +130,22 @@ TEST_CASE("vtu: meshio reads points, vertex cells and scalar/vector/tensor array
   if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
   for (auto encoding : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii}) {
     for (auto compression : compressions) {
-      // 1, 2, 3, 37: every base64 padding case; 4100: a tensor array of 295,200 bytes is ten
-      // 32 KiB zlib blocks and a partial one.
-      for (int n : {1, 2, 3, 37, 4100}) {
-        CAPTURE(name(encoding));
-        CAPTURE(name(compression));
-        CAPTURE(n);
-        const auto s = make(n);
-        const auto path = dir / "one" / fmt::format("snap_{}_{}_{}.vtu", name(encoding), name(compression), n);
-        rkpm::io::write_vtu(path, s.points, s.data, vtu_format(encoding, compression));
-        // Compressed appended blocks: also each the bytes of zlib.compress(block, 1), the default level.
-        const bool blocks = encoding == vtu_encoding::appended && compression == vtu_compression::zlib;
-        check_with_meshio(fmt::format("vtu '{}' {} {} {}{}", path.string(), n, name(encoding), name(compression),
-                                      blocks ? " 1" : ""));
+      for (auto deflater : compression == vtu_compression::zlib ? deflaters() : std::vector{vtu_deflater::zlib}) {
+        // 1, 2, 3, 37: every base64 padding case; 4100: a tensor array of 295,200 bytes is ten
+        // 32 KiB zlib blocks and a partial one.
+        for (int n : {1, 2, 3, 37, 4100}) {
+          CAPTURE(name(encoding));
+          CAPTURE(name(compression));
+          CAPTURE(name(deflater));
+          CAPTURE(n);
+          const auto s = make(n);
+          const auto path = dir / "one" / fmt::format("snap_{}_{}_{}_{}.vtu", name(encoding), name(compression),
+                                                      name(deflater), n);
+          vtu_format format(encoding, compression);
+          format.deflater = deflater;
+          rkpm::io::write_vtu(path, s.points, s.data, format);
+          check_with_meshio(fmt::format("vtu '{}' {} {} {}", path.string(), n, name(encoding), name(compression)));
+        }
       }
     }
   }
@@ -159,7 +187,7 @@ TEST_CASE("vtu: the background cells as counter-clockwise VTK quads on the parti
     format.zlib_level = level;
     const auto path = dir / fmt::format("grid_{}_{}_{}.vtu", nx, ny, extra);
     rkpm::io::write_vtu(path, points, cells, data, format, tools);
-    check_with_meshio(fmt::format("cells '{}' {} {} {} {}", path.string(), nx, ny, extra, level));
+    check_with_meshio(fmt::format("cells '{}' {} {} {}", path.string(), nx, ny, extra));
   }
   // A cell on a point that does not exist is refused before anything is written.
   auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(1.0, 1.0), Eigen::Vector2i(3, 3));
@@ -174,23 +202,62 @@ TEST_CASE("vtu: the background cells as counter-clockwise VTK quads on the parti
 TEST_CASE("vtu: the zlib blocks are compressed in parallel, the file the same bytes on 1 and 2 threads") {
   const auto dir = vtk_scratch() / "threads";
   const auto s = make(20000);  // the tensor array: 1.44 MB, 44 blocks
-  std::string bytes[2];
-  for (int threads : {1, 2}) {
+  for (auto deflater : deflaters()) {
+    CAPTURE(name(deflater));
+    vtu_format format;
+    format.deflater = deflater;
+    std::string bytes[2];
+    for (int threads : {1, 2}) {
 #ifdef _OPENMP
-    omp_set_num_threads(threads);
+      omp_set_num_threads(threads);
 #endif
-    const auto path = dir / fmt::format("t{}.vtu", threads);
-    rkpm::io::write_vtu(path, s.points, s.data);
-    std::ifstream in(path, std::ios::binary);
-    bytes[threads - 1].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      const auto path = dir / fmt::format("{}_t{}.vtu", name(deflater), threads);
+      rkpm::io::write_vtu(path, s.points, s.data, format);
+      std::ifstream in(path, std::ios::binary);
+      bytes[threads - 1].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(omp_get_num_procs());
+#endif
+    CHECK(bytes[0].size() > 100000);
+    CHECK(bytes[0] == bytes[1]);
+    check_with_meshio(fmt::format("vtu '{}' 20000 appended zlib", (dir / fmt::format("{}_t2.vtu", name(deflater))).string()));
   }
-#ifdef _OPENMP
-  omp_set_num_threads(omp_get_num_procs());
-#endif
-  CHECK(bytes[0].size() > 100000);
-  CHECK(bytes[0] == bytes[1]);
-  // Each block as a serial zlib.compress(block, 1) gives it (check_vtu.py).
-  check_with_meshio(fmt::format("vtu '{}' 20000 appended zlib 1", (dir / "t2.vtu").string()));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vtu: check_vtu.py refuses a compression header that lies about its blocks") {
+  // The check that the blocks are right must be able to fail: the header of the array at offset 0
+  // of the appended block ([#blocks, block size, last block, compressed sizes]) altered one entry
+  // at a time, the zlib streams left as they are.
+  const auto dir = vtk_scratch() / "lies";
+  const auto s = make(20000);
+  const auto good = dir / "good.vtu";
+  rkpm::io::write_vtu(good, s.points, s.data);
+  check_with_meshio(fmt::format("vtu '{}' 20000 appended zlib", good.string()));
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string mark = "<AppendedData encoding=\"raw\">\n   _";
+  const auto at = bytes.find(mark);
+  REQUIRE(at != std::string::npos);
+  const std::size_t header = at + mark.size();
+  auto lie = [&](const char* file, int entry, std::int64_t change, const std::string& why) {
+    std::string bad = bytes;
+    std::uint64_t v;
+    std::memcpy(&v, bad.data() + header + 8 * entry, 8);
+    v += static_cast<std::uint64_t>(change);
+    std::memcpy(bad.data() + header + 8 * entry, &v, 8);
+    const auto path = dir / file;
+    std::ofstream(path, std::ios::binary) << bad;
+    check_vtu_refuses(fmt::format("vtu '{}' 20000 appended zlib", path.string()), why);
+  };
+  lie("block_size.vtu", 1, -16384, "block size 16384");
+  lie("last_block.vtu", 2, 1, "last block");
+  lie("short_stream.vtu", 3, -1, "does not end in its");
+  lie("long_stream.vtu", 3, 1, "ends 1 bytes before");
   fs::remove_all(dir);
 }
 
