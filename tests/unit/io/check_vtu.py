@@ -234,7 +234,14 @@ def check_pvd(path, expect):
 
 def main():
     kind, path = sys.argv[1], sys.argv[2]
-    if kind == "vtu":
+    if kind == "vtus":  # many files in one start of Python: PATH N ENCODING COMPRESSION, repeated
+        args = sys.argv[2:]
+        for k in range(0, len(args), 4):
+            path, n, encoding, compression = args[k:k + 4]
+            print("checking", path, n, encoding, compression)
+            check_format(path, vertex_sizes(int(n)), encoding, compression)
+            check_vtu(path, int(n))
+    elif kind == "vtu":
         if len(sys.argv) > 4:
             check_format(path, vertex_sizes(int(sys.argv[3])), sys.argv[4], sys.argv[5])
         check_vtu(path, int(sys.argv[3]))
