@@ -114,13 +114,14 @@ py::object state_namespace(const runner::particle_state& s, bool read_only) {
   return py::module_::import("types").attr("SimpleNamespace")(**fields);
 }
 
-// Restores what a run changed in the process: the thread count and the signal handlers.
+// For one run: Ctrl-C and SIGTERM stop it between two steps (the runner's own handler,
+// interrupt.hpp); restored after it with the thread count.
 struct process_settings {
 #ifdef _OPENMP
   int threads = omp_get_max_threads();
 #endif
-  void (*sigint)(int) = std::signal(SIGINT, SIG_DFL);
-  void (*sigterm)(int) = std::signal(SIGTERM, SIG_DFL);
+  void (*sigint)(int) = std::signal(SIGINT, runner::record_interrupt);
+  void (*sigterm)(int) = std::signal(SIGTERM, runner::record_interrupt);
   ~process_settings() {
 #ifdef _OPENMP
     omp_set_num_threads(threads);
@@ -190,7 +191,6 @@ py::object run(const py::object& case_, const py::dict& set, std::optional<int> 
 #ifdef _OPENMP
     if (threads && *threads > 0) omp_set_num_threads(*threads);
 #endif
-    runner::stop_between_steps_on_interrupt();  // Ctrl-C stops after the step under way
     py::gil_scoped_release no_gil;
     try {
       outcome = r.case_file.empty() ? runner::run_named_case(r) : runner::run_case_file(r);
