@@ -10,12 +10,23 @@
 
 #include <fmt/format.h>
 
+#include <rkpm/contact/particle_to_segment.hpp>
+#include <rkpm/solver/config.hpp>
+
 #include "support/error_message.hpp"
+#include "tools/runner/case_file/case_material.hpp"
 #include "tools/runner/case_file/load_case_file.hpp"
 
 namespace rkpm::test {
 
 using case_json = runner::json;
+
+// The plane-strain configuration the case-file tests run files with: the paper's method, the
+// case files' material, effective-mass contact with Coulomb friction.
+using plane_file_contact =
+    contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>;
+using plane_file_config = config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
+                                 runner::case_file::material_type, plane_file_contact>;
 
 // cases/NAME.json of this repository (found from this header's own path).
 inline std::filesystem::path paper_case_file(const std::string& name) {

@@ -30,9 +30,8 @@ using test::reports;
 
 namespace {
 
-using contact_t = contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>;
-using file_config = config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
-                           runner::case_file::material_type, contact_t>;
+using contact_t = test::plane_file_contact;
+using file_config = test::plane_file_config;
 
 constexpr double V = 1.0, L = 10e-3, H = 1.5e-3;
 constexpr double E_be = 287e9, rho_be = 1850.0, E_st = 200e9, rho_st = 7800.0;

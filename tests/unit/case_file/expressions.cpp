@@ -40,9 +40,8 @@ using test::reports;
 
 namespace {
 
-using contact_t = contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>;
-using file_config = config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
-                           runner::case_file::material_type, contact_t>;
+using contact_t = test::plane_file_contact;
+using file_config = test::plane_file_config;
 
 std::size_t lines(const std::string& message) {
   return message.empty() ? 0 : 1 + std::count(message.begin(), message.end(), '\n');
