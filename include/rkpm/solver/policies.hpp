@@ -10,6 +10,7 @@
 #include <array>
 #include <boost/hana.hpp>
 #include <cstddef>
+#include <type_traits>
 
 #include <rkpm/core/pairwise_covering.hpp>
 #include <rkpm/contact/enforcement.hpp>
@@ -68,8 +69,14 @@ inline constexpr auto to_config = [](auto types) {
   return hana::unpack(types, [](auto... t) { return hana::type_c<config<typename decltype(t)::type...>>; });
 };
 
-// Every combination (288 types; instantiating them all is what the covering set avoids).
-inline constexpr auto all_configs = [] { return hana::transform(hana::cartesian_product(families), to_config); };
+// Every combination (288 types; instantiating them all is what the covering set avoids). A
+// template whose product depends on its parameter, so that only a file calling it pays for the
+// product (a lambda, or a template over `families` itself, is instantiated in every file that
+// includes this header: about 3 s of each compile).
+template <class Families = std::remove_const_t<decltype(families)>>
+constexpr auto all_configs() {
+  return hana::transform(hana::cartesian_product(Families{}), to_config);
+}
 
 // Rows of policy indices (one per family, config order) covering every cross-family pair,
 // generated at compile time from the family sizes (core/pairwise_covering.hpp): a policy added
