@@ -1,4 +1,5 @@
-// The run of the block_forging case, compiled on its own so the cases build in parallel.
+// The run of the block_forging case: its solver instantiated once (grouped with the other plane-strain
+// units at build time, CMakeLists.txt).
 #include "cases/block_forging.hpp"
 #include "dispatch.hpp"
 

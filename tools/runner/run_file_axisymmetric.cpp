@@ -1,5 +1,5 @@
-// The case files in axisymmetric geometry (file_case_dispatch.hpp), compiled on their own so that the
-// two geometries build in parallel.
+// The case files in axisymmetric geometry (file_case_dispatch.hpp): their solver instantiated once
+// (grouped with the case-file reader at build time, CMakeLists.txt).
 #include "file_case_dispatch.hpp"
 
 namespace rkpm::runner {

@@ -1,5 +1,5 @@
-// The case files in plane_strain geometry (file_case_dispatch.hpp), compiled on their own so that the
-// two geometries build in parallel.
+// The case files in plane_strain geometry (file_case_dispatch.hpp): their solver instantiated once
+// (grouped with the other plane-strain units at build time, CMakeLists.txt).
 #include "file_case_dispatch.hpp"
 
 namespace rkpm::runner {

@@ -1,6 +1,6 @@
-// The runs of the taylor_bar and rod_on_rod cases, compiled on their own so the cases build in
-// parallel; the two share this file because they share their solver type (axisymmetric, J2
-// with linear hardening, the runner's contact), which the compiler then instantiates once.
+// The runs of the taylor_bar and rod_on_rod cases (grouped with the other axisymmetric units at
+// build time, CMakeLists.txt); the two share this file because they share their solver type
+// (axisymmetric, J2 with linear hardening, the runner's contact), which is then instantiated once.
 #include "cases/rod_on_rod.hpp"
 #include "cases/taylor_bar.hpp"
 #include "dispatch.hpp"

@@ -1,4 +1,5 @@
-// The run of the wheel_forging case, compiled on its own so the cases build in parallel.
+// The run of the wheel_forging case: its solver instantiated once (grouped with the other axisymmetric
+// units at build time, CMakeLists.txt).
 #include "cases/wheel_forging.hpp"
 #include "dispatch.hpp"
 

@@ -3,7 +3,7 @@
 // instead of once per file (as discretization/shape_table_instances.hpp does for the shape
 // tables). The solver's set-up and step are most of a test file's compile time, and about half
 // of the tests' solver types are used by two to eight files. A program that wants them once:
-//   - compiles the files that define RKPM_INSTANTIATE_SOLVERS to a part number (1 to 4) and
+//   - compiles the files that define RKPM_INSTANTIATE_SOLVERS to a part number (1 or 2) and
 //     include this header (the explicit instantiation definitions of that part), e.g. the
 //     project's tests/solver_instances_<part>.cpp;
 //   - defines RKPM_EXTERN_SOLVERS in every other file (then explicit_solver.hpp includes this
@@ -45,24 +45,21 @@ using penalty_coulomb = contact::particle_to_segment<e::penalty, f::coulomb>;
 }  // namespace rkpm::solver_instances
 
 namespace rkpm {
-// In four parts of about equal compile time, built side by side.
+// In two parts of about equal compile time, built side by side (each file compiled costs
+// seconds of its own before its instantiations: more parts would not pay on two cores).
 #if RKPM_SOLVER_PART(1)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::none)
 RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::elastic, solver_instances::none)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::j2_linear, solver_instances::none)
 RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::none)
-#endif
-#if RKPM_SOLVER_PART(2)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::effective_frictionless)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::effective_coulomb)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::paper_frictionless)
 #endif
-#if RKPM_SOLVER_PART(3)
+#if RKPM_SOLVER_PART(2)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::elastic, solver_instances::paper_coulomb)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::j2_linear, solver_instances::paper_coulomb)
 RKPM_SOLVER_INSTANCE(solver_instances::plane, solver_instances::j2_linear, solver_instances::penalty_coulomb)
-#endif
-#if RKPM_SOLVER_PART(4)
 RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::paper_coulomb)
 RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::effective_coulomb)
 RKPM_SOLVER_INSTANCE(solver_instances::axi, solver_instances::j2_linear, solver_instances::penalty_coulomb)
