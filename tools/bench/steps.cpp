@@ -3,6 +3,9 @@
 //   BM_step_resolution/r          q2, resolution 1, 2, 3 (21x51, 41x101, 61x151 particles)
 //   BM_step_rolling<Q>/threads    the contact-free twin at the same moment of the impact
 //   BM_contact_enforce<Q>/threads contact().enforce alone, on copies of the predicted state
+//   BM_step_material/m            q2, one thread: m = 0 J2 with linear hardening (the case's),
+//                                 m = 1 Johnson-Cook with the same curve at the reference rate
+//                                 and copper's rate and heating terms; the ratio prices its update
 // Every benchmark builds a fresh solver and advances it by warm_up_steps() before timing, and
 // runs a fixed number of iterations, so each repetition times the same window of the impact.
 // Wall-clock time (the work is spread over OpenMP threads).
@@ -63,6 +66,25 @@ void BM_step_rolling(benchmark::State& state) {
   state.SetLabel(std::string(Q::name) + " no contact, u_z = 0 on the face");
 }
 
+// One step with each material, on the same bar at the same moment of the impact (each twice,
+// alternating, so that a burst of the host's load shows as two disagreeing runs).
+void BM_step_material(benchmark::State& state) {
+  omp_set_num_threads(1);
+  if (state.range(0) == 0) {
+    auto s = make_wall_solver<quadrature::q2>(1);
+    warm_up(s, 1);
+    for (auto _ : state) s.step();
+    set_counters(state, s);
+    state.SetLabel("j2+linear");
+  } else {
+    auto s = make_johnson_cook_solver<quadrature::q2>(1);
+    warm_up(s, 1);
+    for (auto _ : state) s.step();
+    set_counters(state, s);
+    state.SetLabel("johnson_cook");
+  }
+}
+
 // enforce() corrects d and v in place, so every call gets fresh copies of the state it would
 // see inside step(): v(n+1/2) = v(n) + dt/2 a(n), d(n+1) = d(n) + dt v(n+1/2), with
 // a(n) = -f_int(n) / m (no body force). Only the enforce call is timed (manual time).
@@ -100,6 +122,7 @@ constexpr int step_iterations = 300;
 BENCHMARK(BM_step<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step<quadrature::q9>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step_material)->Arg(0)->Arg(1)->Arg(0)->Arg(1)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step_resolution)->Arg(1)->Arg(2)->Arg(3)->Iterations(100)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step_rolling<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step_rolling<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);

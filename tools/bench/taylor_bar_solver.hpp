@@ -11,6 +11,7 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
+#include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
@@ -58,6 +59,33 @@ solver_for<rolling_method<Q>> make_rolling_solver(int resolution) {
   for (index_t I = 0; I < q.particles.size(); ++I)
     if (q.particles.position[I][1] <= 1e-12) q.constraints.push_back({I, 1, {}});
   return make_solver<rolling_method<Q>>(std::move(q), bench_options());
+}
+
+// The same bar with Johnson-Cook plasticity whose curve at the reference rate and room
+// temperature is the case's J2 curve (A = yield stress, B = hardening modulus, n = 1), with
+// OFHC copper's rate and thermal terms (C = 0.025, m = 1.09, T_melt = 1356 K, c_p = 383
+// J/(kg K); G. R. Johnson, W. H. Cook, 7th Int. Symp. on Ballistics, 1983, Table 1), so that
+// a step of each prices the material update on about the same plastic zone.
+template <class Q>
+using johnson_cook_method = typename wall_method<Q>::template with_material<material::johnson_cook>;
+
+template <class Q>
+solver_for<johnson_cook_method<Q>> make_johnson_cook_solver(int resolution) {
+  const bar::parameters b{};
+  auto p = bar::build<wall_contact>(b, resolution);
+  problem<material::johnson_cook, wall_contact> q{
+      .particles = std::move(p.particles),
+      .mesh = std::move(p.mesh),
+      .material = material::johnson_cook(
+          p.material.constants(),
+          material::hardening::johnson_cook{.A = b.yield_stress_Pa, .B = b.hardening_modulus_Pa, .n = 1.0,
+                                            .C = 0.025, .reference_rate = 1.0, .m = 1.09,
+                                            .room_temperature = 294.0, .melt_temperature = 1356.0},
+          material::johnson_cook_heating{.specific_heat = 383.0}),
+      .contact = std::move(p.contact),
+      .initial_velocity = std::move(p.initial_velocity),
+  };
+  return make_solver<johnson_cook_method<Q>>(std::move(q), bench_options());
 }
 
 // Steps taken before timing, 200 per unit of resolution (the step shrinks with the spacing), so
