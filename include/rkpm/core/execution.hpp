@@ -14,8 +14,9 @@
 //   exchange(point, ownership, fields)   where values cross processes; nothing on one process
 // An MPI backend plugs in here: exchange() sends owned values to the processes that hold them
 // as ghosts and sums ghosts' scattered forces back into their owners, and the totals of
-// block_sums, max_over and min_over are combined over the processes (in rank order, so that
-// the totals do not depend on the message timing).
+// block_sums, max_over and min_over are combined over the processes in a fixed order, so that
+// the totals do not depend on the partition or the message timing (include/rkpm/parallel,
+// docs/method.md section 9.8).
 
 #include <algorithm>
 #include <limits>

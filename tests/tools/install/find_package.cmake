@@ -27,19 +27,20 @@ endfunction()
 step("install rkpm into ${prefix}"
      ${CMAKE_COMMAND} --install ${RKPM_BUILD_DIR} --prefix ${prefix} --component rkpm)
 
-# The library's target carries only what its headers need: no compiled Boost library nor libgmsh
-# (those come with the optional components gnuplot and gmsh, defined by rkpmConfig.cmake).
+# The library's target carries only what its headers need: no compiled Boost library, libgmsh,
+# MPI nor METIS (those come with the optional components gnuplot, gmsh and mpi, defined by
+# rkpmConfig.cmake).
 file(GLOB_RECURSE rkpm_targets_files ${prefix}/*/rkpmTargets.cmake)
 if(NOT rkpm_targets_files)
   message(FATAL_ERROR "find_package test: no rkpmTargets.cmake under ${prefix}")
 endif()
 foreach(f ${rkpm_targets_files})
   file(READ ${f} rkpm_targets_text)
-  foreach(lib Boost::iostreams Boost::system Boost::filesystem libgmsh)
+  foreach(lib Boost::iostreams Boost::system Boost::filesystem libgmsh MPI:: libmetis)
     string(FIND "${rkpm_targets_text}" "${lib}" at)
     if(NOT at EQUAL -1)
       message(FATAL_ERROR "find_package test: the installed rkpm::rkpm links ${lib} (${f}); "
-                          "only rkpm::gnuplot and rkpm::gmsh may")
+                          "only rkpm::gnuplot, rkpm::gmsh and rkpm::mpi may")
     endif()
   endforeach()
 endforeach()

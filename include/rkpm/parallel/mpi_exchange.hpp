@@ -1,0 +1,247 @@
+#pragma once
+// What moves between processes in a step (docs/method.md section 9.8), over the fixed lists of
+// the plans (parallel/halo.hpp, parallel/global_blocks.hpp):
+//   halo_exchange::forward(fields...)   owned values -> the ranks that hold them as ghosts
+//   global_block_sums<K>                per-particle terms summed to the totals one process's
+//                                       block_sums<K> gives, bit for bit, on any number of ranks
+// Both begin with communicator::agree(), so an error kept on one rank (communicator::guarded)
+// is thrown on every rank there (parallel/communicator.hpp). Values are copied, never added in
+// transit, so what arrives does not depend on the message timing; the buffers are sized once
+// and reused (no allocation per step once the widest field set has been sent).
+// Needs MPI (the opt-in target rkpm::mpi).
+
+#include <array>
+#include <cstring>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <mpi.h>
+
+#include <rkpm/core/block_sums.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/core/execution.hpp>
+#include <rkpm/core/types.hpp>
+#include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/global_blocks.hpp>
+#include <rkpm/parallel/halo.hpp>
+
+namespace rkpm::parallel {
+
+namespace detail {
+
+// Doubles per value of a per-particle field: double, or a fixed-size Eigen vector of doubles.
+template <class T>
+constexpr int field_width() {
+  if constexpr (std::is_same_v<T, double>)
+    return 1;
+  else {
+    static_assert(std::is_same_v<typename T::Scalar, double> && T::SizeAtCompileTime > 0,
+                  "forward: a field is a std::vector of double or of a fixed-size Eigen vector of double");
+    return T::SizeAtCompileTime;
+  }
+}
+template <class T>
+const double* field_data(const T& v) {
+  if constexpr (std::is_same_v<T, double>)
+    return &v;
+  else
+    return v.data();
+}
+template <class T>
+double* field_data(T& v) {
+  if constexpr (std::is_same_v<T, double>)
+    return &v;
+  else
+    return v.data();
+}
+
+// One message per linked rank; the tag keeps them apart from anything else on the communicator.
+inline constexpr int halo_tag = 2111;
+inline constexpr int block_tag = 2112;
+
+}  // namespace detail
+
+// The forward exchange of a halo plan: after the owners update their particles, every ghost
+// gets its owner's value. Fields are indexed by local id (owned, then ghosts: halo_plan::own()).
+// Made once per plan, collectively (a plan that is not this rank's is an error on every rank).
+class halo_exchange {
+ public:
+  halo_exchange(communicator& comm, halo_plan plan) : comm_(comm), plan_(std::move(plan)) {
+    comm.guarded([&] {
+      if (comm.size() != plan_.ranks || comm.rank() != plan_.rank)
+        fail("halo exchange: the plan is rank {} of {} but this process is rank {} of {}; make the plan with "
+             "the communicator's rank and as many parts as processes",
+             plan_.rank, plan_.ranks, comm.rank(), comm.size());
+    });
+    comm.agree();
+    send_.resize(plan_.sends.size());
+    receive_.resize(plan_.receives.size());
+    requests_.resize(plan_.sends.size() + plan_.receives.size());
+  }
+
+  const halo_plan& plan() const { return plan_; }
+
+  // Collective: agrees on errors first (communicator::agree), then copies the owned values of
+  // every field into the ghosts of the ranks that hold them. A field of the wrong length is an
+  // error on every rank.
+  template <class... Fields>
+  void forward(std::vector<Fields>&... fields) {
+    constexpr int width = (0 + ... + detail::field_width<Fields>());
+    const index_t n = plan_.local_particles();
+    comm_.guarded([&] {
+      index_t wrong = -1;
+      ((wrong < 0 && static_cast<index_t>(fields.size()) != n ? wrong = static_cast<index_t>(fields.size()) : 0), ...);
+      if (wrong >= 0)
+        fail("forward: a field has {} values but rank {} has {} local particles (owned and ghosts); size "
+             "per-particle fields by halo_plan::local_particles()",
+             wrong, plan_.rank, n);
+    });
+    comm_.agree();
+    for (std::size_t k = 0; k < plan_.receives.size(); ++k) {
+      std::vector<double>& buffer = receive_[k];
+      buffer.resize(plan_.receives[k].particles.size() * width);
+      MPI_Irecv(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan_.receives[k].rank,
+                detail::halo_tag, comm_.get(), &requests_[k]);
+    }
+    for (std::size_t k = 0; k < plan_.sends.size(); ++k) {
+      std::vector<double>& buffer = send_[k];
+      buffer.resize(plan_.sends[k].particles.size() * width);
+      double* out = buffer.data();
+      for (const stored_index i : plan_.sends[k].particles) (pack(out, fields[i]), ...);
+      MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan_.sends[k].rank, detail::halo_tag,
+                comm_.get(), &requests_[plan_.receives.size() + k]);
+    }
+    MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
+    for (std::size_t k = 0; k < plan_.receives.size(); ++k) {
+      const double* in = receive_[k].data();
+      for (const stored_index i : plan_.receives[k].particles) (unpack(in, fields[i]), ...);
+    }
+  }
+
+ private:
+  template <class T>
+  static void pack(double*& out, const T& v) {
+    constexpr int w = detail::field_width<T>();
+    std::memcpy(out, detail::field_data(v), w * sizeof(double));
+    out += w;
+  }
+  template <class T>
+  static void unpack(const double*& in, T& v) {
+    constexpr int w = detail::field_width<T>();
+    std::memcpy(detail::field_data(v), in, w * sizeof(double));
+    in += w;
+  }
+  communicator& comm_;
+  halo_plan plan_;
+  std::vector<std::vector<double>> send_, receive_;
+  std::vector<MPI_Request> requests_;
+};
+
+// K sums over the owned particles of every rank that equal, bit for bit, one process's
+// block_sums<K> over all particles in global order (blocks of block_sums<K>::block_size):
+//   global_block_sums<2> sums(comm, make_global_block_plan(partition, comm.rank(), block_sums<2>::block_size));
+//   const auto [a, b] = sums([&](index_t i, global_block_sums<2>::sums& t) { t[0] += ...; t[1] += ...; });
+// body(i, t) runs once for every owned particle (local id i, in parallel, so it must not throw,
+// as block_sums' body must not), t zeroed before it; it adds at most one term to each t[k], as
+// block_sums' bodies in the library do (a body that added twice to one sum would round
+// differently from one process's running sum). Made once per plan, collectively; each sum is
+// collective and agrees on errors first.
+template <int K>
+class global_block_sums {
+ public:
+  using sums = std::array<double, K>;
+
+  global_block_sums(communicator& comm, global_block_plan plan) : comm_(comm), plan_(std::move(plan)) {
+    comm.guarded([&] {
+      if (comm.size() != plan_.ranks || comm.rank() != plan_.rank)
+        fail("global block sums: the plan is rank {} of {} but this process is rank {} of {}; make the plan with "
+             "the communicator's rank and as many parts as processes",
+             plan_.rank, plan_.ranks, comm.rank(), comm.size());
+      if (plan_.block_size != block_sums<K>::block_size)
+        fail("global block sums: blocks of {} particles, but one process's block_sums<{}> uses {}; make the plan "
+             "with block_sums<K>::block_size",
+             plan_.block_size, K, block_sums<K>::block_size);
+    });
+    comm.agree();
+    index_t received = 0;
+    for (const term_count& c : plan_.receives) received += c.count;
+    terms_.resize((plan_.owned + received) * K);
+    send_.resize(plan_.sends.size());
+    requests_.resize(plan_.sends.size() + plan_.receives.size());
+    // Where each rank's block sums land in the all-gather: the blocks it collects, in order.
+    std::vector<int> collected_by(plan_.ranks, 0);
+    for (const int r : plan_.collector) ++collected_by[r];
+    counts_.resize(plan_.ranks);
+    displacements_.resize(plan_.ranks);
+    for (int r = 0, at = 0; r < plan_.ranks; ++r) {
+      counts_[r] = collected_by[r] * K;
+      displacements_[r] = at;
+      at += counts_[r];
+    }
+    slot_.resize(plan_.blocks());
+    std::vector<int> next(displacements_);
+    for (index_t b = 0; b < plan_.blocks(); ++b) {
+      slot_[b] = next[plan_.collector[b]];
+      next[plan_.collector[b]] += K;
+    }
+    block_sum_.resize(plan_.blocks() * K);
+    mine_.resize(plan_.collected.size() * K);
+  }
+
+  template <class Body>
+  sums operator()(Body&& body) {
+    comm_.agree();
+    exec::parallel_for(plan_.owned, [&](index_t i) {
+      sums t{};
+      body(i, t);
+      for (int k = 0; k < K; ++k) terms_[i * K + k] = t[k];
+    });
+    // The terms of straddling blocks to their collectors.
+    std::size_t request = 0;
+    index_t at = plan_.owned * K;
+    for (const term_count& c : plan_.receives) {
+      MPI_Irecv(terms_.data() + at, static_cast<int>(c.count * K), MPI_DOUBLE, c.rank, detail::block_tag,
+                comm_.get(), &requests_[request++]);
+      at += c.count * K;
+    }
+    for (std::size_t k = 0; k < plan_.sends.size(); ++k) {
+      std::vector<double>& buffer = send_[k];
+      buffer.resize(plan_.sends[k].particles.size() * K);
+      double* out = buffer.data();
+      for (const stored_index i : plan_.sends[k].particles)
+        for (int j = 0; j < K; ++j) *out++ = terms_[i * K + j];
+      MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan_.sends[k].rank, detail::block_tag,
+                comm_.get(), &requests_[request++]);
+    }
+    MPI_Waitall(static_cast<int>(request), requests_.data(), MPI_STATUSES_IGNORE);
+    // Our blocks, each from zero in index order (as block_sums sums a block).
+    exec::parallel_for(static_cast<index_t>(plan_.collected.size()), [&](index_t k) {
+      sums s{};
+      for (index_t m = plan_.member_offset[k]; m < plan_.member_offset[k + 1]; ++m)
+        for (int j = 0; j < K; ++j) s[j] += terms_[plan_.member_term[m] * K + j];
+      for (int j = 0; j < K; ++j) mine_[k * K + j] = s[j];
+    });
+    // Every block's sum on every rank, added in block order.
+    MPI_Allgatherv(mine_.data(), static_cast<int>(mine_.size()), MPI_DOUBLE, block_sum_.data(), counts_.data(),
+                   displacements_.data(), MPI_DOUBLE, comm_.get());
+    sums total{};
+    for (index_t b = 0; b < plan_.blocks(); ++b)
+      for (int j = 0; j < K; ++j) total[j] += block_sum_[slot_[b] + j];
+    return total;
+  }
+
+  const global_block_plan& plan() const { return plan_; }
+
+ private:
+  communicator& comm_;
+  global_block_plan plan_;
+  std::vector<double> terms_;  // [owned particles' | received], K per particle
+  std::vector<std::vector<double>> send_;
+  std::vector<MPI_Request> requests_;
+  std::vector<int> counts_, displacements_;  // of the all-gather, in doubles
+  std::vector<index_t> slot_;                // #blocks: where block b's sums are in block_sum_
+  std::vector<double> block_sum_, mine_;
+};
+
+}  // namespace rkpm::parallel
