@@ -51,6 +51,9 @@ struct johnson_cook_state {
   double plastic_work = 0.0;                                       // J/m^3 of reference volume
   double temperature = std::numeric_limits<double>::quiet_NaN();   // K (NaN: none, a J2 point of a case file)
   double damage = 0.0;                                             // D, >= 1 failed
+  // sigma_y(eps_p, T) at the reference rate, (A + B eps_p^n)(1 - T*^m): the yield check of the
+  // next step, kept so that a step that stays elastic costs no pow (a Johnson-Cook point only).
+  double flow_stress_at_rest = std::numeric_limits<double>::quiet_NaN();
 
   bool failed() const { return damage >= 1.0; }
   // The snapshot fields (io/solver_output.hpp).
@@ -125,9 +128,14 @@ class johnson_cook {
     heat_per_work_ = heating_.taylor_quinney / (constants_.density * heating_.specific_heat);
   }
 
-  state_type initial_state() const {
+  // A point at the initial temperature, with a plastic strain already (a prestrained part) or
+  // none. Set a state's eps_p or T through here, not by hand: the state keeps the flow stress
+  // they give.
+  state_type initial_state(double equivalent_plastic_strain = 0.0) const {
     state_type s;
     s.temperature = heating_.initial_temperature;
+    s.equivalent_plastic_strain = equivalent_plastic_strain;
+    s.flow_stress_at_rest = flow_.flow_stress(equivalent_plastic_strain, flow_point{0.0, s.temperature});
     return s;
   }
 
@@ -143,31 +151,32 @@ class johnson_cook {
     }
     const double T = s.temperature;
     const double eps_p = s.equivalent_plastic_strain;
+    const double yield = s.flow_stress_at_rest;  // (24b) at eps_p and T, rate* <= 1
+    if (!(t.q > yield)) {
+      s.elastic_left_cauchy_green = t.b;
+      return hencky_stress(t.frame, t.volumetric, t.dev);
+    }
     const auto law = flow_.at_temperature(T);  // the step's temperature, its factor once
     if (law.theta == 0.0) {  // molten: sigma_y = 0, the whole deviator returns
       s.equivalent_plastic_strain = eps_p + t.q / (3.0 * mu_);
       s.elastic_left_cauchy_green = isotropic(t.volumetric);
       return mat3::Identity() * (bulk_ * t.volumetric);
     }
-    const double yield = law.flow_stress(eps_p, flow_point{0.0, T});
-    if (!(t.q > yield)) {
-      s.elastic_left_cauchy_green = t.b;
-      return hencky_stress(t.frame, t.volumetric, t.dev);
-    }
     const radial_return_result rr = radial_return(law, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
                                                   material_step{step.dt, step.time, T});
     const double dgamma = rr.increment;
-    const flow_point at{step.dt > 0.0 ? dgamma / step.dt : 0.0, T};
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
-    // ln max(rate*, 1), once for the work's rate factor and the failure strain.
-    const double rate_star = at.plastic_strain_rate / flow_.reference_rate;
-    const double log_rate = rate_star > 1.0 ? std::log(rate_star) : 0.0;
+    // ln max(rate*, 1) at the root, from the return mapping's own ln dgamma (no log here), once
+    // for the work's rate factor and the failure strain.
+    const double log_rate = rr.log_rate;
+    const double rate_factor = 1.0 + flow_.C * log_rate;
     // (32) at the step's rate and T: the exact integral, from the flow stresses at both ends.
-    const double work =
-        law.integral_at_factor(eps_p, eps_p + dgamma, yield, rr.flow_stress, 1.0 + flow_.C * log_rate);
+    const double work = law.integral_at_factor(eps_p, eps_p + dgamma, yield, rr.flow_stress, rate_factor);
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
     s.temperature = T + heat_per_work_ * work;  // (32a)
+    // The next yield check: A + B eps_p^n from the flow stress at the root (no pow), at the new T.
+    s.flow_stress_at_rest = rr.flow_stress / (rate_factor * law.theta) * flow_.thermal_factor(s.temperature);
     if (damage_ && dgamma > 0.0) {
       const double q = rr.flow_stress;  // sqrt(3/2) 2 mu |e^e| = sigma_y at the root
       const double triaxiality = q > 0.0 ? bulk_ * t.volumetric / q : 0.0;  // (tr tau / 3) / q

@@ -25,6 +25,7 @@ struct radial_return_result {
   int iterations;      // Newton updates taken (0 for the closed form)
   double residual;     // r(dgamma) in Pa
   double flow_stress;  // sigma_y(eps_p_n + dgamma) in Pa
+  double log_rate = 0.0;  // ln max(rate*, 1) at dgamma, by a law on a step curve (johnson_cook); else 0
 };
 
 namespace detail {
@@ -89,7 +90,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     auto p = curve(dg, x);
     double r = q_trial - three_mu * dg - p.flow;
     for (int it = 1;; ++it) {
-      if (std::abs(r) <= limit) return {dg, it, r, p.flow};
+      if (std::abs(r) <= limit) return {dg, it, r, p.flow, p.log_rate};
       if (it > max_iterations || !std::isfinite(r))
         detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;

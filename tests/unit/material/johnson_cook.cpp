@@ -152,7 +152,7 @@ TEST_CASE("johnson_cook, uniaxial stress at a constant strain rate: the JC curve
     adiabatic_ode ode{copper_flow, 0.9, rate, 0.0, 294.0};
     const int steps = 3000;
     const double total = 0.6, dt = total / rate / steps;
-    double lateral = 0.0, worst = 0.0, worst_T = 0.0, last_eps_p = 0.0;
+    double lateral = 0.0, worst = 0.0, worst_T = 0.0, worst_cache = 0.0, last_eps_p = 0.0;
     mat3 tau;
     for (int k = 1; k <= steps; ++k) {
       tau = uniaxial_step(jc, s, total * k / steps, lateral, dt);
@@ -162,6 +162,9 @@ TEST_CASE("johnson_cook, uniaxial stress at a constant strain rate: the JC curve
       const double T = ode.at(s.equivalent_plastic_strain);
       worst = std::max(worst, std::abs(tau(0, 0) / jc_curve(s.equivalent_plastic_strain, plastic_rate, T) - 1.0));
       worst_T = std::max(worst_T, std::abs(s.temperature - T));
+      // The yield check's cached flow stress is (24b) at the state's eps_p and T (rate* <= 1).
+      worst_cache = std::max(worst_cache, std::abs(s.flow_stress_at_rest /
+                                                       copper_flow.flow_stress(s.equivalent_plastic_strain, {0.0, s.temperature}) - 1.0));
     }
     MESSAGE("rate ", rate, "/s: eps_p ", s.equivalent_plastic_strain, ", T ", s.temperature, " K, tau11 ", tau(0, 0),
             " Pa; largest relative stress difference ", worst, ", temperature ", worst_T, " K");
@@ -169,6 +172,7 @@ TEST_CASE("johnson_cook, uniaxial stress at a constant strain rate: the JC curve
     CHECK(s.temperature - 294.0 > 30.0);  // the heating matters (about 3 % softening here)
     CHECK(worst < 1e-4);
     CHECK(worst_T < 0.02);
+    CHECK(worst_cache < 1e-13);
     CHECK(von_mises(tau) == doctest::Approx(tau(0, 0)).epsilon(1e-8));  // uniaxial indeed
     // The temperature is beta W_p / (rho c_p) of the point's own plastic work.
     CHECK(s.temperature - 294.0 == doctest::Approx(0.9 * s.plastic_work / rho_c).epsilon(1e-12));
@@ -183,8 +187,7 @@ TEST_CASE("johnson_cook with C = 0 and no heating: the power law from eps_p = ep
     const mat::johnson_cook jc(copper, h::johnson_cook{0.0, 576.79e6, 0.3593, 0.0, 1.0, 1.0, 294.0, 1356.0},
                                mat::johnson_cook_heating{383.0, 0.0});
     auto a = j2.initial_state();
-    auto b = jc.initial_state();
-    b.equivalent_plastic_strain = pl.offset;
+    auto b = jc.initial_state(pl.offset);
     for (const mat3& F : rkpm::test::stretch_shear_path()) {
       const mat3 ta = j2.kirchhoff_stress(F, a), tb = jc.kirchhoff_stress(F, b, {dt, 0.0, 294.0});
       CHECK((ta - tb).norm() <= 1e-10 * ta.norm());
@@ -281,12 +284,15 @@ TEST_CASE("johnson_cook: molten points carry pressure only; the Newton return is
 }
 
 TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per update) solves what the general rate branch solves") {
-  const auto& l = copper_flow;
   const double three_mu = 3.0 * copper.shear_modulus();
+  h::johnson_cook linear = copper_flow;
+  linear.n = 1.0;  // the linear law: the curve's power without a series
+  for (const h::johnson_cook& l : {copper_flow, linear})
   for (double T : {294.0, 700.0})
     for (double eps_n : {0.0, 1e-6, 0.05, 1.0})
       for (double rate : {0.5, 1e2, 1e4, 1e6})
         for (double dt : {1e-8, 1e-6}) {
+          CAPTURE(l.n);
           CAPTURE(T);
           CAPTURE(eps_n);
           CAPTURE(rate);
@@ -301,7 +307,7 @@ TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per
             const auto p = curve(dg, std::log(dg));
             CHECK(p.flow == doctest::Approx(l.flow_stress(eps_n + dg, at)).epsilon(1e-14));
             CHECK(p.dflow_dx == doctest::Approx(dg * l.slope(eps_n + dg, at) + dg / dt * l.rate_slope(eps_n + dg, at)).epsilon(1e-12));
-            CHECK(p.rate_factor == doctest::Approx(l.rate_factor(dg / dt)).epsilon(1e-15));
+            CHECK(1.0 + l.C * p.log_rate == doctest::Approx(l.rate_factor(dg / dt)).epsilon(1e-15));
           }
           // A trial stress past the rate-0 yield by 3 mu rate dt plus the overstress of `rate`.
           const double q = iso.flow_stress(eps_n, {rate, T}) + three_mu * rate * dt;
@@ -309,6 +315,7 @@ TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per
           const auto general = rkpm::material::radial_return(l, q, three_mu, eps_n, 1e-12, 50, y, {dt, 0.0, T});
           CHECK(std::abs(fast.residual) <= 1e-12 * q);
           CHECK(fast.flow_stress == doctest::Approx(l.flow_stress(eps_n + fast.increment, {fast.increment / dt, T})).epsilon(1e-13));
+          CHECK(fast.log_rate == doctest::Approx(std::log(std::max(1.0, fast.increment / dt / l.reference_rate))).epsilon(1e-13).scale(1.0));
           // Both roots within what the residual tolerance allows: |d dgamma| <= 2e-12 q / (3 mu).
           CHECK(std::abs(fast.increment - general.increment) <= 2e-12 * q / three_mu);
           CHECK(fast.iterations <= general.iterations + 1);

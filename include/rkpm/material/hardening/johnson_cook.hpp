@@ -146,13 +146,15 @@ struct johnson_cook {
       struct point {
         double flow;     // sigma_y
         double dflow_dx; // d sigma_y / d ln dgamma = dg d sigma_y / d eps_p + d sigma_y / d ln rate*
-        double rate_factor;  // 1 + C ln max(rate*, 1)
+        double log_rate;  // ln max(rate*, 1)
       };
       point operator()(double dg, double x) const {
         const double eps = eps_n + dg;
         const double u = dg / eps_n;
         double power;
-        if (eps_n > 0.0 && u <= 1.0 / 32.0) {
+        if (n == 1.0) {  // the linear law: the series below ends after one term at any u
+          power = eps;
+        } else if (eps_n > 0.0 && u <= 1.0 / 32.0) {
           double sum = 1.0, term = 1.0;
           for (int k = 1; k <= 12; ++k) {
             term *= (n - (k - 1)) / k * u;
@@ -164,9 +166,9 @@ struct johnson_cook {
           power = std::pow(eps, n);
         }
         const double S = A + B * power;
-        const double log_rate = x - log_offset;
-        const double R = log_rate > 0.0 ? 1.0 + C * log_rate : 1.0;
-        return {S * R * theta, (dg * n * B * power / eps * R + (log_rate > 0.0 ? S * C : 0.0)) * theta, R};
+        const double log_rate = std::max(0.0, x - log_offset);
+        const double R = 1.0 + C * log_rate;
+        return {S * R * theta, (dg * n * B * power / eps * R + (log_rate > 0.0 ? S * C : 0.0)) * theta, log_rate};
       }
     };
     // flow_at_start: sigma_y(eps_n) at the reference rate and this temperature, (A + B eps_n^n) theta.
