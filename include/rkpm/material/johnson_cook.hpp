@@ -54,6 +54,11 @@ struct johnson_cook_state {
   // sigma_y(eps_p, T) at the reference rate, (A + B eps_p^n)(1 - T*^m): the yield check of the
   // next step, kept so that a step that stays elastic costs no pow (a Johnson-Cook point only).
   double flow_stress_at_rest = std::numeric_limits<double>::quiet_NaN();
+  // dgamma of the last step that yielded (0 before any): where the next return mapping starts.
+  double last_increment = 0.0;
+  // T*^m at T (hardening::johnson_cook::homologous_power), carried from step to step by a short
+  // series instead of a pow (homologous_power_after).
+  double homologous_power = 0.0;
 
   bool failed() const { return damage >= 1.0; }
   // The snapshot fields (io/solver_output.hpp).
@@ -135,6 +140,7 @@ class johnson_cook {
     state_type s;
     s.temperature = heating_.initial_temperature;
     s.equivalent_plastic_strain = equivalent_plastic_strain;
+    s.homologous_power = flow_.homologous_power(s.temperature);
     s.flow_stress_at_rest = flow_.flow_stress(equivalent_plastic_strain, flow_point{0.0, s.temperature});
     return s;
   }
@@ -156,15 +162,16 @@ class johnson_cook {
       s.elastic_left_cauchy_green = t.b;
       return hencky_stress(t.frame, t.volumetric, t.dev);
     }
-    const auto law = flow_.at_temperature(T);  // the step's temperature, its factor once
+    const auto law = flow_.at_homologous_power(s.homologous_power);  // at the step's temperature
     if (law.theta == 0.0) {  // molten: sigma_y = 0, the whole deviator returns
       s.equivalent_plastic_strain = eps_p + t.q / (3.0 * mu_);
       s.elastic_left_cauchy_green = isotropic(t.volumetric);
       return mat3::Identity() * (bulk_ * t.volumetric);
     }
     const radial_return_result rr = radial_return(law, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
-                                                  material_step{step.dt, step.time, T});
+                                                  material_step{step.dt, step.time, T}, s.last_increment);
     const double dgamma = rr.increment;
+    s.last_increment = dgamma;
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
     // ln max(rate*, 1) at the root, from the return mapping's own ln dgamma (no log here), once
     // for the work's rate factor and the failure strain.
@@ -175,8 +182,9 @@ class johnson_cook {
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
     s.temperature = T + heat_per_work_ * work;  // (32a)
+    s.homologous_power = flow_.homologous_power_after(T, s.homologous_power, s.temperature);
     // The next yield check: A + B eps_p^n from the flow stress at the root (no pow), at the new T.
-    s.flow_stress_at_rest = rr.flow_stress / (rate_factor * law.theta) * flow_.thermal_factor(s.temperature);
+    s.flow_stress_at_rest = rr.flow_stress / (rate_factor * law.theta) * (1.0 - s.homologous_power);
     if (damage_ && dgamma > 0.0) {
       const double q = rr.flow_stress;  // sqrt(3/2) 2 mu |e^e| = sigma_y at the root
       const double triaxiality = q > 0.0 ? bulk_ * t.volumetric / q : 0.0;  // (tr tau / 3) / q

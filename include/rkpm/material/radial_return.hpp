@@ -43,10 +43,13 @@ namespace detail {
 
 // tolerance is relative: converged when |r| <= tolerance * q_trial. flow_at_start is
 // sigma_y(eps_p_n), which the caller has from its yield check (one pow less per update).
+// first_guess, if > 0, is an increment near the root (a point's last increment: the plastic rate
+// changes little from one explicit step to the next) where a law on a step curve starts its
+// Newton iteration when the guess lies inside the bracket (0, q_trial / (3 mu)).
 template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
                                    double eps_p_n, double tolerance, int max_iterations, double flow_at_start,
-                                   const material_step& step = {}) {
+                                   const material_step& step = {}, double first_guess = 0.0) {
   // Where on the curve an increment dg puts the point (rate dg / dt, the step's temperature).
   const auto at = [&](double dg) {
     if constexpr (hardens_with_state<H>) return flow_point{step.dt > 0.0 ? dg / step.dt : 0.0, step.temperature};
@@ -83,9 +86,14 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     // x-derivative together, ln rate* = x - ln(dt rate0) with no log, one exp per update.
     const auto curve = hardening.along_step(eps_p_n, step.dt, flow_at_start);
     const double limit = tolerance * q_trial;
+    // The upper bound of the branch below, (q_trial - sigma_y(eps_p,n)) / (3 mu), brackets the
+    // root with 0 (the flow stress only rises along the step). From it the iterates fall to the
+    // root monotonically, in about five updates where the rate term is stiff; from the last
+    // step's increment, in about two: from below the root the first update lands above it (r is
+    // concave in x), then they fall as before.
     double lo = 0.0;
-    double hi = q_trial / three_mu;
-    double dg = (q_trial - flow_at_start) / three_mu;
+    double hi = (q_trial - flow_at_start) / three_mu;
+    double dg = (first_guess > 0.0 && first_guess < hi) ? first_guess : hi;
     double x = std::log(dg);
     auto p = curve(dg, x);
     double r = q_trial - three_mu * dg - p.flow;
@@ -94,8 +102,15 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
       if (it > max_iterations || !std::isfinite(r))
         detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
-      // dr/dx = -(3 mu dgamma + d sigma_y / dx).
-      const double next_x = x + r / (three_mu * dg + p.dflow_dx);
+      // Halley's update near the root (third order: about one update fewer than Newton's),
+      // Newton's far from it (|L| > 1, where Halley's may step the wrong way), with
+      // r' = dr/dx = -(3 mu dgamma + d sigma_y / dx), r'' = -(3 mu dgamma + d2 sigma_y / dx2) and
+      // L = r r'' / r'^2: x - (r / r') / (1 - L / 2).
+      const double r1 = -(three_mu * dg + p.dflow_dx);
+      const double r2 = -(three_mu * dg + p.d2flow_dx2);
+      const double newton = r / r1;
+      const double L = newton * r2 / r1;
+      const double next_x = x - (std::abs(L) <= 1.0 ? newton / (1.0 - 0.5 * L) : newton);
       const double next = std::exp(next_x);
       if (next > lo && next < hi) {
         dg = next;

@@ -165,6 +165,8 @@ TEST_CASE("johnson_cook, uniaxial stress at a constant strain rate: the JC curve
       // The yield check's cached flow stress is (24b) at the state's eps_p and T (rate* <= 1).
       worst_cache = std::max(worst_cache, std::abs(s.flow_stress_at_rest /
                                                        copper_flow.flow_stress(s.equivalent_plastic_strain, {0.0, s.temperature}) - 1.0));
+      // ... and T*^m, carried by the series from step to step, is pow's to round-off still.
+      worst_cache = std::max(worst_cache, std::abs(s.homologous_power / copper_flow.homologous_power(s.temperature) - 1.0));
     }
     MESSAGE("rate ", rate, "/s: eps_p ", s.equivalent_plastic_strain, ", T ", s.temperature, " K, tau11 ", tau(0, 0),
             " Pa; largest relative stress difference ", worst, ", temperature ", worst_T, " K");
@@ -281,6 +283,24 @@ TEST_CASE("johnson_cook: molten points carry pressure only; the Newton return is
   CHECK(rkpm::test::contains(
       rkpm::test::error_message([&] { mat::johnson_cook(copper, copper_flow, mat::johnson_cook_heating{-1.0}); }),
       "specific_heat"));
+}
+
+TEST_CASE("johnson_cook: (1 + u)^p by the binomial series and T*^m carried from T to T + dT equal pow's") {
+  for (double p : {0.31, 1.0, 1.09, 2.5})
+    for (double u : {-1.0 / 32.0, -1e-3, -1e-9, 0.0, 1e-12, 1e-6, 0.01, 1.0 / 32.0}) {
+      CAPTURE(p);
+      CAPTURE(u);
+      CHECK(h::johnson_cook::binomial_power(p, u) == doctest::Approx(std::pow(1.0 + u, p)).epsilon(4e-16));
+    }
+  for (double T : {294.0, 295.0, 600.0, 1300.0})
+    for (double dT : {0.0, 1e-6, 0.3, 5.0, 100.0}) {  // the series while dT <= (T - T_room) / 32, pow beyond
+      CAPTURE(T);
+      CAPTURE(dT);
+      const double after = copper_flow.homologous_power_after(T, copper_flow.homologous_power(T), T + dT);
+      CHECK(after == doctest::Approx(copper_flow.homologous_power(T + dT)).epsilon(1e-15));
+    }
+  CHECK(copper_flow.homologous_power_after(1300.0, copper_flow.homologous_power(1300.0), 1400.0) == 1.0);  // melt
+  CHECK(copper_flow.at_homologous_power(1.0).theta == 0.0);
 }
 
 TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per update) solves what the general rate branch solves") {

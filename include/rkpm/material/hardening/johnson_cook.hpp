@@ -62,6 +62,36 @@ struct johnson_cook {
     if (t <= 0.0) return 1.0;
     return t >= 1.0 ? 0.0 : 1.0 - std::pow(t, m);
   }
+  // T*^m (0 at or below room temperature, 1 at or above melt): 1 - thermal_factor(T).
+  double homologous_power(double T) const {
+    const double t = homologous_temperature(T);
+    if (t <= 0.0) return 0.0;
+    return t >= 1.0 ? 1.0 : std::pow(t, m);
+  }
+  // T*^m at T_new from its value power_old at T_old, where a point heats by a small fraction of
+  // T_old - T_room in a step: power_old (1 + u)^m, u = (T_new - T_old) / (T_old - T_room), by the
+  // binomial series while |u| <= 1/32 (a pow otherwise, and from room temperature).
+  double homologous_power_after(double T_old, double power_old, double T_new) const {
+    const double t_new = homologous_temperature(T_new);
+    if (t_new <= 0.0) return 0.0;
+    if (t_new >= 1.0) return 1.0;
+    if (power_old > 0.0 && T_old > room_temperature) {
+      const double u = (T_new - T_old) / (T_old - room_temperature);
+      if (std::abs(u) <= 1.0 / 32.0) return power_old * binomial_power(m, u);
+    }
+    return std::pow(t_new, m);
+  }
+  // (1 + u)^p for |u| <= 1/32 as its binomial series: 12 terms at most, below 1e-17 of the sum
+  // (|u|^12 <= 1e-18); exact after one term for p = 1.
+  static double binomial_power(double p, double u) {
+    double sum = 1.0, term = 1.0;
+    for (int k = 1; k <= 12; ++k) {
+      term *= (p - (k - 1)) / k * u;
+      sum += term;
+      if (std::abs(term) <= 1e-17 * sum) break;
+    }
+    return sum;
+  }
   // 1 + C ln max(rate*, 1).
   double rate_factor(double rate) const {
     const double r = rate / reference_rate;
@@ -144,9 +174,10 @@ struct johnson_cook {
       double power_n;     // eps_n^n
       double log_offset;  // ln(dt rate0), +inf when dt = 0 (no rate term)
       struct point {
-        double flow;     // sigma_y
-        double dflow_dx; // d sigma_y / d ln dgamma = dg d sigma_y / d eps_p + d sigma_y / d ln rate*
-        double log_rate;  // ln max(rate*, 1)
+        double flow;        // sigma_y
+        double dflow_dx;    // d sigma_y / d ln dgamma = dg d sigma_y / d eps_p + d sigma_y / d ln rate*
+        double d2flow_dx2;  // its x-derivative, for Halley's update (radial_return.hpp)
+        double log_rate;    // ln max(rate*, 1)
       };
       point operator()(double dg, double x) const {
         const double eps = eps_n + dg;
@@ -155,20 +186,20 @@ struct johnson_cook {
         if (n == 1.0) {  // the linear law: the series below ends after one term at any u
           power = eps;
         } else if (eps_n > 0.0 && u <= 1.0 / 32.0) {
-          double sum = 1.0, term = 1.0;
-          for (int k = 1; k <= 12; ++k) {
-            term *= (n - (k - 1)) / k * u;
-            sum += term;
-            if (std::abs(term) <= 1e-17 * sum) break;
-          }
-          power = power_n * sum;
+          power = power_n * binomial_power(n, u);
         } else {
           power = std::pow(eps, n);
         }
+        // S = A + B eps^n and R = 1 + C ln max(rate*, 1) with their x-derivatives (dg = e^x):
+        // S_x = dg n B eps^(n-1), S_xx = S_x (1 + (n - 1) dg / eps), R_x = C above the reference rate.
         const double S = A + B * power;
+        const double dg_over_eps = dg / eps;
+        const double S_x = n * B * power * dg_over_eps;
+        const double S_xx = S_x * (1.0 + (n - 1.0) * dg_over_eps);
         const double log_rate = std::max(0.0, x - log_offset);
         const double R = 1.0 + C * log_rate;
-        return {S * R * theta, (dg * n * B * power / eps * R + (log_rate > 0.0 ? S * C : 0.0)) * theta, log_rate};
+        const double R_x = log_rate > 0.0 ? C : 0.0;
+        return {S * R * theta, (S_x * R + S * R_x) * theta, (S_xx * R + 2.0 * S_x * R_x) * theta, log_rate};
       }
     };
     // flow_at_start: sigma_y(eps_n) at the reference rate and this temperature, (A + B eps_n^n) theta.
@@ -181,6 +212,8 @@ struct johnson_cook {
     }
   };
   at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
+  // The same from T*^m known (material::johnson_cook keeps it per point: no pow).
+  at_temperature_t at_homologous_power(double power) const { return {this, power >= 1.0 ? 0.0 : 1.0 - power}; }
 
   // The plastic work per unit volume int_from^to sigma_y de at a fixed rate and temperature (the
   // step's, docs/method.md (32)): (1 + C ln rate*)(1 - T*^m) (A (to - from) + B (to^(n+1) -
