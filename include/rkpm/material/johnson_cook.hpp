@@ -54,8 +54,8 @@ struct johnson_cook_state {
   // sigma_y(eps_p, T) at the reference rate, (A + B eps_p^n)(1 - T*^m): the yield check of the
   // next step, kept so that a step that stays elastic costs no pow (a Johnson-Cook point only).
   double flow_stress_at_rest = std::numeric_limits<double>::quiet_NaN();
-  // dgamma of the last step that yielded (0 before any): where the next return mapping starts.
-  double last_increment = 0.0;
+  // ln dgamma of the last step that yielded (-inf before any): where the next return mapping starts.
+  double log_last_increment = -std::numeric_limits<double>::infinity();
   // T*^m at T (hardening::johnson_cook::homologous_power), carried from step to step by a short
   // series instead of a pow (homologous_power_after).
   double homologous_power = 0.0;
@@ -169,9 +169,9 @@ class johnson_cook {
       return mat3::Identity() * (bulk_ * t.volumetric);
     }
     const radial_return_result rr = radial_return(law, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
-                                                  material_step{step.dt, step.time, T}, s.last_increment);
+                                                  material_step{step.dt, step.time, T}, s.log_last_increment);
     const double dgamma = rr.increment;
-    s.last_increment = dgamma;
+    s.log_last_increment = rr.log_increment;
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
     // ln max(rate*, 1) at the root, from the return mapping's own ln dgamma (no log here), once
     // for the work's rate factor and the failure strain.

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <concepts>
+#include <limits>
 #include <string_view>
 
 #include <rkpm/concepts/material.hpp>
@@ -26,6 +27,7 @@ struct radial_return_result {
   double residual;     // r(dgamma) in Pa
   double flow_stress;  // sigma_y(eps_p_n + dgamma) in Pa
   double log_rate = 0.0;  // ln max(rate*, 1) at dgamma, by a law on a step curve (johnson_cook); else 0
+  double log_increment = -std::numeric_limits<double>::infinity();  // ln dgamma, by a law on a step curve
 };
 
 namespace detail {
@@ -43,13 +45,14 @@ namespace detail {
 
 // tolerance is relative: converged when |r| <= tolerance * q_trial. flow_at_start is
 // sigma_y(eps_p_n), which the caller has from its yield check (one pow less per update).
-// first_guess, if > 0, is an increment near the root (a point's last increment: the plastic rate
-// changes little from one explicit step to the next) where a law on a step curve starts its
-// Newton iteration when the guess lies inside the bracket (0, q_trial / (3 mu)).
+// log_first_guess, if finite, is the log of an increment near the root (a point's last
+// increment: the plastic rate changes little from one explicit step to the next) where a law on
+// a step curve starts its iteration in x = ln dgamma, if that increment lies in the bracket.
 template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
                                    double eps_p_n, double tolerance, int max_iterations, double flow_at_start,
-                                   const material_step& step = {}, double first_guess = 0.0) {
+                                   const material_step& step = {},
+                                   double log_first_guess = -std::numeric_limits<double>::infinity()) {
   // Where on the curve an increment dg puts the point (rate dg / dt, the step's temperature).
   const auto at = [&](double dg) {
     if constexpr (hardens_with_state<H>) return flow_point{step.dt > 0.0 ? dg / step.dt : 0.0, step.temperature};
@@ -93,24 +96,29 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     // concave in x), then they fall as before.
     double lo = 0.0;
     double hi = (q_trial - flow_at_start) / three_mu;
-    double dg = (first_guess > 0.0 && first_guess < hi) ? first_guess : hi;
-    double x = std::log(dg);
+    double x = log_first_guess;
+    double dg = std::exp(x);
+    if (!(dg > 0.0 && dg < hi)) {
+      dg = hi;
+      x = std::log(dg);
+    }
     auto p = curve(dg, x);
     double r = q_trial - three_mu * dg - p.flow;
     for (int it = 1;; ++it) {
-      if (std::abs(r) <= limit) return {dg, it, r, p.flow, p.log_rate};
+      if (std::abs(r) <= limit) return {dg, it, r, p.flow, p.log_rate, x};
       if (it > max_iterations || !std::isfinite(r))
         detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
-      // Halley's update near the root (third order: about one update fewer than Newton's),
-      // Newton's far from it (|L| > 1, where Halley's may step the wrong way), with
+      // Chebyshev's update near the root (third order, like Halley's, with one division: about
+      // one update fewer than Newton's), Newton's far from it (|L| > 1), with
       // r' = dr/dx = -(3 mu dgamma + d sigma_y / dx), r'' = -(3 mu dgamma + d2 sigma_y / dx2) and
-      // L = r r'' / r'^2: x - (r / r') / (1 - L / 2).
+      // L = r r'' / r'^2: x - (r / r') (1 + L / 2).
       const double r1 = -(three_mu * dg + p.dflow_dx);
       const double r2 = -(three_mu * dg + p.d2flow_dx2);
-      const double newton = r / r1;
-      const double L = newton * r2 / r1;
-      const double next_x = x - (std::abs(L) <= 1.0 ? newton / (1.0 - 0.5 * L) : newton);
+      const double inverse_r1 = 1.0 / r1;
+      const double newton = r * inverse_r1;
+      const double L = newton * r2 * inverse_r1;
+      const double next_x = x - (std::abs(L) <= 1.0 ? newton * (1.0 + 0.5 * L) : newton);
       const double next = std::exp(next_x);
       if (next > lo && next < hi) {
         dg = next;

@@ -81,12 +81,25 @@ struct johnson_cook {
     }
     return std::pow(t_new, m);
   }
+  // ln(dt rate0): every point of a step has the same, so each thread keeps the last one it took
+  // (one log per step and thread instead of one per plastic point).
+  static double log_of_step(double dt_rate) {
+    thread_local double key = std::numeric_limits<double>::quiet_NaN(), value = 0.0;
+    if (dt_rate != key) {
+      key = dt_rate;
+      value = std::log(dt_rate);
+    }
+    return value;
+  }
   // (1 + u)^p for |u| <= 1/32 as its binomial series: 12 terms at most, below 1e-17 of the sum
   // (|u|^12 <= 1e-18); exact after one term for p = 1.
   static double binomial_power(double p, double u) {
+    static constexpr double inverse[13] = {0.0,       1.0,       1.0 / 2,  1.0 / 3,  1.0 / 4,
+                                           1.0 / 5,   1.0 / 6,   1.0 / 7,  1.0 / 8,  1.0 / 9,
+                                           1.0 / 10,  1.0 / 11,  1.0 / 12};  // 1 / k: no division per term
     double sum = 1.0, term = 1.0;
     for (int k = 1; k <= 12; ++k) {
-      term *= (p - (k - 1)) / k * u;
+      term *= (p - (k - 1)) * inverse[k] * u;
       sum += term;
       if (std::abs(term) <= 1e-17 * sum) break;
     }
@@ -172,6 +185,7 @@ struct johnson_cook {
       double A, B, n, C, theta;
       double eps_n;       // eps_p at the start of the step
       double power_n;     // eps_n^n
+      double inverse_eps_n;  // 1 / eps_n (+inf at 0)
       double log_offset;  // ln(dt rate0), +inf when dt = 0 (no rate term)
       struct point {
         double flow;        // sigma_y
@@ -180,22 +194,21 @@ struct johnson_cook {
         double log_rate;    // ln max(rate*, 1)
       };
       point operator()(double dg, double x) const {
-        const double eps = eps_n + dg;
-        const double u = dg / eps_n;
-        double power;
-        if (n == 1.0) {  // the linear law: the series below ends after one term at any u
-          power = eps;
-        } else if (eps_n > 0.0 && u <= 1.0 / 32.0) {
-          power = power_n * binomial_power(n, u);
-        } else {
-          power = std::pow(eps, n);
-        }
         // S = A + B eps^n and R = 1 + C ln max(rate*, 1) with their x-derivatives (dg = e^x):
         // S_x = dg n B eps^(n-1), S_xx = S_x (1 + (n - 1) dg / eps), R_x = C above the reference rate.
+        const double eps = eps_n + dg;
+        double power, S_x, S_xx;
+        if (n == 1.0) {  // the linear law: no series, no division
+          power = eps;
+          S_x = S_xx = B * dg;
+        } else {
+          const double u = dg * inverse_eps_n;
+          power = (eps_n > 0.0 && u <= 1.0 / 32.0) ? power_n * binomial_power(n, u) : std::pow(eps, n);
+          const double dg_over_eps = dg / eps;
+          S_x = n * B * power * dg_over_eps;
+          S_xx = S_x * (1.0 + (n - 1.0) * dg_over_eps);
+        }
         const double S = A + B * power;
-        const double dg_over_eps = dg / eps;
-        const double S_x = n * B * power * dg_over_eps;
-        const double S_xx = S_x * (1.0 + (n - 1.0) * dg_over_eps);
         const double log_rate = std::max(0.0, x - log_offset);
         const double R = 1.0 + C * log_rate;
         const double R_x = log_rate > 0.0 ? C : 0.0;
@@ -207,8 +220,8 @@ struct johnson_cook {
       const double power_n = (eps_n > 0.0 && law->B > 0.0 && theta > 0.0)
                                  ? std::max(0.0, (flow_at_start / theta - law->A) / law->B)
                                  : (eps_n > 0.0 ? std::pow(eps_n, law->n) : 0.0);
-      return {law->A, law->B, law->n, law->C, theta, eps_n, power_n,
-              dt > 0.0 ? std::log(dt * law->reference_rate) : std::numeric_limits<double>::infinity()};
+      return {law->A, law->B, law->n, law->C, theta, eps_n, power_n, 1.0 / eps_n,
+              dt > 0.0 ? log_of_step(dt * law->reference_rate) : std::numeric_limits<double>::infinity()};
     }
   };
   at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
