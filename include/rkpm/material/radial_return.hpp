@@ -109,16 +109,24 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
       if (it > max_iterations || !std::isfinite(r))
         detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;
-      // Chebyshev's update near the root (third order, like Halley's, with one division: about
-      // one update fewer than Newton's), Newton's far from it (|L| > 1), with
-      // r' = dr/dx = -(3 mu dgamma + d sigma_y / dx), r'' = -(3 mu dgamma + d2 sigma_y / dx2) and
-      // L = r r'' / r'^2: x - (r / r') (1 + L / 2).
+      // Newton's update, r' = dr/dx = -(3 mu dgamma + d sigma_y / dx). r is concave in x, so from
+      // above the root (r < 0) Newton's stays above it, and from below it lands above. Above the
+      // root, Chebyshev's update (third order, like Halley's, with one division: about one update
+      // fewer) goes a little further, x - (r / r') (1 + L / 2), L = r r'' / r'^2 with
+      // r'' = -(3 mu dgamma + d2 sigma_y / dx2), unless |L| > 1 (far from the root) or it crosses
+      // the kink of the rate term at rate* = 1 (x = ln(dt rate0)), which r'' does not see: there
+      // it can pass the root, and from below the kink, where r' is small, Newton's then jumps
+      // far above again (a cycle that once held a point for 50 updates).
       const double r1 = -(three_mu * dg + p.dflow_dx);
-      const double r2 = -(three_mu * dg + p.d2flow_dx2);
       const double inverse_r1 = 1.0 / r1;
       const double newton = r * inverse_r1;
-      const double L = newton * r2 * inverse_r1;
-      const double next_x = x - (std::abs(L) <= 1.0 ? newton * (1.0 + 0.5 * L) : newton);
+      double next_x = x - newton;
+      if (r < 0.0) {
+        const double r2 = -(three_mu * dg + p.d2flow_dx2);
+        const double L = newton * r2 * inverse_r1;
+        const double chebyshev = x - newton * (1.0 + 0.5 * L);
+        if (std::abs(L) <= 1.0 && (chebyshev > curve.log_offset) == (x > curve.log_offset)) next_x = chebyshev;
+      }
       const double next = std::exp(next_x);
       if (next > lo && next < hi) {
         dg = next;

@@ -310,7 +310,7 @@ TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per
   for (const h::johnson_cook& l : {copper_flow, linear})
   for (double T : {294.0, 700.0})
     for (double eps_n : {0.0, 1e-6, 0.05, 1.0})
-      for (double rate : {0.5, 1e2, 1e4, 1e6})
+      for (double rate : {0.5, 1.01, 1.1, 1e2, 1e4, 1e6})  // 1.01, 1.1: the root just past the kink at rate* = 1
         for (double dt : {1e-8, 1e-6}) {
           CAPTURE(l.n);
           CAPTURE(T);
@@ -339,7 +339,31 @@ TEST_CASE("johnson_cook: the return along the step (series for eps^n, no log per
           // Both roots within what the residual tolerance allows: |d dgamma| <= 2e-12 q / (3 mu).
           CHECK(std::abs(fast.increment - general.increment) <= 2e-12 * q / three_mu);
           CHECK(fast.iterations <= general.iterations + 1);
+          // From a first guess (the last step's increment) on either side of the root, near it or
+          // far from it: the same root.
+          for (double factor : {1e-3, 0.5, 0.9, 1.1, 2.0, 1e3}) {
+            CAPTURE(factor);
+            const auto guessed = rkpm::material::radial_return(iso, q, three_mu, eps_n, 1e-12, 50, y, {dt, 0.0, T},
+                                                               std::log(factor * general.increment));
+            CHECK(std::abs(guessed.increment - general.increment) <= 2e-12 * q / three_mu);
+          }
         }
+}
+
+TEST_CASE("johnson_cook: the return converges when the root lies just past the rate term's kink (rate* = 1)") {
+  // A point of a refined Johnson-Cook Taylor bar at its first yield, where Chebyshev's update from
+  // above the root crossed the kink, and Newton's from below it jumped back above, for 50 updates.
+  const double three_mu = 3.0 * copper.shear_modulus();
+  const double q = 93208030.6849361, eps_n = 4.557331937145441e-07, dt = 2.57313e-06 / 406;
+  const auto iso = copper_flow.at_temperature(294.0);
+  const double y = iso.flow_stress(eps_n, {0.0, 294.0});
+  for (double guess : {0.0, 1e-12, 1e-9, 8e-8, 1e-7, 4.557e-7}) {
+    CAPTURE(guess);
+    const auto r = rkpm::material::radial_return(iso, q, three_mu, eps_n, 1e-12, 50, y, {dt, 0.0, 294.0}, std::log(guess));
+    CHECK(std::abs(r.residual) <= 1e-12 * q);
+    CHECK(r.increment / dt == doctest::Approx(1.0).epsilon(0.05));  // rate* just above 1
+    CHECK(r.iterations <= 8);
+  }
 }
 
 }  // namespace test_unit_material_johnson_cook
