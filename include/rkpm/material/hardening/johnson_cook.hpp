@@ -56,18 +56,14 @@ struct johnson_cook {
     if (!(T > room_temperature)) return 0.0;
     return std::min(1.0, (T - room_temperature) / (melt_temperature - room_temperature));
   }
-  // 1 - T*^m: 1 at room temperature, 0 at melt.
-  double thermal_factor(double T) const {
-    const double t = homologous_temperature(T);
-    if (t <= 0.0) return 1.0;
-    return t >= 1.0 ? 0.0 : 1.0 - std::pow(t, m);
-  }
-  // T*^m (0 at or below room temperature, 1 at or above melt): 1 - thermal_factor(T).
+  // T*^m: 0 at or below room temperature, 1 at or above melt.
   double homologous_power(double T) const {
     const double t = homologous_temperature(T);
     if (t <= 0.0) return 0.0;
     return t >= 1.0 ? 1.0 : std::pow(t, m);
   }
+  // 1 - T*^m: 1 at room temperature, 0 at melt.
+  double thermal_factor(double T) const { return 1.0 - homologous_power(T); }
   // T*^m at T_new from its value power_old at T_old, where a point heats by a small fraction of
   // T_old - T_room in a step: power_old (1 + u)^m, u = (T_new - T_old) / (T_old - T_room), by the
   // binomial series while |u| <= 1/32 (a pow otherwise, and from room temperature).
@@ -80,16 +76,6 @@ struct johnson_cook {
       if (std::abs(u) <= 1.0 / 32.0) return power_old * binomial_power(m, u);
     }
     return std::pow(t_new, m);
-  }
-  // ln(dt rate0): every point of a step has the same, so each thread keeps the last one it took
-  // (one log per step and thread instead of one per plastic point).
-  static double log_of_step(double dt_rate) {
-    thread_local double key = std::numeric_limits<double>::quiet_NaN(), value = 0.0;
-    if (dt_rate != key) {
-      key = dt_rate;
-      value = std::log(dt_rate);
-    }
-    return value;
   }
   // (1 + u)^p for |u| <= 1/32 as its binomial series: 12 terms at most, below 1e-17 of the sum
   // (|u|^12 <= 1e-18); exact after one term for p = 1.
@@ -190,7 +176,7 @@ struct johnson_cook {
       struct point {
         double flow;        // sigma_y
         double dflow_dx;    // d sigma_y / d ln dgamma = dg d sigma_y / d eps_p + d sigma_y / d ln rate*
-        double d2flow_dx2;  // its x-derivative, for Halley's update (radial_return.hpp)
+        double d2flow_dx2;  // its x-derivative, for Chebyshev's update (radial_return.hpp)
         double log_rate;    // ln max(rate*, 1)
       };
       point operator()(double dg, double x) const {
@@ -221,12 +207,12 @@ struct johnson_cook {
                                  ? std::max(0.0, (flow_at_start / theta - law->A) / law->B)
                                  : (eps_n > 0.0 ? std::pow(eps_n, law->n) : 0.0);
       return {law->A, law->B, law->n, law->C, theta, eps_n, power_n, 1.0 / eps_n,
-              dt > 0.0 ? log_of_step(dt * law->reference_rate) : std::numeric_limits<double>::infinity()};
+              dt > 0.0 ? std::log(dt * law->reference_rate) : std::numeric_limits<double>::infinity()};
     }
   };
   at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
   // The same from T*^m known (material::johnson_cook keeps it per point: no pow).
-  at_temperature_t at_homologous_power(double power) const { return {this, power >= 1.0 ? 0.0 : 1.0 - power}; }
+  at_temperature_t at_homologous_power(double power) const { return {this, 1.0 - power}; }
 
   // The plastic work per unit volume int_from^to sigma_y de at a fixed rate and temperature (the
   // step's, docs/method.md (32)): (1 + C ln rate*)(1 - T*^m) (A (to - from) + B (to^(n+1) -
