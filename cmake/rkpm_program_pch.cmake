@@ -6,7 +6,7 @@
 option(RKPM_PROGRAM_PCH "Precompile the headers shared by the runner and the tutorials" ON)
 if(RKPM_PROGRAM_PCH)
   add_library(rkpm_program_pch OBJECT ${CMAKE_CURRENT_LIST_DIR}/pch.cpp)
-  target_link_libraries(rkpm_program_pch PUBLIC rkpm::rkpm rkpm::gnuplot rkpm_shape_tables)
+  target_link_libraries(rkpm_program_pch PUBLIC rkpm::rkpm rkpm::gnuplot rkpm_instances)
   target_precompile_headers(rkpm_program_pch PRIVATE
     <algorithm> <cmath> <filesystem> <functional> <string> <vector>
     <Eigen/Dense> <fmt/format.h> <boost/hana.hpp>

@@ -2,7 +2,7 @@
 // The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --enforcement E`:
 // the case fixes geometry and material, so each case is one compiled solver type. Kernel,
 // correction and rule are chosen at run time by the library's builder (rkpm/solver/make_model.hpp,
-// compiled once per geometry: models.hpp), since they change the model's tables, not the solver's
+// compiled once per geometry in the project's rkpm_instances), since they change the model's tables, not the solver's
 // type; the contact enforcement is contact::enforcement::chosen, which calls the policy the
 // request names (the same numbers as that policy compiled in). Coulomb friction (coefficient 0
 // is frictionless) serves every case.
@@ -19,6 +19,7 @@
 #include <fmt/ranges.h>
 
 #include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/make_model.hpp>
 #include <rkpm/solver/make_solver.hpp>
 #include <rkpm/solver/policies.hpp>
 
@@ -26,7 +27,6 @@
 #include "cases/parameters.hpp"
 #include "memory_estimate.hpp"
 #include "methods.hpp"
-#include "models.hpp"
 #include "outcome.hpp"
 #include "request.hpp"
 #include "run_record.hpp"

@@ -185,3 +185,8 @@ inline std::vector<double> lumped_masses(const discrete_model& m, double density
 }
 
 }  // namespace rkpm
+
+// A program that compiles the shipped policies' models once (see the header).
+#ifdef RKPM_EXTERN_MODELS
+#include <rkpm/solver/model_instances.hpp>
+#endif

@@ -10,8 +10,9 @@
 //   auto solver = rkpm::make_solver<geometry::axisymmetric>(m, std::move(problem), options);
 //
 // make_model instantiates the builders of every named combination (2 x 2 x 11): a program
-// should compile it once per geometry (an explicit instantiation in one file, as
-// tools/runner/models_axisymmetric.cpp does) and declare it `extern template` elsewhere.
+// should compile it once per geometry, with the models themselves (solver/model_instances.hpp:
+// RKPM_INSTANTIATE_MODELS in one file per geometry, RKPM_EXTERN_MODELS in the others, which
+// then see the extern declarations at the end of this header).
 
 #include <optional>
 #include <utility>
@@ -58,3 +59,20 @@ explicit_solver<G, M, Ct> make_solver(const method_names& m, problem<M, Ct> p, c
 }
 
 }  // namespace rkpm
+
+#if defined(RKPM_EXTERN_MODELS) || defined(RKPM_INSTANTIATE_MODELS)
+#include <rkpm/geometry/axisymmetric.hpp>
+#include <rkpm/geometry/plane_strain.hpp>
+namespace rkpm {
+static_assert(decltype(boost::hana::length(policies::kernels))::value == 2 &&
+                  decltype(boost::hana::length(policies::corrections))::value == 2 &&
+                  decltype(boost::hana::length(policies::all_quadratures))::value == 11,
+              "solver/model_instances.hpp lists every shipped kernel, correction and rule: add the new one there");
+#ifdef RKPM_EXTERN_MODELS
+extern template discrete_model make_model<geometry::plane_strain>(const method_names&, particle_set<2>,
+                                                                  background_mesh, double);
+extern template discrete_model make_model<geometry::axisymmetric>(const method_names&, particle_set<2>,
+                                                                  background_mesh, double);
+#endif
+}  // namespace rkpm
+#endif
