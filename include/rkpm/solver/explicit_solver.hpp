@@ -16,7 +16,6 @@
 // exchanges ghost values: after the prediction, after contact and constraints, after the scatter.
 
 #include <algorithm>
-#include <functional>
 #include <utility>
 #include <vector>
 
@@ -25,6 +24,7 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/execution.hpp>
 #include <rkpm/io/checkpoint.hpp>
+#include <rkpm/solver/body_forces.hpp>
 #include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/constraints.hpp>
@@ -70,7 +70,7 @@ class explicit_solver {
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) {
     sections(r, *this);
-    if (body_force_field_) body_force_at(timeline_.time);  // a function of t: not saved
+    f_ext_.restore(timeline_.time, model_.particles.position, mass_);
   }
   bool between_steps() const { return timeline_.between_steps(); }
 
@@ -118,9 +118,7 @@ class explicit_solver {
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
   std::vector<vec2> particle_positions() const { return positions_at_particles(model_, d_); }
   template <class Value, class PointValue>
-  std::vector<Value> project_to_particles(PointValue&& at_point) const {
-    return rkpm::project_to_particles<Value>(model_, at_point);
-  }
+  std::vector<Value> project_to_particles(PointValue&& at_point) const { return rkpm::project_to_particles<Value>(model_, at_point); }
   double kinetic_energy() const {
     return sums_([&](index_t I, block_sums<2>::sums& s) { s[0] += 0.5 * mass_[I] * v_[I].squaredNorm(); })[0];
   }
@@ -139,18 +137,6 @@ class explicit_solver {
     a.part(s.contact_);   // what the run reports of contact, then the policy's state
   }
 
-  // f_ext at the time of the last body_force_at (a constant body force: at any time).
-  vec2 external_force(index_t I) const { return body_force_field_ ? f_ext_[I] : mass_[I] * body_force_; }
-  // f_ext over the step just predicted, for its work: the mean of f_ext(n) and f_ext(n+1).
-  vec2 external_force_over_step(index_t I) const {
-    return body_force_field_ ? vec2(0.5 * (f_ext_before_[I] + f_ext_[I])) : vec2(mass_[I] * body_force_);
-  }
-  // f_ext,I = m_I b(X_I, t) from the problem's body_force_field, on one thread (problem.hpp).
-  void body_force_at(double t) {
-    const auto& X = model_.particles.position;
-    for (index_t I = 0; I < model_.particle_count(); ++I) f_ext_[I] = mass_[I] * body_force_field_(X[I], t);
-  }
-
   // f_int at d; inside a step, at the step's end (the context names it in errors).
   void compute_internal_force() {
     points_.internal_force(model_, materials_, d_, f_int_, {timeline_.current_step(), timeline_.current_time(), timeline_.taking});
@@ -164,9 +150,7 @@ class explicit_solver {
   contact_stage<Ct> contact_;
   run_options options_;
   std::vector<double> mass_;
-  vec2 body_force_ = vec2::Zero();
-  std::function<vec2(const vec2&, double)> body_force_field_;
-  std::vector<vec2> f_ext_, f_ext_before_;  // with a body_force_field: f_ext at t(n+1) and t(n)
+  body_forces f_ext_;
   std::vector<vec2> d_, v_, a_, v_half_prev_, f_int_;
   std::vector<vec2> d_start_;  // d(n) at the particles the constraints touch (constraints_.touched())
   block_sums<2> sums_;
@@ -188,17 +172,10 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
       options_(options) {
   options_.validate();
   model_.own.validate(model_.particle_count(), model_.point_count());
-  const index_t n = model_.particle_count();
   mass_ = materials_.lumped_masses(model_);
-  d_.assign(n, vec2::Zero());
+  d_.assign(model_.particle_count(), vec2::Zero());
   v_ = a_ = v_half_prev_ = f_int_ = d_;
-  body_force_ = prob.body_force;
-  body_force_field_ = std::move(prob.body_force_field);
-  if (body_force_field_) {
-    f_ext_.resize(n);
-    body_force_at(0.0);
-    f_ext_before_ = f_ext_;
-  }
+  f_ext_ = body_forces(prob.body_force, std::move(prob.body_force_field), model_.particles.position, mass_);
   sums_ = block_sums<2>(model_.own.particles.size());  // owned particles come first
   points_ = point_materials<G, M>(model_, materials_);
   add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
@@ -209,7 +186,7 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
   constraints_.apply(0.0, v_);
   v_half_prev_ = v_;
   compute_internal_force();
-  for (index_t I = 0; I < n; ++I) a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
+  for (index_t I = 0; I < model_.particle_count(); ++I) a_[I] = (f_ext_.at(I, mass_) - f_int_[I]) / mass_[I];
   timeline_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
   timeline_.check_budget(options_);
   energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
@@ -238,24 +215,21 @@ void explicit_solver<G, M, Ct>::step() {
     for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
   }
   exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
-  if (body_force_field_) {  // f_ext(n+1), keeping f_ext(n) for the work
-    std::swap(f_ext_before_, f_ext_);
-    body_force_at(timeline_.time + dt);
-  }
+  f_ext_.advance(timeline_.time + dt, model_.particles.position, mass_);
   // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
   // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
   const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
     v_half_prev_[I] = v_[I];
     const vec2 dd = dt * v_[I];
     s[0] += 0.5 * f_int_[I].dot(dd);
-    s[1] += external_force_over_step(I).dot(dd);
+    s[1] += f_ext_.over_step(I, mass_).dot(dd);
   });
   compute_internal_force();
   // The kinetic energy here unless the constraints change v(n+1) afterwards.
   const bool constrained_end = constraints_.size() > 0;
   const auto [work_after, kinetic] = sums_([&](index_t I, block_sums<2>::sums& s) {
     s[0] += 0.5 * f_int_[I].dot(dt * v_[I]);
-    a_[I] = (external_force(I) - f_int_[I]) / mass_[I];
+    a_[I] = (f_ext_.at(I, mass_) - f_int_[I]) / mass_[I];
     v_[I] += 0.5 * dt * a_[I];
     if (!constrained_end) s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
   });
