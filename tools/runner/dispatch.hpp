@@ -2,10 +2,10 @@
 // The run-time dispatch of `rkpm_run CASE --kernel K --correction C --quadrature Q --enforcement E`:
 // the case fixes geometry and material, so each case is one compiled solver type. Kernel,
 // correction and rule are chosen at run time by the library's builder (rkpm/solver/make_model.hpp,
-// compiled once per geometry in the project's rkpm_instances), since they change the model's tables, not the solver's
-// type; the contact enforcement is contact::enforcement::chosen, which calls the policy the
-// request names (the same numbers as that policy compiled in). Coulomb friction (coefficient 0
-// is frictionless) serves every case.
+// compiled once per geometry in the project's rkpm_instances), since they change the model's
+// tables, not the solver's type; the contact enforcement is contact::enforcement::chosen, which
+// calls the policy the request names (the same numbers as that policy compiled in). Coulomb
+// friction (coefficient 0 is frictionless) serves every case.
 
 #include <boost/hana.hpp>
 #include <type_traits>

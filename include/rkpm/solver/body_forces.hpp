@@ -19,7 +19,7 @@ class body_forces {
   body_forces() = default;
   // `X`, `mass`: the particles' reference positions and lumped masses (t = 0 for a field).
   body_forces(vec2 constant, field_type field, const std::vector<vec2>& X, const std::vector<double>& mass)
-      : constant_(std::move(constant)), field_(std::move(field)) {
+      : constant_(constant), field_(std::move(field)) {
     if (!field_) return;
     now_.resize(X.size());
     evaluate(0.0, X, mass);
