@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm::material {
@@ -75,9 +76,10 @@ inline mat3 block_inverse(const mat3& F) {
   return inv;
 }
 
-// The solver guarantees a finite, block-structured F with det F > 0; checking costs a few
-// comparisons and turns a silent NaN stress into an error that says where it came from.
-inline void check_deformation_gradient(const mat3& F, std::string_view who) {
+namespace detail {
+
+// The refusals of check_deformation_gradient, out of the force loop's code (called only on failure).
+[[noreturn, gnu::cold, gnu::noinline]] inline void bad_deformation_gradient(const mat3& F, std::string_view who) {
   if (!F.allFinite())
     fail("{}: the deformation gradient is not finite (F11 = {}, F12 = {}, F21 = {}, F22 = {}, "
          "F33 = {}): the step diverged upstream; reduce the time step",
@@ -87,10 +89,19 @@ inline void check_deformation_gradient(const mat3& F, std::string_view who) {
          "F32 = {}): 2D materials need F = [[F11, F12, 0], [F21, F22, 0], [0, 0, F33]]",
          who, F(0, 2), F(1, 2), F(2, 0), F(2, 1));
   const double J = (F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0)) * F(2, 2);
-  if (!(J > 0.0))
-    fail("{}: det F = {} <= 0 (F11 = {}, F12 = {}, F21 = {}, F22 = {}, F33 = {}): the material "
-         "point is inverted or collapsed; reduce the time step or refine the particles",
-         who, J, F(0, 0), F(0, 1), F(1, 0), F(1, 1), F(2, 2));
+  fail("{}: det F = {} <= 0 (F11 = {}, F12 = {}, F21 = {}, F22 = {}, F33 = {}): the material "
+       "point is inverted or collapsed; reduce the time step or refine the particles",
+       who, J, F(0, 0), F(0, 1), F(1, 0), F(1, 1), F(2, 2));
+}
+
+}  // namespace detail
+
+// The solver guarantees a finite, block-structured F with det F > 0; checking costs a few
+// comparisons and turns a silent NaN stress into an error that says where it came from.
+RKPM_HOT_INLINE void check_deformation_gradient(const mat3& F, std::string_view who) {
+  const double J = (F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0)) * F(2, 2);
+  if (!F.allFinite() || F(0, 2) != 0.0 || F(1, 2) != 0.0 || F(2, 0) != 0.0 || F(2, 1) != 0.0 || !(J > 0.0))
+    detail::bad_deformation_gradient(F, who);
 }
 
 }  // namespace rkpm::material

@@ -23,6 +23,7 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/block_matrix.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/core/joined_name.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/material/elastic_constants.hpp>
@@ -69,7 +70,7 @@ struct j2_trial {
   vec3 dev;               // e^trial (e^e after return_by)
   double q;               // q^trial, the trial von Mises stress
 
-  static j2_trial of(const mat3& F, const block_matrix& b_e_n, const block_matrix& F_n, double mu) {
+  RKPM_HOT_INLINE static j2_trial of(const mat3& F, const block_matrix& b_e_n, const block_matrix& F_n, double mu) {
     // In block arithmetic (core/block_matrix.hpp): the values of the mat3 products, a third
     // of their cost.
     const block_matrix f = block_matrix::of(F) * inverse(F_n);

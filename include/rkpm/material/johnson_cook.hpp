@@ -34,6 +34,7 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/block_matrix.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/material/hardening/johnson_cook.hpp>
@@ -147,7 +148,7 @@ class johnson_cook {
 
   // Advances s from s.previous_deformation to F (dt from step; the temperature is s's) and
   // returns the Kirchhoff stress.
-  mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
+  RKPM_HOT_INLINE mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
     check_deformation_gradient(F, "material::johnson_cook");
     j2_trial t = j2_trial::of(F, s.elastic_left_cauchy_green, s.previous_deformation, mu_);
     s.previous_deformation = block_matrix::of(F);
