@@ -5,9 +5,10 @@
 //   block_forging  shapes.png (0, 20, 40 and 60% compression), tool_force.png (force vs stroke)
 //   wheel_forging  shape.png (final shape with punch and die), punch_force.png
 //   rod_on_rod     shape.png (initial and final sections), radius.png, height.png (both rods)
-// figure_recorder<Case>::observe keeps the deformed cells when the run passes each shape time
-// (and writes them to shape_LABEL.csv for the user's own plots); plot() draws the figures after
-// the run from those shapes and the history the run recorded.
+// figure_recorder<Case>::observe writes the deformed cells to shape_LABEL.csv when the run passes
+// each shape time (for the user's own plots too) and keeps only their bounding box: plot() has
+// gnuplot read the files after the run (a shape held in memory would cost 120 B per cell, as
+// much as a tenth of the solver at 10^6 particles), and draws the history the run recorded.
 
 #include <algorithm>
 #include <filesystem>
@@ -18,6 +19,7 @@
 
 #include <fmt/format.h>
 
+#include <rkpm/core/error.hpp>
 #include <rkpm/io/gnuplot.hpp>
 
 #include "case_traits.hpp"
@@ -71,24 +73,23 @@ class figure_recorder {
   // After a restart: the first `count` shapes, from the shape_LABEL.csv files of the folder
   // `from` the run wrote before (copied into this run's folder when it is another).
   void restore(const std::filesystem::path& from, std::size_t count) {
+    namespace fs = std::filesystem;
     for (next_ = 0; next_ < count && next_ < times_.size(); ++next_) {
-      std::ifstream in(from / ("shape_" + times_[next_].label + ".csv"));
-      if (!in) continue;
-      shape sh{times_[next_].label, {}, {}};
+      const std::string file = "shape_" + times_[next_].label + ".csv";
+      if (!fs::exists(from / file)) continue;
+      if (fs::absolute(from) != fs::absolute(dir_)) fs::copy_file(from / file, dir_ / file, fs::copy_options::overwrite_existing);
+      shape sh{times_[next_].label, dir_ / file};
+      std::ifstream in(sh.csv);
       std::string line;
       std::getline(in, line);  // header
-      polyline current;
       while (std::getline(in, line)) {
         if (line.empty()) {
-          sh.cells.push_back(std::move(current));
-          current.clear();
+          sh.cells = true;  // outlines are separated by blank lines
           continue;
         }
         const auto comma = line.find(',');
-        current.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+        sh.extend(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
       }
-      if (!current.empty()) sh.points = std::move(current);
-      if (std::filesystem::absolute(from) != std::filesystem::absolute(dir_)) write_shape_csv(sh);
       shapes_.push_back(std::move(sh));
     }
   }
@@ -129,45 +130,47 @@ class figure_recorder {
 
   struct shape {
     std::string label;
-    std::vector<polyline> cells;  // one closed outline per background cell, or
-    polyline points;              // the particles, when the cells are not on the particles
+    std::filesystem::path csv;    // shape_LABEL.csv, x_mm,y_mm: what gnuplot draws
+    bool cells = false;           // closed outlines of the cells (blank-line separated), else particles
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};  // bounding box in mm
     std::vector<polyline> tools;  // case files: the tools at the shape's time
+
+    void extend(double x, double y) {
+      lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
+      lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+    }
   };
 
-  // The deformed background cells (their nodes are the particles in the paper's cases).
+  // shape_LABEL.csv: x_mm,y_mm, the deformed background cells (their nodes are the particles in
+  // the paper's cases) as one closed outline per cell followed by a blank line, else the particles.
   template <class Solver>
   void record_shape(const Solver& s, const std::string& label) {
-    const auto x = s.particle_positions();
+    const auto& x = s.particle_positions();
     const auto& mesh = s.model().mesh;
-    shape sh{label, {}, {}};
-    if (mesh.node.size() != x.size()) {
-      for (const vec2& p : x) sh.points.emplace_back(p[0] * 1e3, p[1] * 1e3);
+    shape sh{label, dir_ / ("shape_" + label + ".csv")};
+    sh.cells = mesh.node.size() == x.size();
+    std::ofstream out(sh.csv);
+    out << "x_mm,y_mm\n";
+    const auto row = [&](const vec2& p) {
+      sh.extend(p[0] * 1e3, p[1] * 1e3);
+      out << fmt::format("{},{}\n", p[0] * 1e3, p[1] * 1e3);
+    };
+    if (!sh.cells) {
+      for (const vec2& p : x) row(p);
     } else {
       for (const auto& c : mesh.cell) {
-        polyline outline;
-        for (int k = 0; k <= 4; ++k) outline.emplace_back(x[c[k % 4]][0] * 1e3, x[c[k % 4]][1] * 1e3);
-        sh.cells.push_back(std::move(outline));
+        for (int k = 0; k <= 4; ++k) row(x[c[k % 4]]);
+        out << "\n";
       }
     }
+    if (!out) fail("could not write {}: check the disk space and permissions of the output folder", sh.csv.string());
     if constexpr (is_file_case<Case>)
       for (const auto& tool : s.contact().tools()) {
         polyline line;
         for (const vec2& v : tool.vertices(s.time())) line.emplace_back(v[0] * 1e3, v[1] * 1e3);
         sh.tools.push_back(std::move(line));
       }
-    write_shape_csv(sh);
     shapes_.push_back(std::move(sh));
-  }
-
-  // shape_LABEL.csv: x_mm,y_mm, one outline per cell separated by blank lines.
-  void write_shape_csv(const shape& sh) const {
-    std::ofstream out(dir_ / ("shape_" + sh.label + ".csv"));
-    out << "x_mm,y_mm\n";
-    for (const auto& [x, y] : sh.points) out << fmt::format("{},{}\n", x, y);
-    for (const auto& outline : sh.cells) {
-      for (const auto& [x, y] : outline) out << fmt::format("{},{}\n", x, y);
-      out << "\n";
-    }
   }
 
   // The wheel case's punch (at the end of the stroke) and die, in mm.
@@ -192,16 +195,8 @@ class figure_recorder {
     if (shapes_.empty()) return;
     const auto end_tools = tools_at_end(params_);
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    auto extend = [&](const polyline& line) {
-      for (const auto& [x, y] : line) {
-        lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
-        lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
-      }
-    };
-    for (const auto& sh : shapes_) {
-      extend(sh.points);
-      for (const auto& c : sh.cells) extend(c);
-    }
+    for (const auto& sh : shapes_)
+      for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], sh.lo[d]), hi[d] = std::max(hi[d], sh.hi[d]);
     if constexpr (std::is_same_v<Case, cases::wheel_forging>) {  // show the die wall and the punch
       hi[0] = std::max(hi[0], 36.0);
       hi[1] = std::max(hi[1], (38e-3 - params_.stroke_m) * 1e3 + 4.0);
@@ -219,16 +214,12 @@ class figure_recorder {
     for (std::size_t k = 0; k < shapes_.size(); ++k) {
       const shape& sh = shapes_[k];
       const auto& tools = sh.tools.empty() ? end_tools : sh.tools;
-      fig << fmt::format("set title {}\nplot '-' using 1:2 with {} lc rgb '{}' notitle",
-                         io::gnuplot_quote(sh.label + unit_suffix), sh.cells.empty() ? "points pt 7 ps 0.3" : "lines lw 0.8",
-                         colors[k % 5]);
+      fig << fmt::format("set title {}\nplot {} skip 1 using 1:2 '%lf,%lf' with {} lc rgb '{}' notitle",
+                         io::gnuplot_quote(sh.label + unit_suffix), io::gnuplot_quote(sh.csv.string()),
+                         sh.cells ? "lines lw 0.8" : "points pt 7 ps 0.3", colors[k % 5]);
       for (std::size_t t = 0; t < tools.size(); ++t)
         fig << fmt::format(", '-' using 1:2 with lines lw 3 lc rgb '{}' notitle", t == 0 ? "black" : "gray30");
       fig << "\n";
-      if (sh.cells.empty())
-        fig.send1d(sh.points);
-      else
-        fig.send2d(sh.cells);
       for (const auto& tool : tools) fig.send1d(tool);
     }
     fig << "unset multiplot\n";
