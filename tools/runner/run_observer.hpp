@@ -48,7 +48,6 @@ class run_observer {
         measures_(Case::measure(s, params, mean_force_)),
         history_(dir / "history.csv", column_names(s)),
         vtk_(dir / (case_name<Case>(params) + ".pvd"), record_.snapshots),
-        cells_(io::snapshot_cells(s)),
         figures_(dir, params),
         segment_start_(std::chrono::steady_clock::now()) {
     record_.start_impulse.resize(tools_, vec2::Zero());
@@ -67,7 +66,10 @@ class run_observer {
       record_.next_history += record_.history_interval;
     }
     if (t >= record_.next_snapshot || last) {
-      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), cells_, io::snapshot_fields(s), {},
+      // The cells made anew and the arrays computed one at a time as they are written: at 10^6
+      // particles the cells would hold 41 MB through the run, the raw arrays 200 MB at once.
+      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_cells(s),
+                                         io::snapshot_fields(s, io::field_arrays::deferred), {},
                                          io::snapshot_tools(s));
       record_.snapshots.emplace_back(t, vtu.filename().string());
       record_.next_snapshot += record_.snapshot_interval;
@@ -115,7 +117,6 @@ class run_observer {
   const std::filesystem::path& last_checkpoint() const { return last_checkpoint_; }
   history_table table() const { return {history_.columns(), record_.history_rows}; }
   const figure_recorder<Case>& figures() const { return figures_; }
-  const io::vtu_cells& cells() const { return cells_; }
 
  private:
   // history.csv columns: time, the case's measures, tool forces, energies.
@@ -173,7 +174,6 @@ class run_observer {
   measures measures_;
   io::csv_writer history_;
   io::pvd_series vtk_;
-  io::vtu_cells cells_;  // the snapshots' cells: the model's, the same at every snapshot
   figure_recorder<Case> figures_;
   io::progress_line progress_{false};
   std::chrono::steady_clock::time_point segment_start_;

@@ -28,6 +28,7 @@
 #endif
 
 #include <rkpm/io/field_figure.hpp>
+#include <rkpm/io/solver_output.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 
 #include "case_traits.hpp"
@@ -201,7 +202,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   if (request.plots) {
     try {
       observe.figures().plot(observe.table());
-      final_plastic_strain_png(dir, case_name<Case>(params), s, observe.cells());
+      final_plastic_strain_png(dir, case_name<Case>(params), s, io::snapshot_cells(s));
     } catch (const std::exception& ex) {
       fmt::print(stderr, "rkpm_run: figures skipped: {}\n", ex.what());
     }

@@ -11,9 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <limits>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -45,48 +45,64 @@ inline std::string field_figure_preamble(const std::string& title, const std::st
 }
 
 // points  #points positions (m); cells on them; values  #points; tools  polylines (m).
+// The cells go to gnuplot as text one polygon at a time, never held as rows: at 10^6 cells the
+// rows would take 140 MB, a tenth of the solver's footprint.
 inline void field_png(const std::filesystem::path& png, const std::vector<vec2>& points, const vtu_cells& cells,
                       const std::vector<double>& values, const std::vector<std::vector<vec2>>& tools,
                       const field_figure_options& options) {
   if (values.size() != points.size())
     fail("field_png '{}': {} values for {} points", png.string(), values.size(), points.size());
-  using row = std::tuple<double, double, double>;
-  std::vector<std::vector<row>> polygons;
-  std::vector<row> dots;
+  const auto begin_of = [&](std::size_t c) { return c == 0 ? std::int64_t{0} : cells.offsets[c - 1]; };
+  // The axes: the cells' points with a margin; tools are clipped to it.
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
-  auto at = [&](std::int64_t p, double value) {
-    const double x = points[p][0] * options.scale, y = points[p][1] * options.scale;
-    lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x), lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
-    return row{x, y, value};
-  };
+  bool polygons = false, dots = false;
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    const std::int64_t end = cells.offsets[c], begin = c == 0 ? 0 : cells.offsets[c - 1];
-    if (cells.types[c] == vtk_vertex) {
-      dots.push_back(at(cells.connectivity[begin], values[cells.connectivity[begin]]));
-      continue;
-    }
-    double mean = 0.0;
-    for (std::int64_t k = begin; k < end; ++k) mean += values[cells.connectivity[k]];
-    mean /= static_cast<double>(end - begin);
-    std::vector<row> polygon;
-    for (std::int64_t k = begin; k < end; ++k) polygon.push_back(at(cells.connectivity[k], mean));
-    polygons.push_back(std::move(polygon));
+    (cells.types[c] == vtk_vertex ? dots : polygons) = true;
+    for (std::int64_t k = begin_of(c); k < cells.offsets[c]; ++k)
+      for (int d = 0; d < 2; ++d) {
+        const double x = points[cells.connectivity[k]][d] * options.scale;
+        lo[d] = std::min(lo[d], x), hi[d] = std::max(hi[d], x);
+      }
   }
-  if (polygons.empty() && dots.empty()) fail("field_png '{}': no cells to draw", png.string());
-  // The axes: the body with a margin; tools are clipped to it.
+  if (!polygons && !dots) fail("field_png '{}': no cells to draw", png.string());
   const double pad = 0.05 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
   gnuplot_figure fig(png, {.width = options.width, .height = options.height});
   fig << field_figure_preamble(options.title, options.label)
       << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nplot ", lo[0] - pad, hi[0] + pad, lo[1] - pad,
                      hi[1] + pad);
   std::vector<std::string> plots;  // one '-' each, sent below in the same order
-  if (!polygons.empty()) plots.emplace_back("'-' using 1:2:3 with polygons fillcolor palette");
-  if (!dots.empty()) plots.emplace_back("'-' using 1:2:3 with points pt 7 ps 0.4 lc palette");
+  if (polygons) plots.emplace_back("'-' using 1:2:3 with polygons fillcolor palette");
+  if (dots) plots.emplace_back("'-' using 1:2:3 with points pt 7 ps 0.4 lc palette");
   for (std::size_t t = 0; t < tools.size(); ++t) plots.emplace_back("'-' using 1:2 with lines lw 3 lc rgb 'black'");
   fig << fmt::format("{}\n", fmt::join(plots, ", "));
-  if (!polygons.empty()) fig.send2d(polygons);
-  if (!dots.empty()) fig.send1d(dots);
+  // Inline data: rows "x y value", a blank line after each polygon, "e" at the end of each '-'.
+  std::string rows;
+  const auto row = [&](std::int64_t p, double value) {
+    fmt::format_to(std::back_inserter(rows), "{:.7g} {:.7g} {:.7g}\n", points[p][0] * options.scale,
+                   points[p][1] * options.scale, value);
+    if (rows.size() >= (std::size_t{1} << 16)) {
+      fig << rows;
+      rows.clear();
+    }
+  };
+  if (polygons) {  // each filled with the mean of the field at its nodes
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (cells.types[c] == vtk_vertex) continue;
+      double mean = 0.0;
+      for (std::int64_t k = begin_of(c); k < cells.offsets[c]; ++k) mean += values[cells.connectivity[k]];
+      mean /= static_cast<double>(cells.offsets[c] - begin_of(c));
+      for (std::int64_t k = begin_of(c); k < cells.offsets[c]; ++k) row(cells.connectivity[k], mean);
+      rows += "\n";
+    }
+    rows += "e\n";
+  }
+  if (dots) {
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      if (cells.types[c] == vtk_vertex) row(cells.connectivity[begin_of(c)], values[cells.connectivity[begin_of(c)]]);
+    rows += "e\n";
+  }
+  fig << rows;
   for (const auto& tool : tools) {
     std::vector<std::pair<double, double>> line;
     for (const vec2& v : tool) line.emplace_back(v[0] * options.scale, v[1] * options.scale);

@@ -8,6 +8,7 @@
 //                        stress, equivalent plastic strain, det F, and every extra double a
 //                        material state lists in `output_fields()` (temperature, damage, ...)
 //                        that is not NaN at every point (a state a material leaves unused);
+//                        with field_arrays::deferred, each computed only when a writer asks;
 //   snapshot_cells(s)    the cells of a snapshot: the model's background cells as quads when the
 //                        particles are their nodes (grids, Gmsh bodies), else a vertex per
 //                        particle (io/vtu_cells.hpp); the same for every snapshot of a run;
@@ -29,10 +30,13 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/energy.hpp>
+#include <rkpm/solver/fields.hpp>
 
 namespace rkpm::io {
 
@@ -61,25 +65,42 @@ inline std::array<named_value, 9> energy_terms(const energy_balance& e) {
 template <class State>
 concept has_output_fields = requires { State::output_fields(); };
 
+// When a snapshot's arrays are computed: now (a point_data the caller reads), or deferred to
+// the writer (io/vtk.hpp), one at a time, for a snapshot written at once from a solver that
+// outlives the write.
+enum class field_arrays { now, deferred };
+
 template <class Solver>
-point_data snapshot_fields(const Solver& s) {
+point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::now) {
   using state_type = typename Solver::state_type;
   point_data data;
-  data.add("displacement", s.particle_displacements());
-  data.add("velocity", s.particle_velocities());
-  data.add("stress", s.template project_to_particles<mat3>([&](index_t q) { return s.point_cauchy_stress(q); }));
-  data.add("equivalent_plastic_strain", s.template project_to_particles<double>([&](index_t q) {
-    return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
-  }));
-  data.add("det_F", s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); }));
+  const auto add = [&](std::string name, int components, point_data::producer produce) {
+    if (when == field_arrays::deferred) data.add_deferred(std::move(name), components, std::move(produce));
+    else data.add_values(std::move(name), components, produce());
+  };
+  add("displacement", 3, [&s] { return point_data::flat(s.particle_displacements()); });
+  add("velocity", 3, [&s] { return point_data::flat(s.particle_velocities()); });
+  add("stress", 9, [&s] {  // row-major, projected straight into the file's layout
+    return project_to_particles_flat<9>(s.model(), [&](index_t q) {
+      const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> sigma = s.point_cauchy_stress(q);
+      return Eigen::Matrix<double, 9, 1>(Eigen::Map<const Eigen::Matrix<double, 9, 1>>(sigma.data()));
+    });
+  });
+  add("equivalent_plastic_strain", 1, [&s] {
+    return s.template project_to_particles<double>([&](index_t q) {
+      return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
+    });
+  });
+  add("det_F", 1, [&s] { return s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); }); });
   if constexpr (has_output_fields<state_type>)
     for (const auto& [name, member] : state_type::output_fields()) {
       const auto& states = s.point_states();
       if (std::all_of(states.begin(), states.end(), [m = member](const state_type& st) { return std::isnan(st.*m); }))
         continue;
-      data.add(std::string(name), s.template project_to_particles<double>([&, m = member](index_t q) {
-        return static_cast<double>(states[q].*m);
-      }));
+      add(std::string(name), 1, [&s, m = member] {
+        return s.template project_to_particles<double>(
+            [&](index_t q) { return static_cast<double>(s.point_states()[q].*m); });
+      });
     }
   return data;
 }

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iterator>
 #include <span>
 #include <string>
@@ -43,13 +44,17 @@
 namespace rkpm::io {
 
 // Named per-particle arrays of one snapshot, in the order they were added (ParaView lists them
-// in that order). Values are copied: a snapshot is written once, not every step.
+// in that order). Values are copied: a snapshot is written once, not every step. A deferred
+// array is computed only when write_vtu reaches it and let go once encoded, so that a writer of
+// many large arrays holds one of them raw at a time (the runner's snapshots at 10^6 particles).
 class point_data {
  public:
+  using producer = std::function<std::vector<double>()>;
   struct array {
     std::string name;
     int components;              // 1 scalar, 3 vector (2D + zero z), 9 tensor (row-major)
-    std::vector<double> values;  // #points * components, point-major
+    std::vector<double> values;  // #points * components, point-major; empty while deferred
+    producer produce = {};       // set for a deferred array: returns its values
   };
 
   // values  #points scalars
@@ -63,30 +68,48 @@ class point_data {
     return add_flat(std::move(name), 1, std::move(values));
   }
   // values  #points 2-vectors, written as 3 components with z = 0 so ParaView shows vectors
-  point_data& add(std::string name, const std::vector<vec2>& values) {
-    std::vector<double> flat;
-    flat.reserve(3 * values.size());
-    for (const auto& v : values) flat.insert(flat.end(), {v.x(), v.y(), 0.0});
-    return add_flat(std::move(name), 3, std::move(flat));
-  }
+  point_data& add(std::string name, const std::vector<vec2>& values) { return add_flat(std::move(name), 3, flat(values)); }
   // values  #points 3x3 tensors, written row-major (xx xy xz yx yy yz zx zy zz) as VTK expects
-  point_data& add(std::string name, const std::vector<mat3>& values) {
-    std::vector<double> flat;
-    flat.reserve(9 * values.size());
+  point_data& add(std::string name, const std::vector<mat3>& values) { return add_flat(std::move(name), 9, flat(values)); }
+
+  // values  #points * components, point-major (the flat form of any of the above).
+  point_data& add_values(std::string name, int components, std::vector<double> values) {
+    return add_flat(std::move(name), components, std::move(values));
+  }
+  // values computed when written: produce() returns #points * components values, point-major.
+  point_data& add_deferred(std::string name, int components, producer produce) {
+    check_name(name);
+    arrays_.push_back(array{std::move(name), components, {}, std::move(produce)});
+    return *this;
+  }
+
+  // The point-major form of the overloads above: #points 2-vectors as (x, y, 0), 3x3 tensors row-major.
+  static std::vector<double> flat(const std::vector<vec2>& values) {
+    std::vector<double> out;
+    out.reserve(3 * values.size());
+    for (const auto& v : values) out.insert(out.end(), {v.x(), v.y(), 0.0});
+    return out;
+  }
+  static std::vector<double> flat(const std::vector<mat3>& values) {
+    std::vector<double> out;
+    out.reserve(9 * values.size());
     for (const auto& m : values)
       for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) flat.push_back(m(r, c));
-    return add_flat(std::move(name), 9, std::move(flat));
+        for (int c = 0; c < 3; ++c) out.push_back(m(r, c));
+    return out;
   }
 
   const std::vector<array>& arrays() const { return arrays_; }
   bool empty() const { return arrays_.empty(); }
 
  private:
-  point_data& add_flat(std::string name, int components, std::vector<double> flat) {
+  void check_name(const std::string& name) const {
     if (name.empty()) fail("point_data: empty array name; give every array a name");
     for (const auto& a : arrays_)
       if (a.name == name) fail("point_data: array \"{}\" added twice; give each array a distinct name", name);
+  }
+  point_data& add_flat(std::string name, int components, std::vector<double> flat) {
+    check_name(name);
     arrays_.push_back(array{std::move(name), components, std::move(flat)});
     return *this;
   }
@@ -121,10 +144,13 @@ inline void check_cells(const std::filesystem::path& path, const vtu_cells& cell
 inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points, const vtu_cells& cells,
                       const point_data& data, const vtu_format& format = {}, const point_data& field_arrays = {}) {
   const std::size_t n = points.size();
-  for (const auto& a : data.arrays())
-    if (a.values.size() != n * static_cast<std::size_t>(a.components))
+  const auto check_size = [&](const point_data::array& a, std::size_t size) {
+    if (size != n * static_cast<std::size_t>(a.components))
       fail("write_vtu '{}': array \"{}\" has {} entries for {} points; give one per particle",
-           path.string(), a.name, a.values.size() / static_cast<std::size_t>(a.components), n);
+           path.string(), a.name, size / static_cast<std::size_t>(a.components), n);
+  };
+  for (const auto& a : data.arrays())
+    if (!a.produce) check_size(a, a.values.size());
   detail::check_cells(path, cells, n);
   std::string out;
   detail::vtu_arrays arrays(out, format);
@@ -155,8 +181,20 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
   fmt::format_to(std::back_inserter(out), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, cells.size());
 
   out += "      <PointData>\n";
-  for (const auto& a : data.arrays())
-    arrays.add("Float64", a.name, a.components, std::span<const double>(a.values));
+  // A deferred array's values live until encoded, or to the end when the appended block refers
+  // to them uncompressed.
+  const bool keep_produced = format.encoding == vtu_encoding::appended && arrays.format().compression == vtu_compression::none;
+  std::vector<std::vector<double>> produced;
+  for (const auto& a : data.arrays()) {
+    if (!a.produce) {
+      arrays.add("Float64", a.name, a.components, std::span<const double>(a.values));
+      continue;
+    }
+    std::vector<double> values = a.produce();
+    check_size(a, values.size());
+    arrays.add("Float64", a.name, a.components, std::span<const double>(values));
+    if (keep_produced) produced.push_back(std::move(values));
+  }
   out += "      </PointData>\n";
 
   std::vector<double> xyz(3 * n);

@@ -4,7 +4,10 @@
 // quadrature-point quantity reaches the particles by the lumped L2 projection
 //   value_I = sum_q N_I(X_q) w_q value_q / sum_q N_I(X_q) w_q.
 
+#include <cstddef>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include <rkpm/solver/discrete_model.hpp>
 
@@ -35,6 +38,23 @@ std::vector<Value> project_to_particles(const discrete_model& m, PointValue&& at
     for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) out[t.neighbor[e]] += t.N[e] * m.points.weight[q] * value;
   }
   for (index_t I = 0; I < m.particle_count(); ++I) out[I] = out[I] / m.lumped_volume[I];
+  return out;
+}
+
+// The same into point-major rows of Components doubles, with no array of Eigen values beside
+// them: at_point(q) returns an Eigen vector of Components values (a tensor's components in the
+// order a file wants them). The same arithmetic as project_to_particles, value by value.
+template <int Components, class PointValue>
+std::vector<double> project_to_particles_flat(const discrete_model& m, PointValue&& at_point) {
+  using row = Eigen::Matrix<double, Components, 1>;
+  const auto& t = m.at_points;
+  std::vector<double> out(static_cast<std::size_t>(Components) * m.particle_count(), 0.0);
+  const auto at = [&](index_t I) { return Eigen::Map<row>(out.data() + static_cast<std::size_t>(Components) * I); };
+  for (index_t q = 0; q < m.point_count(); ++q) {
+    const row value = at_point(q);
+    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) at(t.neighbor[e]) += t.N[e] * m.points.weight[q] * value;
+  }
+  for (index_t I = 0; I < m.particle_count(); ++I) at(I) = at(I) / m.lumped_volume[I];
   return out;
 }
 

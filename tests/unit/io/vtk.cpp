@@ -88,6 +88,11 @@ snapshot make(int n) {
   return s;
 }
 
+std::string file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 fs::path vtk_scratch() {
   auto dir = fs::temp_directory_path() / ("rkpm_unit_io_vtk_" + std::to_string(::getpid()));
   return dir;
@@ -305,6 +310,45 @@ TEST_CASE("vtu: an array of the wrong length is refused, naming the array") {
   rkpm::io::point_data twice;
   twice.add("a", std::vector<double>(4, 0.0));
   CHECK_THROWS_AS(twice.add("a", std::vector<double>(4, 0.0)), rkpm::error);
+}
+
+TEST_CASE("vtu: deferred arrays write the same bytes as the arrays given, each computed once when written") {
+  const auto dir = vtk_scratch() / "deferred";
+  const auto s = make(1500);
+  // The same arrays, each produced by a call that counts itself.
+  int calls = 0;
+  rkpm::io::point_data deferred;
+  for (const auto& a : s.data.arrays())
+    deferred.add_deferred(a.name, a.components, [&calls, values = a.values] {
+      ++calls;
+      return values;
+    });
+  for (const auto& a : deferred.arrays()) CHECK(a.values.empty());  // nothing computed yet
+  std::vector<vtu_compression> compressions{vtu_compression::none};
+  if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
+  for (auto e : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii})
+    for (auto c : compressions) {
+      CAPTURE(name(e));
+      CAPTURE(name(c));
+      const vtu_format f{e, c};
+      rkpm::io::write_vtu(dir / "given.vtu", s.points, s.data, f);
+      calls = 0;
+      rkpm::io::write_vtu(dir / "deferred.vtu", s.points, deferred, f);
+      CHECK(calls == static_cast<int>(s.data.arrays().size()));
+      CHECK(file_bytes(dir / "given.vtu") == file_bytes(dir / "deferred.vtu"));
+    }
+  // A deferred array of the wrong length is refused by name when it is computed, and no file is left.
+  rkpm::io::point_data bad;
+  bad.add_deferred("temperature_K", 1, [] { return std::vector<double>(7, 294.0); });
+  try {
+    rkpm::io::write_vtu(dir / "bad.vtu", s.points, bad);
+    FAIL("no exception");
+  } catch (const rkpm::error& e) {
+    CHECK(std::string(e.what()).find("temperature_K") != std::string::npos);
+  }
+  CHECK_FALSE(fs::exists(dir / "bad.vtu"));
+  CHECK_THROWS_AS(bad.add_deferred("temperature_K", 1, [] { return std::vector<double>(); }), rkpm::error);
+  fs::remove_all(dir);
 }
 
 TEST_CASE("pvd: the index is valid after every addition and lists each added file") {

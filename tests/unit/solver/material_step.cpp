@@ -96,6 +96,22 @@ TEST_CASE("every material update is told the step's dt, its end time and the poi
   REQUIRE(temperature != arrays.end());
   CHECK(temperature->values.size() == static_cast<std::size_t>(s.model().particle_count()));
   for (double T : temperature->values) CHECK(T == doctest::Approx(heated).epsilon(1e-10));
+
+  // Deferred (the runner's snapshots: each array computed when written), the same arrays bit for
+  // bit; the stress, projected straight into rows, the row-major projection of the tensors.
+  const io::point_data deferred = io::snapshot_fields(s, io::field_arrays::deferred);
+  REQUIRE(deferred.arrays().size() == arrays.size());
+  for (std::size_t k = 0; k < arrays.size(); ++k) {
+    CAPTURE(arrays[k].name);
+    CHECK(deferred.arrays()[k].name == arrays[k].name);
+    CHECK(deferred.arrays()[k].components == arrays[k].components);
+    CHECK(deferred.arrays()[k].values.empty());
+    CHECK(deferred.arrays()[k].produce() == arrays[k].values);
+  }
+  const auto stress = std::find_if(arrays.begin(), arrays.end(), [](const auto& a) { return a.name == "stress"; });
+  REQUIRE(stress != arrays.end());
+  CHECK(stress->values ==
+        io::point_data::flat(s.project_to_particles<mat3>([&](index_t q) { return s.point_cauchy_stress(q); })));
 }
 
 TEST_CASE("a law that needs nothing of the step keeps its two-argument form") {
