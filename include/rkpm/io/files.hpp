@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,30 +28,40 @@ inline void ensure_parent_directory(const std::filesystem::path& path) {
          parent.string(), path.string(), ec ? ec.message() : "not a directory");
 }
 
-// Writes `content` to `path` through a temporary file in the same directory and a rename,
-// which POSIX makes atomic: readers (ParaView polling a .pvd, a crashed run) never see a
-// truncated file.
-// `pieces`: the content in pieces, written one after the other (a large file need not be
-// joined into one string first).
-inline void replace_file(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
+// Writes `path` through a temporary file in the same directory and a rename, which POSIX makes
+// atomic: readers (ParaView polling a .pvd, a crashed run) never see a truncated file. `write`
+// writes the content to the temporary file (a binary std::ofstream, which it may seek in); if
+// it throws, the temporary file is removed and `path` left as it was.
+inline void replace_file_with(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
   ensure_parent_directory(path);
   auto tmp = path;
   tmp += ".tmp";
-  {
+  std::error_code ec;
+  try {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out)
       fail("cannot open '{}' for writing: check that the directory is writable", tmp.string());
-    for (const std::string_view content : pieces) out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    write(out);
     out.flush();
     if (!out) fail("error while writing '{}': check free disk space", tmp.string());
+  } catch (...) {
+    std::filesystem::remove(tmp, ec);
+    throw;
   }
-  std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
     std::filesystem::remove(tmp, ec);
     fail("cannot rename '{}' to '{}': check that the target is not a directory and is writable",
          tmp.string(), path.string());
   }
+}
+
+// The same with the content in pieces, written one after the other (a large file need not be
+// joined into one string first).
+inline void replace_file(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
+  replace_file_with(path, [&](std::ostream& out) {
+    for (const std::string_view content : pieces) out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  });
 }
 
 inline void replace_file(const std::filesystem::path& path, std::string_view content) {

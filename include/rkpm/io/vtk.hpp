@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <functional>
 #include <iterator>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -181,30 +182,29 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
   fmt::format_to(std::back_inserter(out), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, cells.size());
 
   out += "      <PointData>\n";
-  // A deferred array's values live until encoded, or to the end when the appended block refers
-  // to them uncompressed.
-  const bool keep_produced = format.encoding == vtu_encoding::appended && arrays.format().compression == vtu_compression::none;
-  std::vector<std::vector<double>> produced;
+  // A deferred array is made when its block is written (appended) or now, and let go once encoded.
   for (const auto& a : data.arrays()) {
     if (!a.produce) {
       arrays.add("Float64", a.name, a.components, std::span<const double>(a.values));
       continue;
     }
-    std::vector<double> values = a.produce();
-    check_size(a, values.size());
-    arrays.add("Float64", a.name, a.components, std::span<const double>(values));
-    if (keep_produced) produced.push_back(std::move(values));
+    arrays.add_produced(a.name, a.components, [&a, &check_size] {
+      std::vector<double> values = a.produce();
+      check_size(a, values.size());
+      return values;
+    });
   }
   out += "      </PointData>\n";
-
-  std::vector<double> xyz(3 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    xyz[3 * i] = points[i].x();
-    xyz[3 * i + 1] = points[i].y();
-    xyz[3 * i + 2] = 0.0;
-  }
   out += "      <Points>\n";
-  arrays.add("Float64", "Points", 3, std::span<const double>(xyz));
+  arrays.add_produced("Points", 3, [&points] {  // (x, y) -> (x, y, 0)
+    std::vector<double> xyz(3 * points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      xyz[3 * i] = points[i].x();
+      xyz[3 * i + 1] = points[i].y();
+      xyz[3 * i + 2] = 0.0;
+    }
+    return xyz;
+  });
   out += "      </Points>\n";
 
   out += "      <Cells>\n";
@@ -214,8 +214,7 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
   out += "      </Cells>\n"
          "    </Piece>\n"
          "  </UnstructuredGrid>\n";
-  const auto pieces = arrays.finish("</VTKFile>\n");
-  replace_file(path, pieces);
+  replace_file_with(path, [&](std::ostream& file) { arrays.write(file, "</VTKFile>\n"); });
 }
 
 // The same with every point a VTK_VERTEX cell.

@@ -1,8 +1,8 @@
 #pragma once
 // How rkpm writes the DataArrays of a VTK XML file (used by io/vtk.hpp; docs/method.md section
 // 9.4): the format options (encoding, compression) and the encoder that writes each array's
-// XML and collects the raw appended block, handed to the file as pieces (the arrays' bytes are
-// not copied into one string). Arrays as VTK's own vtkXMLWriter writes them (header_type
+// XML and then the file, the raw appended block one array at a time (no array's bytes copied
+// into one string, no more than one array's encoded block held). Arrays as VTK's own vtkXMLWriter writes them (header_type
 // UInt64, native byte order); zlib compression (compressor="vtkZLibDataCompressor", blocks of
 // 32 KiB compressed in parallel: io/vtu_zlib.hpp) when compiled with RKPM_WITH_LIBDEFLATE and
 // linked with libdeflate, or with RKPM_WITH_ZLIB and linked with zlib.
@@ -11,7 +11,9 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <iterator>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -116,21 +118,22 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
   return block;
 }
 
-// Writes the XML of the DataArrays and collects the appended block: one object per file.
+// Writes the XML of the DataArrays and then the file: one object per file. Appended arrays are
+// encoded (compressed) only when the file is written, one after the other, each block written
+// and let go before the next is made, so that a file never holds more than one array's block in
+// memory; their offsets, known only then, go into space reserved for them in the XML.
 class vtu_arrays {
  public:
   vtu_arrays(std::string& xml, const vtu_format& format) : xml_(xml), format_(format) {
     if (format_.encoding == vtu_encoding::ascii) format_.compression = vtu_compression::none;
   }
 
-  // `tuples`: written as NumberOfTuples when given (the arrays of <FieldData> need it).
+  // `tuples`: written as NumberOfTuples when given (the arrays of <FieldData> need it). The
+  // values must live until write() has returned.
   template <class T>
   void add(std::string_view type, std::string_view name, int components, std::span<const T> values,
            std::size_t tuples = 0) {
-    fmt::format_to(std::back_inserter(xml_), "        <DataArray type=\"{}\"", type);
-    if (!name.empty()) fmt::format_to(std::back_inserter(xml_), " Name=\"{}\"", xml_escape(name));
-    if (tuples > 0) fmt::format_to(std::back_inserter(xml_), " NumberOfTuples=\"{}\"", tuples);
-    if (components > 1) fmt::format_to(std::back_inserter(xml_), " NumberOfComponents=\"{}\"", components);
+    open_element(type, name, components, tuples);
     switch (format_.encoding) {
       case vtu_encoding::ascii:
         xml_ += " format=\"ascii\">";
@@ -161,63 +164,86 @@ class vtu_arrays {
         return;
       }
       case vtu_encoding::appended:
-        blocks_.push_back(encode(values, name));
-        xml_ += " format=\"appended\" offset=\"";
-        marks_.push_back(xml_.size());  // the offset is written by finish()
-        xml_ += "\"/>\n";
+        add_appended([this, values, name = std::string(name)](std::ostream& out) {
+          return write_block(out, encode(values, name));
+        });
         return;
     }
   }
 
-  // After the last array and the closing </UnstructuredGrid>: the whole file as pieces to write
-  // one after the other (no copy of the arrays' bytes into one string): the XML with every
-  // appended array's offset, the raw <AppendedData> block, and `tail`. The pieces point into this
-  // object and into the arrays given to add(), which must outlive them.
+  // A Float64 array whose values produce() makes: when its block is written (appended), else now.
+  void add_produced(std::string_view name, int components, std::function<std::vector<double>()> produce) {
+    if (format_.encoding != vtu_encoding::appended) {
+      const std::vector<double> values = produce();
+      add("Float64", name, components, std::span<const double>(values));
+      return;
+    }
+    open_element("Float64", name, components, 0);
+    add_appended([this, produce = std::move(produce), name = std::string(name)](std::ostream& out) {
+      const std::vector<double> values = produce();
+      return write_block(out, encode(std::span<const double>(values), name));
+    });
+  }
+
+  // After the last array and the closing </UnstructuredGrid>: writes the whole file, the XML, the
+  // raw <AppendedData> block and `tail`, to `out` (a file open for writing in binary mode, which
+  // is sought back into to fill in the offsets).
   // The arrays lie in the appended block in reverse order of the XML. Any order is valid VTK
   // (each array is read at its offset); this one is also read right by meshio 7, whose raw
   // reader rewrites the offsets in place while looking arrays up by offset in document order,
   // so that in document order a rewritten offset of an earlier array can equal the raw offset of
   // a later one and shadow it.
-  std::vector<std::string_view> finish(std::string_view tail) {
-    tail_ = tail;
+  void write(std::ostream& out, std::string_view tail) {
     if (format_.encoding != vtu_encoding::appended) {
-      xml_ += tail_;
-      return {xml_};
+      out << xml_ << tail;
+      return;
     }
-    std::vector<std::size_t> offset(blocks_.size());
-    std::size_t bytes = 0;
-    for (std::size_t k = blocks_.size(); k-- > 0;) {
-      offset[k] = bytes;
-      bytes += blocks_[k].size();
-    }
-    std::string head;
-    head.reserve(xml_.size() + 24 * blocks_.size() + 64);
-    std::size_t from = 0;
-    for (std::size_t k = 0; k < blocks_.size(); ++k) {
-      head.append(xml_, from, marks_[k] - from);
-      fmt::format_to(std::back_inserter(head), "{}", offset[k]);
-      from = marks_[k];
-    }
-    head.append(xml_, from);
     // "_" marks offset 0; the newline after the last byte is not data.
-    head += "  <AppendedData encoding=\"raw\">\n   _";
-    xml_ = std::move(head);
-    tail_.insert(0, "\n  </AppendedData>\n");
-    std::vector<std::string_view> pieces{xml_};
-    auto view = [](std::span<const unsigned char> b) {
-      return std::string_view(reinterpret_cast<const char*>(b.data()), b.size());
-    };
-    for (std::size_t k = blocks_.size(); k-- > 0;) {
-      pieces.push_back(view(blocks_[k].header));
-      pieces.push_back(view(blocks_[k].body()));
+    xml_ += "  <AppendedData encoding=\"raw\">\n   _";
+    const std::streamoff head = out.tellp();
+    out << xml_;
+    const std::streamoff data = out.tellp();
+    std::vector<std::uint64_t> offset(writers_.size());
+    for (std::size_t k = writers_.size(); k-- > 0;) {
+      offset[k] = static_cast<std::uint64_t>(out.tellp() - data);
+      writers_[k](out);
     }
-    pieces.push_back(tail_);
-    return pieces;
+    out << "\n  </AppendedData>\n" << tail;
+    const std::streamoff end = out.tellp();
+    for (std::size_t k = 0; k < writers_.size(); ++k) {
+      std::string value = fmt::format("{}\"", offset[k]);
+      value.resize(reserved_offset_width, ' ');  // spaces before "/>" are nothing to a reader
+      out.seekp(head + static_cast<std::streamoff>(marks_[k]));
+      out << value;
+    }
+    out.seekp(end);
   }
 
   const vtu_format& format() const { return format_; }
 
  private:
+  // Digits of any 64-bit offset and the closing quote.
+  static constexpr std::size_t reserved_offset_width = 21;
+
+  void open_element(std::string_view type, std::string_view name, int components, std::size_t tuples) {
+    fmt::format_to(std::back_inserter(xml_), "        <DataArray type=\"{}\"", type);
+    if (!name.empty()) fmt::format_to(std::back_inserter(xml_), " Name=\"{}\"", xml_escape(name));
+    if (tuples > 0) fmt::format_to(std::back_inserter(xml_), " NumberOfTuples=\"{}\"", tuples);
+    if (components > 1) fmt::format_to(std::back_inserter(xml_), " NumberOfComponents=\"{}\"", components);
+  }
+  void add_appended(std::function<std::size_t(std::ostream&)> writer) {
+    xml_ += " format=\"appended\" offset=\"";
+    marks_.push_back(xml_.size());  // the offset is written by write()
+    xml_ += std::string(reserved_offset_width, ' ');
+    xml_ += "/>\n";
+    writers_.push_back(std::move(writer));
+  }
+  static std::size_t write_block(std::ostream& out, const binary_block& block) {
+    out.write(reinterpret_cast<const char*>(block.header.data()), static_cast<std::streamsize>(block.header.size()));
+    const auto body = block.body();
+    out.write(reinterpret_cast<const char*>(body.data()), static_cast<std::streamsize>(body.size()));
+    return block.size();
+  }
   template <class T>
   binary_block encode(std::span<const T> values, std::string_view name) const {
     return encode_binary(reinterpret_cast<const unsigned char*>(values.data()), values.size_bytes(), format_,
@@ -226,9 +252,10 @@ class vtu_arrays {
 
   std::string& xml_;
   vtu_format format_;
-  std::vector<binary_block> blocks_;  // appended: each array's bytes, in XML order
-  std::vector<std::size_t> marks_;    // appended: where each array's offset goes in xml_
-  std::string tail_;                  // what follows the appended block
+  // appended: what writes each array's block (encoding it then), and where its offset goes in
+  // xml_, in XML order
+  std::vector<std::function<std::size_t(std::ostream&)>> writers_;
+  std::vector<std::size_t> marks_;
 };
 
 }  // namespace detail
