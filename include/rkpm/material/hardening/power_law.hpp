@@ -43,6 +43,8 @@ struct power_law {
   }
 
   double flow_stress(double eps_p) const { return coefficient * std::pow(base(eps_p), exponent); }
+  // The curve's lowest value, at eps_p = 0 (exponent >= 0: it only rises).
+  double lowest_flow_stress() const { return flow_stress(0.0); }
   double slope(double eps_p) const {
     return coefficient * exponent * std::pow(base(eps_p), exponent - 1.0);
   }

@@ -50,6 +50,8 @@ struct voce {
   double flow_stress(double eps_p) const {
     return yield_stress - saturation_stress * std::expm1(-saturation_rate * eps_p) + modulus * eps_p;
   }
+  // The curve's lowest value, at eps_p = 0 (Q, H >= 0: it only rises).
+  double lowest_flow_stress() const { return flow_stress(0.0); }
   double slope(double eps_p) const {
     return saturation_stress * saturation_rate * std::exp(-saturation_rate * eps_p) + modulus;
   }
