@@ -77,7 +77,8 @@ class figure_recorder {
     for (next_ = 0; next_ < count && next_ < times_.size(); ++next_) {
       const std::string file = "shape_" + times_[next_].label + ".csv";
       if (!fs::exists(from / file)) continue;
-      if (fs::absolute(from) != fs::absolute(dir_)) fs::copy_file(from / file, dir_ / file, fs::copy_options::overwrite_existing);
+      if (fs::absolute(from) != fs::absolute(dir_))
+        fs::copy_file(from / file, dir_ / file, fs::copy_options::overwrite_existing);
       shape sh{times_[next_].label, dir_ / file};
       std::ifstream in(sh.csv);
       std::string line;

@@ -60,7 +60,8 @@ inline void replace_file_with(const std::filesystem::path& path, const std::func
 // joined into one string first).
 inline void replace_file(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
   replace_file_with(path, [&](std::ostream& out) {
-    for (const std::string_view content : pieces) out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    for (const std::string_view content : pieces)
+      out.write(content.data(), static_cast<std::streamsize>(content.size()));
   });
 }
 

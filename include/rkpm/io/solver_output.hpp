@@ -91,7 +91,9 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
       return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
     });
   });
-  add("det_F", 1, [&s] { return s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); }); });
+  add("det_F", 1, [&s] {
+    return s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); });
+  });
   if constexpr (has_output_fields<state_type>)
     for (const auto& [name, member] : state_type::output_fields()) {
       const auto& states = s.point_states();

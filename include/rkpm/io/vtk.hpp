@@ -60,22 +60,28 @@ class point_data {
 
   // values  #points scalars
   point_data& add(std::string name, std::span<const double> values) {
-    return add_flat(std::move(name), 1, std::vector<double>(values.begin(), values.end()));
+    return add_values(std::move(name), 1, std::vector<double>(values.begin(), values.end()));
   }
   point_data& add(std::string name, const std::vector<double>& values) {
     return add(std::move(name), std::span<const double>(values));
   }
   point_data& add(std::string name, std::vector<double>&& values) {  // taken, not copied
-    return add_flat(std::move(name), 1, std::move(values));
+    return add_values(std::move(name), 1, std::move(values));
   }
   // values  #points 2-vectors, written as 3 components with z = 0 so ParaView shows vectors
-  point_data& add(std::string name, const std::vector<vec2>& values) { return add_flat(std::move(name), 3, flat(values)); }
+  point_data& add(std::string name, const std::vector<vec2>& values) {
+    return add_values(std::move(name), 3, flat(values));
+  }
   // values  #points 3x3 tensors, written row-major (xx xy xz yx yy yz zx zy zz) as VTK expects
-  point_data& add(std::string name, const std::vector<mat3>& values) { return add_flat(std::move(name), 9, flat(values)); }
+  point_data& add(std::string name, const std::vector<mat3>& values) {
+    return add_values(std::move(name), 9, flat(values));
+  }
 
   // values  #points * components, point-major (the flat form of any of the above).
   point_data& add_values(std::string name, int components, std::vector<double> values) {
-    return add_flat(std::move(name), components, std::move(values));
+    check_name(name);
+    arrays_.push_back(array{std::move(name), components, std::move(values)});
+    return *this;
   }
   // values computed when written: produce() returns #points * components values, point-major.
   point_data& add_deferred(std::string name, int components, producer produce) {
@@ -108,11 +114,6 @@ class point_data {
     if (name.empty()) fail("point_data: empty array name; give every array a name");
     for (const auto& a : arrays_)
       if (a.name == name) fail("point_data: array \"{}\" added twice; give each array a distinct name", name);
-  }
-  point_data& add_flat(std::string name, int components, std::vector<double> flat) {
-    check_name(name);
-    arrays_.push_back(array{std::move(name), components, std::move(flat)});
-    return *this;
   }
   std::vector<array> arrays_;
 };

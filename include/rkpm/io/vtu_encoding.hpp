@@ -2,10 +2,11 @@
 // How rkpm writes the DataArrays of a VTK XML file (used by io/vtk.hpp; docs/method.md section
 // 9.4): the format options (encoding, compression) and the encoder that writes each array's
 // XML and then the file, the raw appended block one array at a time (no array's bytes copied
-// into one string, no more than one array's encoded block held). Arrays as VTK's own vtkXMLWriter writes them (header_type
-// UInt64, native byte order); zlib compression (compressor="vtkZLibDataCompressor", blocks of
-// 32 KiB compressed in parallel: io/vtu_zlib.hpp) when compiled with RKPM_WITH_LIBDEFLATE and
-// linked with libdeflate, or with RKPM_WITH_ZLIB and linked with zlib.
+// into one string, no more than one array's encoded block held). Arrays as VTK's own
+// vtkXMLWriter writes them (header_type UInt64, native byte order); zlib compression
+// (compressor="vtkZLibDataCompressor", blocks of 32 KiB compressed in parallel: io/vtu_zlib.hpp)
+// when compiled with RKPM_WITH_LIBDEFLATE and linked with libdeflate, or with RKPM_WITH_ZLIB and
+// linked with zlib.
 
 #include <algorithm>
 #include <bit>

@@ -118,7 +118,9 @@ class explicit_solver {
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
   std::vector<vec2> particle_positions() const { return positions_at_particles(model_, d_); }
   template <class Value, class PointValue>
-  std::vector<Value> project_to_particles(PointValue&& at_point) const { return rkpm::project_to_particles<Value>(model_, at_point); }
+  std::vector<Value> project_to_particles(PointValue&& at_point) const {
+    return rkpm::project_to_particles<Value>(model_, at_point);
+  }
   double kinetic_energy() const {
     return sums_([&](index_t I, block_sums<2>::sums& s) { s[0] += 0.5 * mass_[I] * v_[I].squaredNorm(); })[0];
   }

@@ -29,32 +29,38 @@ inline std::vector<vec2> positions_at_particles(const discrete_model& m, const s
   return x;
 }
 
-template <class Value, class PointValue>
-std::vector<Value> project_to_particles(const discrete_model& m, PointValue&& at_point) {
+namespace detail {
+
+// The projection into particle I's value at(I), zero on entry (a reference or an Eigen::Map).
+template <class Value, class PointValue, class At>
+void project_into(const discrete_model& m, PointValue&& at_point, At&& at) {
   const auto& t = m.at_points;
-  std::vector<Value> out(m.particle_count(), at_point(index_t{0}) * 0.0);
   for (index_t q = 0; q < m.point_count(); ++q) {
     const Value value = at_point(q);
-    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) out[t.neighbor[e]] += t.N[e] * m.points.weight[q] * value;
+    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) at(t.neighbor[e]) += t.N[e] * m.points.weight[q] * value;
   }
-  for (index_t I = 0; I < m.particle_count(); ++I) out[I] = out[I] / m.lumped_volume[I];
+  for (index_t I = 0; I < m.particle_count(); ++I) at(I) = at(I) / m.lumped_volume[I];
+}
+
+}  // namespace detail
+
+template <class Value, class PointValue>
+std::vector<Value> project_to_particles(const discrete_model& m, PointValue&& at_point) {
+  std::vector<Value> out(m.particle_count(), at_point(index_t{0}) * 0.0);
+  detail::project_into<Value>(m, at_point, [&](index_t I) -> Value& { return out[I]; });
   return out;
 }
 
 // The same into point-major rows of Components doubles, with no array of Eigen values beside
 // them: at_point(q) returns an Eigen vector of Components values (a tensor's components in the
-// order a file wants them). The same arithmetic as project_to_particles, value by value.
+// order a file wants them).
 template <int Components, class PointValue>
 std::vector<double> project_to_particles_flat(const discrete_model& m, PointValue&& at_point) {
   using row = Eigen::Matrix<double, Components, 1>;
-  const auto& t = m.at_points;
   std::vector<double> out(static_cast<std::size_t>(Components) * m.particle_count(), 0.0);
-  const auto at = [&](index_t I) { return Eigen::Map<row>(out.data() + static_cast<std::size_t>(Components) * I); };
-  for (index_t q = 0; q < m.point_count(); ++q) {
-    const row value = at_point(q);
-    for (index_t e = t.offset[q]; e < t.offset[q + 1]; ++e) at(t.neighbor[e]) += t.N[e] * m.points.weight[q] * value;
-  }
-  for (index_t I = 0; I < m.particle_count(); ++I) at(I) = at(I) / m.lumped_volume[I];
+  detail::project_into<row>(m, at_point, [&](index_t I) {
+    return Eigen::Map<row>(out.data() + static_cast<std::size_t>(Components) * I);
+  });
   return out;
 }
 

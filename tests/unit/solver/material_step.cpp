@@ -97,8 +97,8 @@ TEST_CASE("every material update is told the step's dt, its end time and the poi
   CHECK(temperature->values.size() == static_cast<std::size_t>(s.model().particle_count()));
   for (double T : temperature->values) CHECK(T == doctest::Approx(heated).epsilon(1e-10));
 
-  // Deferred (the runner's snapshots: each array computed when written), the same arrays bit for
-  // bit; the stress, projected straight into rows, the row-major projection of the tensors.
+  // Deferred (the runner's snapshots): nothing computed until asked, then the same arrays; the
+  // stress, projected straight into rows, equals the row-major flattening of the projected tensors.
   const io::point_data deferred = io::snapshot_fields(s, io::field_arrays::deferred);
   REQUIRE(deferred.arrays().size() == arrays.size());
   for (std::size_t k = 0; k < arrays.size(); ++k) {
