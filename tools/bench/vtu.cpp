@@ -6,6 +6,9 @@
 //                      (D = 0) at level L, to a file in the temporary directory (the page cache:
 //                      the disk is not timed); counters: file MB, particles. A library this
 //                      build lacks is skipped with a message.
+//   BM_write_vtu_lz4/threads:T
+//                      the same with LZ4 (compressor="vtkLZ4DataCompressor", liblz4): the
+//                      runner's --vtu-compression lz4
 //   BM_write_vtu_uncompressed/threads:T
 //                      the same without compression: what is not compression
 // The fields are smooth functions of position with full-precision mantissas, as a solver's are
@@ -81,6 +84,22 @@ void BM_write_vtu(benchmark::State& state) {
   std::filesystem::remove(path);
 }
 
+void BM_write_vtu_lz4(benchmark::State& state) {
+  if (!rkpm::io::vtu_lz4_available) {
+    state.SkipWithError("this build lacks liblz4 (liblz4-dev)");
+    for (auto _ : state) {
+    }
+    return;
+  }
+  const auto& s = bench_snapshot(1000);
+  const rkpm::io::vtu_format format(rkpm::io::vtu_encoding::appended, rkpm::io::vtu_compression::lz4);
+  const auto path = std::filesystem::temp_directory_path() / "rkpm_bench_snapshot.vtu";
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  for (auto _ : state) rkpm::io::write_vtu(path, s.points, s.cells, s.data, format);
+  state.counters["file_MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  std::filesystem::remove(path);
+}
+
 void BM_write_vtu_uncompressed(benchmark::State& state) {
   const auto& s = bench_snapshot(1000);
   const rkpm::io::vtu_format format(rkpm::io::vtu_encoding::appended, rkpm::io::vtu_compression::none);
@@ -99,6 +118,13 @@ void BM_write_vtu_uncompressed(benchmark::State& state) {
 BENCHMARK(BM_write_vtu)
     ->ArgsProduct({{1, 2}, {0, 1}, {1, 6}})
     ->ArgNames({"threads", "libdeflate", "level"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_write_vtu_lz4)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);

@@ -18,7 +18,10 @@
 // libdeflate when the header is compiled with RKPM_WITH_LIBDEFLATE and linked with libdeflate,
 // else by zlib (RKPM_WITH_ZLIB, linked with zlib); the rkpm CMake target does either when it
 // finds the library (libdeflate-dev, zlib1g-dev). Without both the writer is the same minus
-// compression, and asking for vtu_compression::zlib is an error saying so.
+// compression, and asking for vtu_compression::zlib is an error saying so. vtu_compression::lz4
+// writes the same blocks with LZ4 (compressor="vtkLZ4DataCompressor", io/vtu_lz4.hpp: about 8
+// times as fast, 15% larger, read by ParaView 5.5 and later but not by meshio) when compiled with
+// RKPM_WITH_LZ4 and linked with liblz4 (liblz4-dev).
 
 #include <algorithm>
 #include <bit>
@@ -164,6 +167,9 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
     if (format.zlib_level < 1 || format.zlib_level > 9)
       fail("write_vtu '{}': zlib level {} must be 1 to 9", path.string(), format.zlib_level);
   }
+  if (arrays.format().compression == vtu_compression::lz4 && !vtu_lz4_available)
+    fail("write_vtu '{}': LZ4 compression asked for, but rkpm was compiled without it; install liblz4-dev and "
+         "reconfigure, or use vtu_compression::zlib", path.string());
   const bool text = format.encoding == vtu_encoding::ascii;
   out.reserve(1024 + (text ? n * 64 * (3 + data.arrays().size()) : 0));
   fmt::format_to(std::back_inserter(out),
@@ -171,7 +177,9 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
                  "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\"{}>\n"
                  "  <UnstructuredGrid>\n",
                  std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian",
-                 arrays.format().compression == vtu_compression::zlib ? " compressor=\"vtkZLibDataCompressor\"" : "");
+                 arrays.format().compression == vtu_compression::none
+                     ? std::string()
+                     : fmt::format(" compressor=\"{}\"", vtu_compressor_attribute(arrays.format().compression)));
   if (!field_arrays.empty()) {
     out += "    <FieldData>\n";
     for (const auto& a : field_arrays.arrays())

@@ -6,7 +6,8 @@
 // vtkXMLWriter writes them (header_type UInt64, native byte order); zlib compression
 // (compressor="vtkZLibDataCompressor", blocks of 32 KiB compressed in parallel: io/vtu_zlib.hpp)
 // when compiled with RKPM_WITH_LIBDEFLATE and linked with libdeflate, or with RKPM_WITH_ZLIB and
-// linked with zlib.
+// linked with zlib; LZ4 compression (compressor="vtkLZ4DataCompressor", the same blocks:
+// io/vtu_lz4.hpp) when compiled with RKPM_WITH_LZ4 and linked with liblz4.
 
 #include <algorithm>
 #include <bit>
@@ -24,12 +25,23 @@
 #include <fmt/format.h>
 
 #include <rkpm/core/error.hpp>
+#include <rkpm/io/vtu_lz4.hpp>
 #include <rkpm/io/vtu_zlib.hpp>
 
 namespace rkpm::io {
 
 enum class vtu_encoding { appended, binary, ascii };
-enum class vtu_compression { none, zlib };
+// zlib: the smallest files, read by every VTK reader (meshio too). lz4: about 8 times as fast
+// to write and 15% larger, read by VTK 8.1 and later (ParaView 5.5 and later), not by meshio.
+enum class vtu_compression { none, zlib, lz4 };
+
+inline constexpr std::string_view vtu_compression_name(vtu_compression c) {
+  return c == vtu_compression::zlib ? "zlib" : c == vtu_compression::lz4 ? "lz4" : "none";
+}
+// The compressor attribute of <VTKFile> (empty: uncompressed).
+inline constexpr std::string_view vtu_compressor_attribute(vtu_compression c) {
+  return c == vtu_compression::zlib ? "vtkZLibDataCompressor" : c == vtu_compression::lz4 ? "vtkLZ4DataCompressor" : "";
+}
 
 // zlib when this translation unit can write it (io/vtu_zlib.hpp: libdeflate or zlib).
 inline constexpr vtu_compression default_vtu_compression =
@@ -109,12 +121,22 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
     block.raw = std::span<const unsigned char>(bytes, size);
     return block;
   }
+  block.is_compressed = true;
+  if (format.compression == vtu_compression::lz4) {
+#ifdef RKPM_WITH_LZ4
+    compress_vtu_blocks_with<lz4_block_compressor>(bytes, size, 0, name, block.header, block.compressed);
+    return block;
+#else
+    fail("write_vtu: array \"{}\": LZ4 compression asked for, but rkpm was compiled without it; install "
+         "liblz4-dev and reconfigure (or compile with -DRKPM_WITH_LZ4 and link -llz4), or use "
+         "vtu_compression::zlib", name);
+#endif
+  }
   if (!vtu_deflater_available(format.deflater))
     fail("write_vtu: array \"{}\": zlib compression by {} asked for, but rkpm was compiled without it; "
          "install libdeflate-dev or zlib1g-dev and reconfigure (or compile with -DRKPM_WITH_LIBDEFLATE "
          "and link -ldeflate, -DRKPM_WITH_ZLIB and -lz), or use vtu_compression::none", name,
          format.deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
-  block.is_compressed = true;
   compress_vtu_blocks(bytes, size, format.zlib_level, format.deflater, name, block.header, block.compressed);
   return block;
 }

@@ -3,7 +3,7 @@
   /usr/bin/python3 check_vtu.py vtu FILE N [ENCODING COMPRESSOR]
                                                 one snapshot with N particles (formulas below);
                                                 ENCODING appended|binary|ascii and COMPRESSOR
-                                                zlib|none are what the file must declare
+                                                zlib|lz4|none are what the file must declare
   /usr/bin/python3 check_vtu.py cells FILE NX NY EXTRA
                                                 a snapshot of the NX x NY grid's nodes (the same
                                                 formulas) and EXTRA points beyond them: one
@@ -21,8 +21,13 @@ that Python's zlib inflates to the declared block size (whichever library wrote 
 libdeflate write different bytes of the same format), and the arrays, taken in order of offset
 (any order is valid VTK), must tile the block. That walk comes first, so a broken header is
 named as such rather than by whatever meshio makes of it.
+LZ4 files (compressor="vtkLZ4DataCompressor", which meshio does not read) are walked the same
+way, each block one raw LZ4 block that Python's lz4 (Debian python3-lz4) decompresses to exactly
+its declared size, and their arrays (appended or inline base64) are decoded here in full and
+checked against the same formulas.
 Exit 0 if all checks pass; 2 if meshio is missing; 1 with a message otherwise.
 """
+import base64
 import os
 import re
 import struct
@@ -37,6 +42,10 @@ except ImportError as e:
     print(f"meshio (or numpy) is missing for /usr/bin/python3 ({e}): install python3-meshio "
           "(apt-get install python3-meshio)")
     sys.exit(2)
+try:
+    import lz4.block
+except ImportError:
+    lz4 = None  # needed only for LZ4 files: decompress_block then fails naming python3-lz4
 
 
 def expected(n):
@@ -54,6 +63,8 @@ def expected(n):
 
 
 def check_vtu(path, n):
+    if compressor_of(path) == "vtkLZ4DataCompressor":
+        return check_vtu_decoded(path, n)
     mesh = meshio.read(path)
     points, data = expected(n)
     assert mesh.points.shape == (n, 3), f"points shape {mesh.points.shape} != {(n, 3)}"
@@ -67,6 +78,85 @@ def check_vtu(path, n):
         assert got.shape == want.shape, f"{name}: shape {got.shape} != {want.shape}"
         assert got.dtype == np.float64, f"{name}: dtype {got.dtype}"
         assert np.array_equal(got, want), f"{name}: values differ, max |diff| {np.abs(got - want).max()}"
+
+
+def compressor_of(path):
+    with open(path, "rb") as f:
+        head = f.read(4096)
+    m = re.search(rb'compressor="([^"]*)"', head[:head.find(b"<UnstructuredGrid")])
+    return m.group(1).decode() if m else None
+
+
+def decompress_block(compressor, data, size, what):
+    """One compressed block of `size` bytes that must use all of `data`, by the named library."""
+    if compressor == "vtkLZ4DataCompressor":
+        assert lz4 is not None, "python3-lz4 is missing for /usr/bin/python3 (apt-get install python3-lz4)"
+        try:
+            plain = lz4.block.decompress(data, uncompressed_size=size)
+        except Exception as e:  # lz4.block.LZ4BlockError
+            raise AssertionError(f"{what} is not an LZ4 block of {size} bytes in its {len(data)} bytes ({e})")
+        assert len(plain) == size, f"{what} holds {len(plain)} bytes, not {size}"
+        return plain
+    inflate = zlib.decompressobj()
+    try:
+        plain = inflate.decompress(data)
+    except zlib.error as e:
+        raise AssertionError(f"{what} is not a zlib stream ({e})")
+    assert inflate.eof, f"{what}: the zlib stream does not end in its {len(data)} bytes"
+    assert not inflate.unused_data, \
+        f"{what}: its stream ends {len(inflate.unused_data)} bytes before its {len(data)} bytes"
+    assert len(plain) == size, f"{what} holds {len(plain)} bytes, not {size}"
+    return plain
+
+
+def decoded_arrays(path):
+    """Every DataArray of a binary (appended raw or inline base64), compressed file, decoded here
+    from VTK's layout: name -> (array of values, components)."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    start = raw.find(b"<AppendedData")
+    root = ET.fromstring(raw if start < 0 else raw[:start] + b"</VTKFile>")
+    compressor = root.get("compressor")
+    appended = b""
+    if start >= 0:
+        appended = raw[re.search(rb'<AppendedData encoding="raw">\s*_', raw).end():]
+    dtype = {"Int64": "<i8", "UInt8": "u1", "Float64": "<f8"}
+    out = {}
+    for a in root.iter("DataArray"):
+        if a.get("format") == "appended":
+            block = appended[int(a.get("offset")):]
+        else:  # the header and the blocks as two base64 streams
+            text = "".join(a.text.split()).encode()
+            first = base64.b64decode(text[:32])
+            blocks = struct.unpack_from("<Q", first, 0)[0]
+            head_chars = 4 * (-(-8 * (3 + blocks) // 3))
+            block = base64.b64decode(text[:head_chars]) + base64.b64decode(text[head_chars:])
+        u64 = lambda k: struct.unpack_from("<Q", block, 8 * k)[0]
+        blocks, block_size, last = u64(0), u64(1), u64(2)
+        body, plain = 8 * (3 + blocks), b""
+        for k in range(blocks):
+            c = u64(3 + k)
+            full = block_size if k + 1 < blocks or last == 0 else last
+            plain += decompress_block(compressor, block[body:body + c], full, f"{a.get('Name')}: block {k}")
+            body += c
+        out[a.get("Name")] = (np.frombuffer(plain, dtype=dtype[a.get("type")]), int(a.get("NumberOfComponents", 1)))
+    return out
+
+
+def check_vtu_decoded(path, n):
+    """check_vtu's checks on the arrays decoded here (a format meshio cannot read)."""
+    arrays = decoded_arrays(path)
+    points, data = expected(n)
+    got, k = arrays["Points"]
+    assert k == 3 and np.array_equal(got.reshape(-1, 3), points), "points differ"
+    assert np.array_equal(arrays["connectivity"][0], np.arange(n)), "vertex connectivity"
+    assert np.array_equal(arrays["offsets"][0], np.arange(1, n + 1)), "vertex offsets"
+    assert np.array_equal(arrays["types"][0], np.ones(n)), "vertex types"
+    for name, want in data.items():
+        values, k = arrays[name]
+        assert np.array_equal(values.reshape(want.shape), want), f"{name}: values differ"
+    names = [a for a in arrays if a not in ("Points", "connectivity", "offsets", "types")]
+    assert names == list(data), f"arrays {names} != {list(data)}"
 
 
 def vertex_sizes(n):
@@ -84,7 +174,7 @@ def check_format(path, sizes, encoding, compressor):
     head = raw if start < 0 else raw[:start] + b"</VTKFile>"
     root = ET.fromstring(head)
     assert root.get("header_type") == "UInt64", f"header_type {root.get('header_type')}"
-    want = {"zlib": "vtkZLibDataCompressor", "none": None}[compressor]
+    want = {"zlib": "vtkZLibDataCompressor", "lz4": "vtkLZ4DataCompressor", "none": None}[compressor]
     if encoding == "ascii":
         want = None
     assert root.get("compressor") == want, f"compressor {root.get('compressor')!r} != {want!r}"
@@ -121,17 +211,9 @@ def check_format(path, sizes, encoding, compressor):
         for k in range(blocks):
             c = u64(block, 3 + k)
             assert body + c <= len(block), f"{a.get('Name')}: block {k} ({c} bytes) runs past the data"
-            # One whole stream, exactly c bytes: not cut short, nothing of the next block in it.
-            inflate = zlib.decompressobj()
-            try:
-                plain = inflate.decompress(block[body:body + c])
-            except zlib.error as e:
-                raise AssertionError(f"{a.get('Name')}: block {k} is not a zlib stream ({e})")
-            assert inflate.eof, f"{a.get('Name')}: block {k}: the zlib stream does not end in its {c} bytes"
-            assert not inflate.unused_data, \
-                f"{a.get('Name')}: block {k}: its stream ends {len(inflate.unused_data)} bytes before its {c} bytes"
+            # One whole stream (block), exactly c bytes: not cut short, nothing of the next block in it.
             full = block_size if k + 1 < blocks or last == 0 else last
-            assert len(plain) == full, f"{a.get('Name')}: block {k} holds {len(plain)} bytes, not {full}"
+            plain = decompress_block(root.get("compressor"), block[body:body + c], full, f"{a.get('Name')}: block {k}")
             body += c
             total += len(plain)
         assert total == size, f"{a.get('Name')}: {total} bytes, expected {size}"
