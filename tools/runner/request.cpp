@@ -91,6 +91,16 @@ void add_run_options(CLI::App* sub, run_request& r) {
       ->type_name("PATH");
   sub->add_flag_callback("--no-plots", [&r] { r.plots = false; }, "skip the gnuplot figures");
   sub->add_flag("--quiet", r.quiet, "no progress line");
+  sub->add_option_function<std::string>(
+         "--vtu-compression",
+         [&r](const std::string& c) {
+           r.vtu_compression = c == "lz4"    ? io::vtu_compression::lz4
+                               : c == "none" ? io::vtu_compression::none
+                                             : io::vtu_compression::zlib;
+         },
+         "compression of the VTK snapshots: zlib (the default: smallest; every VTK reader and meshio), lz4 (about 3 "
+         "times as fast to write at 10^6 particles, a quarter larger; ParaView 5.5 and later, not meshio) or none")
+      ->check(CLI::IsMember({"zlib", "lz4", "none"}));
 }
 
 // The options given on the command line, which a case file or a checkpoint must not override.

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <rkpm/io/vtu_encoding.hpp>
+
 #include "methods.hpp"
 #include "run_hooks.hpp"
 
@@ -30,6 +32,8 @@ struct run_request {
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;
   bool quiet = false;              // no progress line
+  // The snapshots' compression: zlib (smallest, every reader), lz4 (fast; ParaView, not meshio), none.
+  io::vtu_compression vtu_compression = io::default_vtu_compression;
   std::vector<std::pair<std::string, std::string>> sets;  // --set NAME=VALUE
   std::optional<double> checkpoint_interval;  // s of simulated time between checkpoints
   std::string restart;                        // checkpoint file or run folder to continue

@@ -40,9 +40,10 @@ class run_observer {
   // record; `configuration` is the solver's configuration name (Config::name()); `hooks` what an
   // embedding caller asked for (run_hooks.hpp).
   run_observer(const std::filesystem::path& dir, const typename Case::parameters& params, const Solver& s,
-               run_record record, json identity, std::string configuration, bool quiet, run_hooks hooks = {})
+               run_record record, json identity, std::string configuration, bool quiet,
+               io::vtu_format snapshot_format = {}, run_hooks hooks = {})
       : dir_(dir), params_(params), record_(std::move(record)), identity_(std::move(identity)),
-        configuration_(std::move(configuration)), quiet_(quiet), hooks_(std::move(hooks)),
+        configuration_(std::move(configuration)), quiet_(quiet), snapshot_format_(snapshot_format), hooks_(std::move(hooks)),
         tools_(static_cast<index_t>(s.contact().tools().size())),
         mean_force_(tools_, vec2::Zero()),
         measures_(Case::measure(s, params, mean_force_)),
@@ -69,7 +70,7 @@ class run_observer {
       // The cells made anew and the arrays computed one at a time as they are written: at 10^6
       // particles the cells would hold 41 MB through the run, the raw arrays 200 MB at once.
       const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_cells(s),
-                                         io::snapshot_fields(s, io::field_arrays::deferred), {},
+                                         io::snapshot_fields(s, io::field_arrays::deferred), snapshot_format_,
                                          io::snapshot_tools(s));
       record_.snapshots.emplace_back(t, vtu.filename().string());
       record_.next_snapshot += record_.snapshot_interval;
@@ -168,6 +169,7 @@ class run_observer {
   json identity_;
   std::string configuration_;
   bool quiet_;
+  io::vtu_format snapshot_format_;
   run_hooks hooks_;
   index_t tools_;
   std::vector<vec2> mean_force_;

@@ -149,7 +149,8 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   }
 
   run_observer<Case, Solver> observe(dir, params, s, std::move(record), identity,
-                                     method.configuration, request.quiet, request.hooks);
+                                     method.configuration, request.quiet,
+                                     io::vtu_format(io::vtu_encoding::appended, request.vtu_compression), request.hooks);
   if (restart) observe.resume(fs::absolute(restart->file).parent_path());
   summary["status"] = "running";  // what a killed run's folder says
   write_json(dir / "summary.json", summary);

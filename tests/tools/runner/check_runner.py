@@ -59,6 +59,7 @@ def bad_options(rkpm_run, work):
         ["taylor_bar", "--end-time"],
         ["taylor_bar", "--threads", "2x"],
         ["taylor_bar", "--contact", "sticky"],
+        ["taylor_bar", "--vtu-compression", "gzip"],
         ["taylor_bar", "--set", "radial_particles=1"],
         ["wheel_forging", "--set", "tool_vertex_slaves=0.5"],
         ["paper", "--resolution", "2x"],
@@ -163,6 +164,12 @@ def real_run(rkpm_run, out):
              "--out", out, "--quiet"])
     print(r.stdout, r.stderr)
     check(r.returncode == 0, f"the short Taylor bar run failed with status {r.returncode}")
+    # The same run with LZ4 snapshots, which vtk() decodes and compares with these.
+    lz4 = out + "-lz4"
+    shutil.rmtree(lz4, ignore_errors=True)
+    r = run([rkpm_run, "taylor_bar", "--end-time", repr(END_TIME), "--set", f"axial_particles={AXIAL}",
+             "--out", lz4, "--quiet", "--no-plots", "--vtu-compression", "lz4"])
+    check(r.returncode == 0, f"the run with --vtu-compression lz4 failed: {r.stderr}")
 
 
 def reject_constant(name):
@@ -363,6 +370,31 @@ def vtk(out):
     check(x[:, 1].min() > -0.02 * HEIGHT_MM * 1e-3 / (AXIAL - 1), "particles below the wall")
     print(f"ok  vtk: {len(meshes)} snapshots of {s['particles']} particles; final radius {radius_mm:.4f} mm, "
           f"height {height_mm:.4f} mm")
+    lz4_snapshots(out, sets, meshes)
+
+
+def lz4_snapshots(out, sets, meshes):
+    """The run with --vtu-compression lz4: every snapshot declares vtkLZ4DataCompressor and, decoded
+    by check_vtu.py's own reader (meshio reads no LZ4), holds the zlib run's arrays bit for bit."""
+    import numpy as np
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "unit", "io"))
+    from check_vtu import compressor_of, decoded_arrays
+
+    lz4 = out + "-lz4"
+    for d, m in zip(sets, meshes):
+        path = os.path.join(lz4, d.get("file"))
+        check(os.path.exists(path), f"{path}: the LZ4 run did not write it")
+        if failures:
+            return
+        check(compressor_of(path) == "vtkLZ4DataCompressor", f"{path}: compressor {compressor_of(path)}")
+        arrays = decoded_arrays(path)
+        check(np.array_equal(arrays["Points"][0].reshape(-1, 3), m.points), f"{path}: points differ from the zlib run")
+        for name, values in m.point_data.items():
+            got = arrays.get(name)
+            check(got is not None and np.array_equal(got[0].reshape(values.shape), values),
+                  f"{path}: {name} differs from the zlib run")
+        check(np.array_equal(arrays["connectivity"][0].reshape(-1, 4), m.cells[0].data), f"{path}: cells differ")
+    print(f"ok  vtk: the {len(sets)} LZ4 snapshots decode to the zlib snapshots' arrays")
 
 
 def view(script, out):
