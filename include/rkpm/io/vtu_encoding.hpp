@@ -113,6 +113,35 @@ struct binary_block {
   std::size_t size() const { return header.size() + body().size(); }
 };
 
+// Blocks [first, last) of bytes[0, size) compressed as `format` asks (compress_block_range of
+// io/vtu_zlib.hpp with the format's library): their sizes into sizes[0 .. last-first), their
+// bytes as pieces to be taken in order.
+inline std::vector<byte_buffer> compress_range(const unsigned char* bytes, std::size_t size, std::size_t first,
+                                               std::size_t last, const vtu_format& format, std::string_view name,
+                                               std::uint64_t* sizes) {
+  if (format.compression == vtu_compression::lz4) {
+#ifdef RKPM_WITH_LZ4
+    return compress_block_range<lz4_block_compressor>(bytes, size, first, last, 0, name, sizes);
+#else
+    fail("write_vtu: array \"{}\": LZ4 compression asked for, but rkpm was compiled without it; install "
+         "liblz4-dev and reconfigure (or compile with -DRKPM_WITH_LZ4 and link -llz4), or use "
+         "vtu_compression::zlib", name);
+#endif
+  }
+#ifdef RKPM_WITH_LIBDEFLATE
+  if (format.deflater == vtu_deflater::libdeflate)
+    return compress_block_range<libdeflate_block_deflater>(bytes, size, first, last, format.zlib_level, name, sizes);
+#endif
+#ifdef RKPM_WITH_ZLIB
+  if (format.deflater == vtu_deflater::zlib)
+    return compress_block_range<zlib_block_deflater>(bytes, size, first, last, format.zlib_level, name, sizes);
+#endif
+  fail("write_vtu: array \"{}\": zlib compression by {} asked for, but rkpm was compiled without it; "
+       "install libdeflate-dev or zlib1g-dev and reconfigure (or compile with -DRKPM_WITH_LIBDEFLATE "
+       "and link -ldeflate, -DRKPM_WITH_ZLIB and -lz), or use vtu_compression::none", name,
+       format.deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
+}
+
 inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, const vtu_format& format,
                                   std::string_view name) {
   binary_block block;
@@ -122,23 +151,53 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
     return block;
   }
   block.is_compressed = true;
-  if (format.compression == vtu_compression::lz4) {
-#ifdef RKPM_WITH_LZ4
-    compress_vtu_blocks_with<lz4_block_compressor>(bytes, size, 0, name, block.header, block.compressed);
-    return block;
-#else
-    fail("write_vtu: array \"{}\": LZ4 compression asked for, but rkpm was compiled without it; install "
-         "liblz4-dev and reconfigure (or compile with -DRKPM_WITH_LZ4 and link -llz4), or use "
-         "vtu_compression::zlib", name);
-#endif
-  }
-  if (!vtu_deflater_available(format.deflater))
-    fail("write_vtu: array \"{}\": zlib compression by {} asked for, but rkpm was compiled without it; "
-         "install libdeflate-dev or zlib1g-dev and reconfigure (or compile with -DRKPM_WITH_LIBDEFLATE "
-         "and link -ldeflate, -DRKPM_WITH_ZLIB and -lz), or use vtu_compression::none", name,
-         format.deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
-  compress_vtu_blocks(bytes, size, format.zlib_level, format.deflater, name, block.header, block.compressed);
+  std::vector<std::uint64_t> h = compression_header(size);
+  std::vector<byte_buffer> part = compress_range(bytes, size, 0, h[0], format, name, h.data() + 3);
+  for (const std::uint64_t v : h) append_u64(block.header, v);
+  // Joined in block order, the first piece taken as it is.
+  std::size_t total = 0;
+  for (const auto& p : part) total += p.size();
+  block.compressed = std::move(part[0]);
+  block.compressed.reserve(total);
+  for (std::size_t k = 1; k < part.size(); ++k) block.compressed.insert(block.compressed.end(), part[k].begin(), part[k].end());
   return block;
+}
+
+// Blocks compressed and written at a time by write_appended: 4 MiB of raw bytes, so that an
+// array's compressed bytes are never all held at once (35 MB for the stress of 10^6 particles).
+inline constexpr std::size_t vtu_blocks_per_chunk = 128;
+
+// Writes one appended DataArray's bytes as VTK reads them (the bytes of encode_binary's header
+// and body) to `out` at its position, compressing vtu_blocks_per_chunk blocks at a time and
+// writing each chunk before the next is made; the header, whose sizes are known only then, is
+// written into the space left for it. Returns the bytes written.
+inline std::size_t write_appended(std::ostream& out, const unsigned char* bytes, std::size_t size,
+                                  const vtu_format& format, std::string_view name) {
+  const auto put = [&out](const void* p, std::size_t n) {
+    out.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
+  };
+  if (format.compression == vtu_compression::none) {
+    const std::uint64_t count = size;
+    put(&count, sizeof count);
+    put(bytes, size);
+    return sizeof count + size;
+  }
+  std::vector<std::uint64_t> h = compression_header(size);
+  const std::streamoff start = out.tellp();
+  put(h.data(), h.size() * sizeof(std::uint64_t));  // sizes still 0: rewritten below
+  std::size_t written = h.size() * sizeof(std::uint64_t);
+  for (std::size_t first = 0; first < h[0]; first += vtu_blocks_per_chunk) {
+    const std::size_t last = std::min<std::size_t>(h[0], first + vtu_blocks_per_chunk);
+    for (const byte_buffer& piece : compress_range(bytes, size, first, last, format, name, h.data() + 3 + first)) {
+      put(piece.data(), piece.size());
+      written += piece.size();
+    }
+  }
+  const std::streamoff end = out.tellp();
+  out.seekp(start);
+  put(h.data(), h.size() * sizeof(std::uint64_t));
+  out.seekp(end);
+  return written;
 }
 
 // Writes the XML of the DataArrays and then the file: one object per file. Appended arrays are
@@ -188,10 +247,29 @@ class vtu_arrays {
       }
       case vtu_encoding::appended:
         add_appended([this, values, name = std::string(name)](std::ostream& out) {
-          return write_block(out, encode(values, name));
+          return write_appended(out, reinterpret_cast<const unsigned char*>(values.data()), values.size_bytes(),
+                                format_, name);
         });
         return;
     }
+  }
+
+  // The same with the values handed over: let go as soon as they are written (appended: when the
+  // file reaches their block), so that the caller need not keep them.
+  template <class T>
+  void add_taken(std::string_view type, std::string_view name, int components, std::vector<T>&& values) {
+    if (format_.encoding != vtu_encoding::appended) {  // encoded into the XML now, then let go
+      const std::vector<T> taken = std::move(values);
+      add(type, name, components, std::span<const T>(taken));
+      return;
+    }
+    open_element(type, name, components, 0);
+    add_appended([this, values = std::move(values), name = std::string(name)](std::ostream& out) mutable {
+      const std::size_t n = write_appended(out, reinterpret_cast<const unsigned char*>(values.data()),
+                                           values.size() * sizeof(T), format_, name);
+      std::vector<T>().swap(values);
+      return n;
+    });
   }
 
   // A Float64 array whose values produce() makes: when its block is written (appended), else now.
@@ -204,7 +282,8 @@ class vtu_arrays {
     open_element("Float64", name, components, 0);
     add_appended([this, produce = std::move(produce), name = std::string(name)](std::ostream& out) {
       const std::vector<double> values = produce();
-      return write_block(out, encode(std::span<const double>(values), name));
+      return write_appended(out, reinterpret_cast<const unsigned char*>(values.data()),
+                            values.size() * sizeof(double), format_, name);
     });
   }
 
@@ -260,12 +339,6 @@ class vtu_arrays {
     xml_ += std::string(reserved_offset_width, ' ');
     xml_ += "/>\n";
     writers_.push_back(std::move(writer));
-  }
-  static std::size_t write_block(std::ostream& out, const binary_block& block) {
-    out.write(reinterpret_cast<const char*>(block.header.data()), static_cast<std::streamsize>(block.header.size()));
-    const auto body = block.body();
-    out.write(reinterpret_cast<const char*>(body.data()), static_cast<std::streamsize>(body.size()));
-    return block.size();
   }
   template <class T>
   binary_block encode(std::span<const T> values, std::string_view name) const {

@@ -144,13 +144,14 @@ class libdeflate_block_deflater {
 };
 #endif
 
-// Appends to `header` the block header and to `body` the compressed blocks of bytes[0, size),
-// each block compressed by a Deflater (one per thread) at `level`.
+// Compresses blocks [first, last) of bytes[0, size), each by a Deflater (one per thread) at
+// `level`: their compressed sizes into sizes[0 .. last-first), their bytes into the returned
+// pieces, to be taken in order (one per thread, each a contiguous run of the blocks).
 template <class Deflater>
-void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int level, std::string_view name,
-                              std::vector<unsigned char>& header, byte_buffer& body) {
-  const std::size_t blocks = (size + vtu_block_size - 1) / vtu_block_size;
-  std::vector<std::uint64_t> compressed(blocks, 0);
+std::vector<byte_buffer> compress_block_range(const unsigned char* bytes, std::size_t size, std::size_t first_block,
+                                              std::size_t last_block, int level, std::string_view name,
+                                              std::uint64_t* sizes) {
+  const std::size_t blocks = last_block - first_block;
   int threads = 1;
 #ifdef _OPENMP
   // A thread per ~8 blocks at least: a small array is not worth waking threads for.
@@ -166,7 +167,7 @@ void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int 
     t = omp_get_thread_num();
     team = omp_get_num_threads();
 #endif
-    // This thread's blocks: first .. last-1, contiguous, in thread order.
+    // This thread's blocks: first .. last-1 of the range, contiguous, in thread order.
     const std::size_t first = blocks * static_cast<std::size_t>(t) / static_cast<std::size_t>(team);
     const std::size_t last = blocks * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(team);
     byte_buffer& out = part[static_cast<std::size_t>(t)];
@@ -174,14 +175,14 @@ void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int 
     if (first < last) deflater.emplace(level);
     std::size_t at = 0, bad = blocks;
     for (std::size_t b = first; b < last && bad == blocks; ++b) {
-      const std::size_t begin = b * vtu_block_size, n = std::min(vtu_block_size, size - begin);
+      const std::size_t begin = (first_block + b) * vtu_block_size, n = std::min(vtu_block_size, size - begin);
       const std::size_t room = deflater->bound(n);
       // Room for all of this thread's blocks at once, grown only if a bound is exceeded.
       if (b == first) out.resize(room * (last - first));
       if (out.size() < at + room) out.resize(at + room);
       const std::size_t c = deflater->compress(bytes + begin, n, out.data() + at, room);
       if (c == 0) bad = b;
-      compressed[b] = c;
+      sizes[b] = c;
       at += c;
     }
     out.resize(at);
@@ -191,33 +192,20 @@ void compress_vtu_blocks_with(const unsigned char* bytes, std::size_t size, int 
     }
   }
   if (failed != blocks)
-    fail("write_vtu: compression failed (block {}) on array \"{}\"; try vtu_compression::none", failed, name);
-  append_u64(header, blocks);
-  append_u64(header, vtu_block_size);
-  append_u64(header, size % vtu_block_size);
-  for (const std::uint64_t c : compressed) append_u64(header, c);
-  // Joined in block order; the first thread's buffer is taken as it is when `body` is empty.
-  std::size_t total = body.size();
-  for (const auto& p : part) total += p.size();
-  std::size_t from = 0;
-  if (body.empty()) body = std::move(part[from++]);
-  body.reserve(total);
-  for (; from < part.size(); ++from) body.insert(body.end(), part[from].begin(), part[from].end());
+    fail("write_vtu: compression failed (block {}) on array \"{}\"; try vtu_compression::none", first_block + failed,
+         name);
+  return part;
 }
 
-// The same with the library `deflater` names, which the caller has checked is compiled in.
-inline void compress_vtu_blocks(const unsigned char* bytes, std::size_t size, int level, vtu_deflater deflater,
-                                std::string_view name, std::vector<unsigned char>& header, byte_buffer& body) {
-#ifdef RKPM_WITH_LIBDEFLATE
-  if (deflater == vtu_deflater::libdeflate)
-    return compress_vtu_blocks_with<libdeflate_block_deflater>(bytes, size, level, name, header, body);
-#endif
-#ifdef RKPM_WITH_ZLIB
-  if (deflater == vtu_deflater::zlib)
-    return compress_vtu_blocks_with<zlib_block_deflater>(bytes, size, level, name, header, body);
-#endif
-  fail("write_vtu: array \"{}\": the {} library is not compiled in", name,
-       deflater == vtu_deflater::zlib ? "zlib" : "libdeflate");
+// VTK's compression header of `size` bytes: [#blocks, block size, size of a partial last block
+// (0 if none), one compressed size per block (0 until known)].
+inline std::vector<std::uint64_t> compression_header(std::size_t size) {
+  const std::size_t blocks = (size + vtu_block_size - 1) / vtu_block_size;
+  std::vector<std::uint64_t> h(3 + blocks, 0);
+  h[0] = blocks;
+  h[1] = vtu_block_size;
+  h[2] = size % vtu_block_size;
+  return h;
 }
 
 }  // namespace rkpm::io::detail

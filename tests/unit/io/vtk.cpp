@@ -206,7 +206,11 @@ TEST_CASE("vtu: the background cells as counter-clockwise VTK quads on the parti
 
 TEST_CASE("vtu: the zlib and LZ4 blocks are compressed in parallel, the file the same bytes on 1 and 2 threads") {
   const auto dir = vtk_scratch() / "threads";
-  const auto s = make(20000);  // the tensor array: 1.44 MB, 44 blocks
+  // The tensor array: 5.04 MB, 154 blocks, more than one chunk of the appended writer
+  // (vtu_blocks_per_chunk, 128), compressed and written in two pieces.
+  const int n = 70000;
+  REQUIRE(9 * sizeof(double) * n > rkpm::io::detail::vtu_blocks_per_chunk * rkpm::io::detail::vtu_block_size);
+  const auto s = make(n);
   std::vector<vtu_format> formats;
   for (auto deflater : deflaters()) {
     formats.emplace_back();
@@ -231,7 +235,7 @@ TEST_CASE("vtu: the zlib and LZ4 blocks are compressed in parallel, the file the
 #endif
     CHECK(bytes[0].size() > 100000);
     CHECK(bytes[0] == bytes[1]);
-    check_with_meshio(fmt::format("vtu '{}' 20000 appended {}", (dir / fmt::format("{}_t2.vtu", label)).string(),
+    check_with_meshio(fmt::format("vtu '{}' {} appended {}", (dir / fmt::format("{}_t2.vtu", label)).string(), n,
                                   name(format.compression)));
   }
   fs::remove_all(dir);
@@ -369,6 +373,45 @@ TEST_CASE("vtu: deferred arrays write the same bytes as the arrays given, each c
   }
   CHECK_FALSE(fs::exists(dir / "bad.vtu"));
   CHECK_THROWS_AS(bad.add_deferred("temperature_K", 1, [] { return std::vector<double>(); }), rkpm::error);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vtu: positions and cells handed over write the same bytes and are let go") {
+  // write_vtu(path, std::move(points), std::move(cells), ...) frees each array once its block is
+  // written; the file is the one the const& form writes, in every encoding and compression.
+  const auto dir = vtk_scratch() / "handed";
+  const int nx = 30, ny = 20;
+  auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(1.0, 1.0), Eigen::Vector2i(nx, ny));
+  const auto points = vtk_grid_points(nx, ny, 2);
+  mesh.node.assign(points.begin(), points.begin() + nx * ny);
+  const auto cells = rkpm::io::quad_cells(mesh, points.size());
+  rkpm::io::point_data data;
+  std::vector<double> eps;
+  for (std::size_t k = 0; k < points.size(); ++k) eps.push_back(static_cast<double>(k) / 7.0 - 2.5);
+  data.add("eps_p", eps);
+  std::vector<vtu_compression> compressions{vtu_compression::none};
+  if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
+  if (rkpm::io::vtu_lz4_available) compressions.push_back(vtu_compression::lz4);
+  for (auto e : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii})
+    for (auto c : compressions) {
+      CAPTURE(name(e));
+      CAPTURE(name(c));
+      const vtu_format f{e, c};
+      rkpm::io::write_vtu(dir / "kept.vtu", points, cells, data, f);
+      auto p = points;
+      auto k = cells;
+      rkpm::io::write_vtu(dir / "handed.vtu", std::move(p), std::move(k), data, f);
+      CHECK(p.empty());  // taken by the writer, not copied (a moved-from vector is empty)
+      CHECK((k.connectivity.empty() && k.offsets.empty() && k.types.empty()));
+      CHECK(file_bytes(dir / "kept.vtu") == file_bytes(dir / "handed.vtu"));
+    }
+  // The same through a series (the runner's call), in the default format.
+  rkpm::io::write_vtu(dir / "kept.vtu", points, cells, data);
+  rkpm::io::pvd_series pvd(dir / "run.pvd");
+  auto p = points;
+  auto k = cells;
+  const auto vtu = pvd.add_snapshot(0.0, std::move(p), std::move(k), data);
+  CHECK(file_bytes(vtu) == file_bytes(dir / "kept.vtu"));
   fs::remove_all(dir);
 }
 
