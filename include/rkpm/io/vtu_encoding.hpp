@@ -153,7 +153,8 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
   block.is_compressed = true;
   std::vector<std::uint64_t> h = compression_header(size);
   std::vector<byte_buffer> part = compress_range(bytes, size, 0, h[0], format, name, h.data() + 3);
-  for (const std::uint64_t v : h) append_u64(block.header, v);
+  block.header.resize(h.size() * sizeof(std::uint64_t));
+  std::memcpy(block.header.data(), h.data(), block.header.size());
   // Joined in block order, the first piece taken as it is.
   std::size_t total = 0;
   for (const auto& p : part) total += p.size();
