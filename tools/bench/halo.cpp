@@ -20,10 +20,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <mpi.h>
 
@@ -49,44 +50,36 @@ struct options {
   double ghost_layers = 3.5, point_layers = 3.5;
 };
 
-options parse(int argc, char** argv) {
-  options o;
-  for (int k = 1; k < argc; ++k) {
-    const std::string a = argv[k];
-    const auto value = [&]() -> std::string {
-      if (k + 1 >= argc) fail("rkpm_bench_halo: {} needs a value", a);
-      return argv[++k];
-    };
-    if (a == "--resolutions") {
-      o.resolutions.clear();
-      std::string list = value();
-      for (std::size_t at = 0; at <= list.size();) {
-        const std::size_t comma = std::min(list.find(',', at), list.size());
-        o.resolutions.push_back(std::stoi(list.substr(at, comma - at)));
-        at = comma + 1;
-      }
-    } else if (a == "--repeat") {
-      o.repeat = std::stoi(value());
-    } else if (a == "--point-us") {
-      o.point_us = std::stod(value());
-    } else if (a == "--latency-us") {
-      o.latency_us = std::stod(value());
-    } else if (a == "--bandwidth-GB-s") {
-      o.bandwidth_GB_s = std::stod(value());
-    } else if (a == "--ghost-layers") {
-      o.ghost_layers = std::stod(value());
-    } else if (a == "--point-layers") {
-      o.point_layers = std::stod(value());
-    } else {
-      fail("rkpm_bench_halo: unknown option {} (options: --resolutions K,K --repeat N --point-us U --latency-us A "
-           "--bandwidth-GB-s B --ghost-layers L --point-layers L)",
-           a);
-    }
+// The command line (CLI11, as the runner's), the same on every rank. Returns the exit code after
+// --help (0) or an error (CLI11 has printed either on rank 0), nothing to go on.
+std::optional<int> parse(int argc, char** argv, options& o, int rank) {
+  CLI::App app("rkpm_bench_halo: the Taylor bar decomposed over the processes of mpiexec (tools/bench/halo.cpp)");
+  app.add_option("--resolutions", o.resolutions, "Taylor bar resolutions, e.g. 8,32")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 32))
+      ->capture_default_str();
+  app.add_option("--repeat", o.repeat, "timed exchanges and reductions")->check(CLI::Range(1, 1000000))->capture_default_str();
+  app.add_option("--point-us", o.point_us, "force loop per point and step on one core (us)")
+      ->check(CLI::Range(1e-6, 1e6))
+      ->capture_default_str();
+  app.add_option("--latency-us", o.latency_us, "the model's message latency (us)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  app.add_option("--bandwidth-GB-s", o.bandwidth_GB_s, "the model's bandwidth per link (GB/s)")
+      ->check(CLI::Range(1e-6, 1e6))
+      ->capture_default_str();
+  app.add_option("--ghost-layers", o.ghost_layers, "the model's ghosts per boundary particle")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  app.add_option("--point-layers", o.point_layers, "the model's extra points per boundary particle")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  try {
+    app.parse(argc, argv);
+    return std::nullopt;
+  } catch (const CLI::ParseError& e) {
+    return rank == 0 ? app.exit(e) : e.get_exit_code();
   }
-  if (o.resolutions.empty() || o.repeat < 1 || !(o.point_us > 0.0) || !(o.latency_us >= 0.0) ||
-      !(o.bandwidth_GB_s > 0.0) || !(o.ghost_layers >= 0.0) || !(o.point_layers >= 0.0))
-    fail("rkpm_bench_halo: give at least one resolution, --repeat >= 1 and positive costs");
-  return o;
 }
 
 double median(std::vector<double> v) {
@@ -218,7 +211,8 @@ int main(int argc, char** argv) {
   rkpm::parallel::mpi_session session(argc, argv);
   rkpm::parallel::communicator comm;
   try {
-    const options o = parse(argc, argv);  // the same on every rank, so is any error
+    options o;
+    if (const auto code = parse(argc, argv, o, comm.rank())) return *code;  // every rank parses the same line
     for (const int k : o.resolutions) measure(comm, o, k);
     if (comm.rank() == 0) model(o);
   } catch (const rkpm::parallel::rank_failure& e) {  // agreed by every rank: a clean stop

@@ -43,7 +43,8 @@ class run_observer {
                run_record record, json identity, std::string configuration, bool quiet,
                io::vtu_format snapshot_format = {}, run_hooks hooks = {})
       : dir_(dir), params_(params), record_(std::move(record)), identity_(std::move(identity)),
-        configuration_(std::move(configuration)), quiet_(quiet), snapshot_format_(snapshot_format), hooks_(std::move(hooks)),
+        configuration_(std::move(configuration)), quiet_(quiet), snapshot_format_(snapshot_format),
+        hooks_(std::move(hooks)),
         tools_(static_cast<index_t>(s.contact().tools().size())),
         mean_force_(tools_, vec2::Zero()),
         measures_(Case::measure(s, params, mean_force_)),

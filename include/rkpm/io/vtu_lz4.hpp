@@ -1,7 +1,7 @@
 #pragma once
 // LZ4 compression of one VTK binary DataArray (io/vtu_encoding.hpp, docs/method.md section
 // 9.4), as vtkLZ4DataCompressor writes it (VTK 8.1 and later, so ParaView 5.5 and later): the
-// block layout of io/vtu_zlib.hpp (32 KiB blocks behind the UInt64 header [#blocks, block size,
+// block layout of io/vtu_blocks.hpp (32 KiB blocks behind the UInt64 header [#blocks, block size,
 // size of a partial last block, compressed size of each block]), each block a raw LZ4 block
 // (LZ4_compress_default, no frame and no size prefix: the reader knows the block's size from
 // the header).
@@ -19,7 +19,7 @@
 #include <lz4.h>
 #endif
 
-#include <rkpm/io/vtu_zlib.hpp>
+#include <rkpm/io/vtu_blocks.hpp>
 
 namespace rkpm::io {
 
@@ -34,7 +34,7 @@ inline constexpr bool vtu_lz4_available = false;
 namespace rkpm::io::detail {
 
 #ifdef RKPM_WITH_LZ4
-// One thread's compressor of single blocks (the Deflater of compress_vtu_blocks_with): no state
+// One thread's compressor of single blocks (the Deflater of compress_block_range): no state
 // between blocks, so the bytes do not depend on the thread count. `level` is not used: LZ4's
 // default acceleration, as vtkLZ4DataCompressor's.
 class lz4_block_compressor {

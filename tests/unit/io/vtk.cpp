@@ -111,6 +111,16 @@ const char* name(vtu_encoding e) {
 const char* name(vtu_compression c) { return rkpm::io::vtu_compression_name(c).data(); }
 const char* name(vtu_deflater d) { return d == vtu_deflater::zlib ? "zlib" : "libdeflate"; }
 
+// The compressions this build can write (the first test case checks that zlib and LZ4 are
+// among them), uncompressed first unless `with_none` is false.
+std::vector<vtu_compression> built_compressions(bool with_none = true) {
+  std::vector<vtu_compression> out;
+  if (with_none) out.push_back(vtu_compression::none);
+  if (rkpm::io::vtu_zlib_available) out.push_back(vtu_compression::zlib);
+  if (rkpm::io::vtu_lz4_available) out.push_back(vtu_compression::lz4);
+  return out;
+}
+
 // The libraries this build writes zlib streams with: libdeflate (the default) first.
 std::vector<vtu_deflater> deflaters() {
   std::vector<vtu_deflater> out;
@@ -132,9 +142,7 @@ TEST_CASE("vtu: this build compresses, with libdeflate (libdeflate-dev and zlib1
 
 TEST_CASE("vtu: meshio reads points, vertex cells and scalar/vector/tensor arrays exactly") {
   const auto dir = vtk_scratch();
-  std::vector<vtu_compression> compressions{vtu_compression::none};
-  if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
-  if (rkpm::io::vtu_lz4_available) compressions.push_back(vtu_compression::lz4);  // decoded by check_vtu.py
+  const auto compressions = built_compressions();  // LZ4 files decoded by check_vtu.py itself
   std::string files;
   for (auto encoding : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii}) {
     for (auto compression : compressions) {
@@ -247,8 +255,7 @@ TEST_CASE("vtu: check_vtu.py refuses a compression header that lies about its bl
   // at a time, the zlib streams (LZ4 blocks) left as they are.
   const auto dir = vtk_scratch() / "lies";
   const auto s = make(20000);
-  std::vector<vtu_compression> compressions{vtu_compression::zlib};
-  if (rkpm::io::vtu_lz4_available) compressions.push_back(vtu_compression::lz4);
+  const auto compressions = built_compressions(false);
   for (auto compression : compressions) {
     const std::string kind = name(compression);
     CAPTURE(kind);
@@ -349,8 +356,7 @@ TEST_CASE("vtu: deferred arrays write the same bytes as the arrays given, each c
       return values;
     });
   for (const auto& a : deferred.arrays()) CHECK(a.values.empty());  // nothing computed yet
-  std::vector<vtu_compression> compressions{vtu_compression::none};
-  if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
+  const auto compressions = built_compressions();
   for (auto e : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii})
     for (auto c : compressions) {
       CAPTURE(name(e));
@@ -389,9 +395,7 @@ TEST_CASE("vtu: positions and cells handed over write the same bytes and are let
   std::vector<double> eps;
   for (std::size_t k = 0; k < points.size(); ++k) eps.push_back(static_cast<double>(k) / 7.0 - 2.5);
   data.add("eps_p", eps);
-  std::vector<vtu_compression> compressions{vtu_compression::none};
-  if (rkpm::io::vtu_zlib_available) compressions.push_back(vtu_compression::zlib);
-  if (rkpm::io::vtu_lz4_available) compressions.push_back(vtu_compression::lz4);
+  const auto compressions = built_compressions();
   for (auto e : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii})
     for (auto c : compressions) {
       CAPTURE(name(e));

@@ -1,0 +1,90 @@
+#pragma once
+// point_data: the named per-particle arrays of a VTK snapshot (io/vtk.hpp writes them), given
+// or deferred (computed when the writer reaches them).
+
+#include <functional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/core/types.hpp>
+
+namespace rkpm::io {
+
+// Named per-particle arrays of one snapshot, in the order they were added (ParaView lists them
+// in that order). Values are copied: a snapshot is written once, not every step. A deferred
+// array is computed only when write_vtu reaches it and let go once encoded, so that a writer of
+// many large arrays holds one of them raw at a time (the runner's snapshots at 10^6 particles).
+class point_data {
+ public:
+  using producer = std::function<std::vector<double>()>;
+  struct array {
+    std::string name;
+    int components;              // 1 scalar, 3 vector (2D + zero z), 9 tensor (row-major)
+    std::vector<double> values;  // #points * components, point-major; empty while deferred
+    producer produce = {};       // set for a deferred array: returns its values
+  };
+
+  // values  #points scalars
+  point_data& add(std::string name, std::span<const double> values) {
+    return add_values(std::move(name), 1, std::vector<double>(values.begin(), values.end()));
+  }
+  point_data& add(std::string name, const std::vector<double>& values) {
+    return add(std::move(name), std::span<const double>(values));
+  }
+  point_data& add(std::string name, std::vector<double>&& values) {  // taken, not copied
+    return add_values(std::move(name), 1, std::move(values));
+  }
+  // values  #points 2-vectors, written as 3 components with z = 0 so ParaView shows vectors
+  point_data& add(std::string name, const std::vector<vec2>& values) {
+    return add_values(std::move(name), 3, flat(values));
+  }
+  // values  #points 3x3 tensors, written row-major (xx xy xz yx yy yz zx zy zz) as VTK expects
+  point_data& add(std::string name, const std::vector<mat3>& values) {
+    return add_values(std::move(name), 9, flat(values));
+  }
+
+  // values  #points * components, point-major (the flat form of any of the above).
+  point_data& add_values(std::string name, int components, std::vector<double> values) {
+    check_name(name);
+    arrays_.push_back(array{std::move(name), components, std::move(values)});
+    return *this;
+  }
+  // values computed when written: produce() returns #points * components values, point-major.
+  point_data& add_deferred(std::string name, int components, producer produce) {
+    check_name(name);
+    arrays_.push_back(array{std::move(name), components, {}, std::move(produce)});
+    return *this;
+  }
+
+  // The point-major form of the overloads above: #points 2-vectors as (x, y, 0), 3x3 tensors row-major.
+  static std::vector<double> flat(const std::vector<vec2>& values) {
+    std::vector<double> out;
+    out.reserve(3 * values.size());
+    for (const auto& v : values) out.insert(out.end(), {v.x(), v.y(), 0.0});
+    return out;
+  }
+  static std::vector<double> flat(const std::vector<mat3>& values) {
+    std::vector<double> out;
+    out.reserve(9 * values.size());
+    for (const auto& m : values)
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out.push_back(m(r, c));
+    return out;
+  }
+
+  const std::vector<array>& arrays() const { return arrays_; }
+  bool empty() const { return arrays_.empty(); }
+
+ private:
+  void check_name(const std::string& name) const {
+    if (name.empty()) fail("point_data: empty array name; give every array a name");
+    for (const auto& a : arrays_)
+      if (a.name == name) fail("point_data: array \"{}\" added twice; give each array a distinct name", name);
+  }
+  std::vector<array> arrays_;
+};
+
+}  // namespace rkpm::io
