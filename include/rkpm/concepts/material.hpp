@@ -26,6 +26,7 @@
 #include <limits>
 #include <string_view>
 
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -36,6 +37,9 @@ struct material_step {
   double time = 0.0;  // s, at the end of the step
   // K; NaN when the problem has no temperature (the state carries none).
   double temperature = std::numeric_limits<double>::quiet_NaN();
+  // ln dt when the caller takes it once for every point of the step (the solver); NaN: a law
+  // that needs it takes it itself. The same value either way.
+  double log_dt = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Where on its curve a hardening law is asked for its flow stress, besides eps_p.
@@ -70,8 +74,10 @@ concept Material = requires(const M& m, typename M::state_type& s, const mat3& F
 };
 
 // The material update with its step, whichever form the law takes.
+// Inlined (as the laws' own updates are) so that the force loop's call passes F and the stress
+// in registers, not through memory.
 template <class M>
-mat3 material_update(const M& m, const mat3& F, typename M::state_type& s, const material_step& step) {
+RKPM_HOT_INLINE mat3 material_update(const M& m, const mat3& F, typename M::state_type& s, const material_step& step) {
   if constexpr (updates_with_step<M>) return m.kirchhoff_stress(F, s, step);
   else return m.kirchhoff_stress(F, s);
 }

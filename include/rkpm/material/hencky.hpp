@@ -49,7 +49,7 @@ struct principal_frame {
 
   // sum_i v_i n_i n_i^T; with v(0) == v(1) the result is independent of the frame, so the
   // arbitrary frame of a repeated eigenvalue does no harm.
-  mat3 assemble(const vec3& v) const {
+  RKPM_HOT_INLINE mat3 assemble(const vec3& v) const {
     const double mean = 0.5 * (v(0) + v(1));
     const double half_diff = 0.5 * (v(0) - v(1));
     mat3 m;

@@ -84,7 +84,7 @@ struct j2_trial {
   }
 
   // (30)-(31): scales the deviator back by dgamma (three_mu = 3 mu) and returns b_e,n+1.
-  block_matrix return_by(double dgamma, double three_mu) {
+  RKPM_HOT_INLINE block_matrix return_by(double dgamma, double three_mu) {
     dev *= 1.0 - three_mu * dgamma / q;
     const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
     return block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));

@@ -132,6 +132,7 @@ class johnson_cook {
     mu_ = constants_.shear_modulus();
     bulk_ = constants_.bulk_modulus();
     heat_per_work_ = heating_.taylor_quinney / (constants_.density * heating_.specific_heat);
+    flow_constants_ = flow_.precomputed();
   }
 
   // A point at the initial temperature, with a plastic strain already (a prestrained part) or
@@ -163,14 +164,14 @@ class johnson_cook {
       s.elastic_left_cauchy_green = t.b;
       return hencky_stress(t.frame, t.volumetric, t.dev);
     }
-    const auto law = flow_.at_homologous_power(s.homologous_power);  // at the step's temperature
+    const auto law = flow_.at_homologous_power(s.homologous_power, flow_constants_);  // at the step's temperature
     if (law.theta == 0.0) {  // molten: sigma_y = 0, the whole deviator returns
       s.equivalent_plastic_strain = eps_p + t.q / (3.0 * mu_);
       s.elastic_left_cauchy_green = isotropic(t.volumetric);
       return mat3::Identity() * (bulk_ * t.volumetric);
     }
     const radial_return_result rr = radial_return(law, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
-                                                  material_step{step.dt, step.time, T}, s.log_last_increment);
+                                                  material_step{step.dt, step.time, T, step.log_dt}, s.log_last_increment);
     const double dgamma = rr.increment;
     s.log_last_increment = rr.log_increment;
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
@@ -178,14 +179,17 @@ class johnson_cook {
     // for the work's rate factor and the failure strain.
     const double log_rate = rr.log_rate;
     const double rate_factor = 1.0 + flow_.C * log_rate;
-    // (32) at the step's rate and T: the exact integral, from the flow stresses at both ends.
-    const double work = law.integral_at_factor(eps_p, eps_p + dgamma, yield, rr.flow_stress, rate_factor);
+    // (32) at the step's rate and T: the exact integral from the yield stress at the start and
+    // the strain factor S = A + B eps_p^n at the root (no pow, no division).
+    const double eps = eps_p + dgamma;
+    const double S = rr.strain_factor;
+    const double work = law.integral_at_factor(eps_p, eps, yield, S, rate_factor);
     s.plastic_work += work;
-    s.equivalent_plastic_strain = eps_p + dgamma;
+    s.equivalent_plastic_strain = eps;
     s.temperature = T + heat_per_work_ * work;  // (32a)
     s.homologous_power = flow_.homologous_power_after(T, s.homologous_power, s.temperature);
-    // The next yield check: A + B eps_p^n from the flow stress at the root (no pow), at the new T.
-    s.flow_stress_at_rest = rr.flow_stress / (rate_factor * law.theta) * (1.0 - s.homologous_power);
+    // The next yield check: (A + B eps_p^n)(1 - T*^m) at the new T.
+    s.flow_stress_at_rest = S * (1.0 - s.homologous_power);
     if (damage_ && dgamma > 0.0) {
       const double q = rr.flow_stress;  // sqrt(3/2) 2 mu |e^e| = sigma_y at the root
       const double triaxiality = q > 0.0 ? bulk_ * t.volumetric / q : 0.0;  // (tr tau / 3) / q
@@ -239,6 +243,7 @@ class johnson_cook {
   double tolerance_;
   int max_iterations_;
   double mu_ = 0.0, bulk_ = 0.0, heat_per_work_ = 0.0;
+  flow_type::precomputed_t flow_constants_{};
 };
 
 }  // namespace rkpm::material

@@ -28,6 +28,8 @@ struct radial_return_result {
   double flow_stress;  // sigma_y(eps_p_n + dgamma) in Pa
   double log_rate = 0.0;  // ln max(rate*, 1) at dgamma, by a law on a step curve (johnson_cook); else 0
   double log_increment = -std::numeric_limits<double>::infinity();  // ln dgamma, by a law on a step curve
+  // The flow stress's strain factor at dgamma (johnson_cook's A + B eps_p^n), by a law on a step curve.
+  double strain_factor = std::numeric_limits<double>::quiet_NaN();
 };
 
 namespace detail {
@@ -83,11 +85,11 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     const double dg = (q_trial - flow_at_start) / (three_mu + hardening.modulus);
     const double r = residual(dg);
     return {dg, 0, r, sigma};
-  } else if constexpr (requires { hardening.along_step(eps_p_n, step.dt, flow_at_start); }) {
+  } else if constexpr (requires { hardening.along_step(eps_p_n, step.dt, flow_at_start, step.log_dt); }) {
     // The same Newton in x = ln dgamma as the branch below, on the law's own curve along the
     // step (hardening::johnson_cook::at_temperature_t::step_curve): the flow stress and its
     // x-derivative together, ln rate* = x - ln(dt rate0) with no log, one exp per update.
-    const auto curve = hardening.along_step(eps_p_n, step.dt, flow_at_start);
+    const auto curve = hardening.along_step(eps_p_n, step.dt, flow_at_start, step.log_dt);
     const double limit = tolerance * q_trial;
     // The upper bound of the branch below, (q_trial - sigma_y(eps_p,n)) / (3 mu), brackets the
     // root with 0 (the flow stress only rises along the step). From it the iterates fall to the
@@ -105,7 +107,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     auto p = curve(dg, x);
     double r = q_trial - three_mu * dg - p.flow;
     for (int it = 1;; ++it) {
-      if (std::abs(r) <= limit) return {dg, it, r, p.flow, p.log_rate, x};
+      if (std::abs(r) <= limit) return {dg, it, r, p.flow, p.log_rate, x, p.strain};
       if (it > max_iterations || !std::isfinite(r))
         detail::not_converged(H::name, r, it - 1, limit, q_trial, eps_p_n, dg);
       (r > 0.0 ? lo : hi) = dg;

@@ -71,6 +71,7 @@ class point_materials {
                       std::vector<vec2>& f_int, step_context where) {
     const point_traversal& tr = m.traversal;
     if (static_cast<index_t>(tile_.size()) != tr.tiles()) tile_.assign(tr.tiles(), tile_summary{});
+    const double log_dt = where.dt > 0.0 ? std::log(where.dt) : std::numeric_limits<double>::quiet_NaN();
     assemble_point_forces<G>(m, d, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
       // A tile's points are visited in order by one thread: its first point starts the tile's sums.
       tile_summary& tile = tile_[tr.tile_of(q)];
@@ -88,7 +89,7 @@ class point_materials {
       mat3 tau;
       try {
         tau = material_update(material.at_point(q), F, state_[q],
-                              material_step{where.dt, where.time, state_temperature(state_[q])});
+                              material_step{where.dt, where.time, state_temperature(state_[q]), log_dt});
       } catch (const std::exception& ex) {
         tile.fail(q, failure::material, J);
 #pragma omp critical(rkpm_material_error)

@@ -67,15 +67,15 @@ struct johnson_cook {
   // T*^m at T_new from its value power_old at T_old, where a point heats by a small fraction of
   // T_old - T_room in a step: power_old (1 + u)^m, u = (T_new - T_old) / (T_old - T_room), by the
   // binomial series while |u| <= 1/32 (a pow otherwise, and from room temperature).
+  // The bounds are checked on T itself (T* itself costs a division, and only the pow needs it).
   double homologous_power_after(double T_old, double power_old, double T_new) const {
-    const double t_new = homologous_temperature(T_new);
-    if (t_new <= 0.0) return 0.0;
-    if (t_new >= 1.0) return 1.0;
+    if (!(T_new > room_temperature)) return 0.0;
+    if (T_new >= melt_temperature) return 1.0;
     if (power_old > 0.0 && T_old > room_temperature) {
       const double u = (T_new - T_old) / (T_old - room_temperature);
       if (std::abs(u) <= 1.0 / 32.0) return power_old * binomial_power(m, u);
     }
-    return std::pow(t_new, m);
+    return homologous_power(T_new);
   }
   // (1 + u)^p for |u| <= 1/32 as its binomial series: 12 terms at most, below 1e-17 of the sum
   // (|u|^12 <= 1e-18); exact after one term for p = 1.
@@ -117,6 +117,14 @@ struct johnson_cook {
     if (!(rate > reference_rate)) return 0.0;
     return strain_factor(eps_p) * C / rate * thermal_factor(at.temperature);
   }
+  // What a return mapping needs of the constants besides themselves, computed once per material
+  // (material::johnson_cook) instead of once per point.
+  struct precomputed_t {
+    double log_reference_rate;  // ln rate0
+    double inverse_n_plus_1;    // 1 / (n + 1)
+  };
+  precomputed_t precomputed() const { return {std::log(reference_rate), 1.0 / (n + 1.0)}; }
+
   // The law at one temperature, 1 - T*^m evaluated once: what the return mapping of a step
   // iterates on (the temperature of a step is that of its start, material/johnson_cook.hpp),
   // so that each Newton update costs the strain and rate terms only.
@@ -124,6 +132,7 @@ struct johnson_cook {
     static constexpr std::string_view name = "johnson_cook";
     const johnson_cook* law;
     double theta;  // 1 - T*^m
+    precomputed_t constants;  // ln rate0 and 1 / (n + 1), kept by material::johnson_cook
     double flow_stress(double eps_p, const flow_point& at) const {
       return law->strain_factor(eps_p) * law->rate_factor(at.plastic_strain_rate) * theta;
     }
@@ -148,16 +157,21 @@ struct johnson_cook {
       return {strain, rate > law->reference_rate ? flow / R * law->C / rate : 0.0};
     }
     // The work integral (32) over [from, to] at the step's rate, from the flow stresses the
-    // return mapping found: flow_from at rate 0 and eps_p = from, flow_to at `rate` and to
-    // (to^(n+1) = to (flow_to / (R theta) - A) / B: no pow). theta > 0.
+    // return mapping found: flow_from at rate 0 and eps_p = from, flow_to at `rate` and to.
+    // theta > 0.
     double integral(double from, double to, double flow_from, double flow_to, double rate) const {
-      return integral_at_factor(from, to, flow_from, flow_to, law->rate_factor(rate));
+      const double R = law->rate_factor(rate);
+      return integral_at_factor(from, to, flow_from, flow_to / (R * theta), R);
     }
-    // The same with the step's rate factor R = 1 + C ln max(rate*, 1) known (no log).
-    double integral_at_factor(double from, double to, double flow_from, double flow_to, double R) const {
+    // The same from what a return mapping on the step curve gives: the rate factor R = 1 + C ln
+    // max(rate*, 1) and the strain factor S_to = A + B to^n at the end. With theta S_from =
+    // flow_from at the start, R theta int_from^to (A + B e^n) de
+    //   = R (theta A (to - from) + (theta to (S_to - A) - from (flow_from - A theta)) / (n + 1)):
+    // no pow, no log, no division.
+    double integral_at_factor(double from, double to, double flow_from, double strain_to, double R) const {
       const double A = law->A;
-      const double strain = A * (to - from) + (to * (flow_to / (R * theta) - A) - from * (flow_from / theta - A)) / (law->n + 1.0);
-      return strain * R * theta;
+      return R * (theta * A * (to - from) +
+                  constants.inverse_n_plus_1 * (theta * to * (strain_to - A) - from * (flow_from - A * theta)));
     }
 
     // The flow stress along one step's return mapping, for Newton in x = ln dgamma
@@ -175,6 +189,7 @@ struct johnson_cook {
       double log_offset;  // ln(dt rate0), +inf when dt = 0 (no rate term)
       struct point {
         double flow;        // sigma_y
+        double strain;      // A + B eps^n, the flow stress at the reference rate and room temperature
         double dflow_dx;    // d sigma_y / d ln dgamma = dg d sigma_y / d eps_p + d sigma_y / d ln rate*
         double d2flow_dx2;  // its x-derivative, for Chebyshev's update (radial_return.hpp)
         double log_rate;    // ln max(rate*, 1)
@@ -198,21 +213,28 @@ struct johnson_cook {
         const double log_rate = std::max(0.0, x - log_offset);
         const double R = 1.0 + C * log_rate;
         const double R_x = log_rate > 0.0 ? C : 0.0;
-        return {S * R * theta, (S_x * R + S * R_x) * theta, (S_xx * R + 2.0 * S_x * R_x) * theta, log_rate};
+        return {S * R * theta, S, (S_x * R + S * R_x) * theta, (S_xx * R + 2.0 * S_x * R_x) * theta, log_rate};
       }
     };
     // flow_at_start: sigma_y(eps_n) at the reference rate and this temperature, (A + B eps_n^n) theta.
-    step_curve along_step(double eps_n, double dt, double flow_at_start) const {
+    // log_dt: ln dt if the caller has it (material_step::log_dt), NaN otherwise. ln(dt rate0) is
+    // taken as ln dt + ln rate0, so that one log per step serves every point of a body.
+    step_curve along_step(double eps_n, double dt, double flow_at_start,
+                          double log_dt = std::numeric_limits<double>::quiet_NaN()) const {
       const double power_n = (eps_n > 0.0 && law->B > 0.0 && theta > 0.0)
                                  ? std::max(0.0, (flow_at_start / theta - law->A) / law->B)
                                  : (eps_n > 0.0 ? std::pow(eps_n, law->n) : 0.0);
       return {law->A, law->B, law->n, law->C, theta, eps_n, power_n, 1.0 / eps_n,
-              dt > 0.0 ? std::log(dt * law->reference_rate) : std::numeric_limits<double>::infinity()};
+              dt > 0.0 ? (std::isnan(log_dt) ? std::log(dt) : log_dt) + constants.log_reference_rate
+                       : std::numeric_limits<double>::infinity()};
     }
   };
-  at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T)}; }
+  at_temperature_t at_temperature(double T) const { return {this, thermal_factor(T), precomputed()}; }
   // The same from T*^m known (material::johnson_cook keeps it per point: no pow).
-  at_temperature_t at_homologous_power(double power) const { return {this, 1.0 - power}; }
+  at_temperature_t at_homologous_power(double power, const precomputed_t& constants) const {
+    return {this, 1.0 - power, constants};
+  }
+  at_temperature_t at_homologous_power(double power) const { return at_homologous_power(power, precomputed()); }
 
   // The plastic work per unit volume int_from^to sigma_y de at a fixed rate and temperature (the
   // step's, docs/method.md (32)): (1 + C ln rate*)(1 - T*^m) (A (to - from) + B (to^(n+1) -
