@@ -2,8 +2,9 @@
 // point_traversal: the order in which the force loop (solver/point_forces.hpp) visits the
 // quadrature points so that it can gather, update and scatter in one pass, in parallel,
 // without atomics and with sums that do not depend on the thread count.
-//   tile_start  #tiles+1: tile t is the points tile_start[t] .. tile_start[t+1]-1 (fixed size
-//               tile_points, the last one shorter, whatever the thread count)
+//   tile_start  #tiles+1: tile t is the points tile_start[t] .. tile_start[t+1]-1 (made with
+//               a fixed size, the last one shorter, whatever the thread count; a rank's
+//               traversal, parallel/halo.hpp, keeps of each tile the points it computes)
 //   tile        the tiles grouped by colour; colour c is tile[colour_start[c] .. colour_start[c+1]-1]
 //   serial_from colours from this one on are visited one tile after the other (tiles of such a
 //               colour may share particles); below it, tiles of one colour share no particle
@@ -27,19 +28,19 @@ struct point_traversal {
   std::vector<index_t> tile;
   std::vector<index_t> colour_start{0};
   index_t serial_from = 0;
-  index_t tile_points = 1;
 
   index_t tiles() const { return static_cast<index_t>(tile_start.size()) - 1; }
   index_t colours() const { return static_cast<index_t>(colour_start.size()) - 1; }
-  // The tile of point q: a point's tile is visited by one thread, its points in order, so
-  // per-tile sums (point_materials' reductions) are race-free and in a fixed order.
-  index_t tile_of(index_t q) const { return q / tile_points; }
-  // body(first, last) for the points first .. last-1 of every tile, colour by colour, the tiles
-  // of a colour below serial_from in parallel (exec::for_each_coloured, core/execution.hpp).
+  // body(t, first, last) for every tile t, its points first .. last-1, colour by colour, the
+  // tiles of a colour below serial_from in parallel (exec::for_each_coloured,
+  // core/execution.hpp). A tile is visited by one thread, its points in order, so per-tile sums
+  // (point_materials' reductions) are race-free and in a fixed order.
   template <class Body>
   void for_each_tile(Body&& body) const {
-    exec::for_each_coloured(colour_start, serial_from,
-                            [&](index_t k) { body(tile_start[tile[k]], tile_start[tile[k] + 1]); });
+    exec::for_each_coloured(colour_start, serial_from, [&](index_t k) {
+      const index_t t = tile[k];
+      body(t, tile_start[t], tile_start[t + 1]);
+    });
   }
 };
 
@@ -54,7 +55,6 @@ point_traversal make_point_traversal(const shape_table<Dim>& table, index_t part
   constexpr int parallel_colours = 63;  // colour 63 collects the tiles that find no free colour
   if (tile_points < 1) fail("point traversal: tile_points = {} must be at least 1", tile_points);
   point_traversal t;
-  t.tile_points = tile_points;
   const index_t np = table.points();
   const index_t tiles = (np + tile_points - 1) / tile_points;
   t.tile_start.resize(tiles + 1);

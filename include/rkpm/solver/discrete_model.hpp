@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -53,6 +54,9 @@ struct discrete_model {
   std::vector<vec2> test_gradient;
   ownership own;
   model_bodies bodies;
+  // A rank's model (parallel/local_model.hpp): the whole model's mean support, which
+  // mean_support() gives instead of its own particles' mean. Empty on one process.
+  std::optional<vec2> global_mean_support;
 
   // Takes the bodies found for these particles and cells, and finds each point's.
   void set_bodies(model_bodies b) {
@@ -61,6 +65,14 @@ struct discrete_model {
   }
 
   index_t particle_count() const { return particles.size(); }
+  // The particles' mean support per direction (the support stretch of the stable step,
+  // solver/point_materials.hpp), summed in particle order.
+  vec2 mean_support() const {
+    if (global_mean_support) return *global_mean_support;
+    vec2 sum = vec2::Zero();
+    for (const vec2& a : particles.support) sum += a;
+    return sum / static_cast<double>(particle_count());
+  }
   index_t point_count() const { return points.size(); }
   // The gradients the internal force is scattered with (#entries of at_points).
   const std::vector<vec2>& test_gradients() const { return test_gradient.empty() ? at_points.grad : test_gradient; }

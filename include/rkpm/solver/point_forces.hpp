@@ -39,8 +39,8 @@ namespace detail {
 // pointers and the row bounds are held in locals: the scatter's stores into f could otherwise
 // alias the table, and the compiler would reload its pointers for every entry.
 template <Geometry G, class PointRule>
-void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad, index_t first, index_t last,
-                     const std::vector<vec2>& x, std::vector<vec2>& f, PointRule& rule) {
+void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad, index_t tile, index_t first,
+                     index_t last, const std::vector<vec2>& x, std::vector<vec2>& f, PointRule& rule) {
   const stored_index* const offset = m.at_points.offset.data();
   const particle_index* const neighbor = m.at_points.neighbor.data();
   const double* const N = m.at_points.N.data();
@@ -58,7 +58,7 @@ void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad
     }
     mat2 S = mat2::Zero();
     double hoop = 0.0;
-    rule(q, g, S, hoop);
+    rule(tile, q, g, S, hoop);
     for (index_t e = begin; e < end; ++e) {
       vec2& fI = fs[neighbor[e]];
       fI.noalias() += S * test[e];
@@ -69,9 +69,9 @@ void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad
 
 }  // namespace detail
 
-// The whole traversal: f = sum over the points of the scattered stresses that rule(q, gradient,
-// S_q, h_q) sets from the gathered gradient of x (S_q, h_q start at zero; the rule runs in
-// parallel and must not throw).
+// The whole traversal: f = sum over the points of the scattered stresses that rule(tile, q,
+// gradient, S_q, h_q) sets from the gathered gradient of x at point q of tile `tile` (S_q, h_q
+// start at zero; the rule runs in parallel and must not throw).
 template <Geometry G, class PointRule>
 void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, std::vector<vec2>& f,
                            PointRule&& rule) {
@@ -83,7 +83,9 @@ void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, 
          tr.tile_start.back(), m.point_count());
   const std::vector<vec2>& grad = m.test_gradients();
   exec::parallel_for(m.particle_count(), [&](index_t I) { f[I] = vec2::Zero(); });
-  tr.for_each_tile([&](index_t first, index_t last) { detail::traverse_points<G>(m, grad, first, last, x, f, rule); });
+  tr.for_each_tile([&](index_t tile, index_t first, index_t last) {
+    detail::traverse_points<G>(m, grad, tile, first, last, x, f, rule);
+  });
 }
 
 }  // namespace rkpm

@@ -61,21 +61,17 @@ class point_materials {
         tile_(m.traversal.tiles()) {
     if (material.count() > 1)
       for (index_t q = 0; q < m.point_count(); ++q) state_[q] = material.at_point(q).initial_state();
-    support_inverse_.setZero();
-    for (const vec2& a : m.particles.support) support_inverse_ += a;
-    support_inverse_ = (support_inverse_ / static_cast<double>(m.particle_count())).cwiseInverse();
+    support_inverse_ = m.mean_support().cwiseInverse();
   }
 
   // f_int at coefficients d; advances the material states to the new F.
   void internal_force(const discrete_model& m, const materials_by_body<M>& material, const std::vector<vec2>& d,
                       std::vector<vec2>& f_int, step_context where) {
     const point_traversal& tr = m.traversal;
-    if (static_cast<index_t>(tile_.size()) != tr.tiles()) tile_.assign(tr.tiles(), tile_summary{});
+    tile_.assign(tr.tiles(), tile_summary{});
     const double log_dt = where.dt > 0.0 ? std::log(where.dt) : std::numeric_limits<double>::quiet_NaN();
-    assemble_point_forces<G>(m, d, f_int, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
-      // A tile's points are visited in order by one thread: its first point starts the tile's sums.
-      tile_summary& tile = tile_[tr.tile_of(q)];
-      if (q % tr.tile_points == 0) tile = tile_summary{};
+    assemble_point_forces<G>(m, d, f_int, [&](index_t t, index_t q, const point_gradient& g, mat2& S, double& hoop) {
+      tile_summary& tile = tile_[t];  // its points are visited in order by one thread
       const vec2& X = m.points.position[q];
       mat3 F = mat3::Identity();
       F.topLeftCorner<2, 2>() += g.H;

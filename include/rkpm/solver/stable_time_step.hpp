@@ -53,7 +53,7 @@ template <Geometry G, class PointF>
 void elastic_stiffness(const discrete_model& m, const point_moduli& moduli, const PointF& F_at,
                        const std::vector<vec2>& x, std::vector<vec2>& out) {
   constexpr bool reference = std::is_same_v<PointF, std::nullptr_t>;
-  assemble_point_forces<G>(m, x, out, [&](index_t q, const point_gradient& g, mat2& S, double& hoop) {
+  assemble_point_forces<G>(m, x, out, [&](index_t /*tile*/, index_t q, const point_gradient& g, mat2& S, double& hoop) {
     const auto [lambda, mu] = moduli.at(q);
     const vec2& X = m.points.position[q];
     mat3 F = mat3::Identity();

@@ -91,11 +91,12 @@ TEST_CASE("point traversal: tiles of one colour share no particle, on a table wi
       for (index_t k = t.colour_start[c]; k < t.colour_start[c + 1]; ++k) colour_of_tile[t.tile[k]] = c;
     std::vector<index_t> done(t.colours(), 0);  // tiles finished per colour
     bool in_order = true;
-    t.for_each_tile([&](index_t first, index_t last) {
-      const index_t c = colour_of_tile[t.tile_of(first)];
+    t.for_each_tile([&](index_t tile, index_t first, index_t last) {
+      const index_t c = colour_of_tile[tile];
       for (index_t q = first; q < last; ++q) ++seen[q];
 #pragma omp critical(test_traversal_order)
       {
+        in_order = in_order && first == t.tile_start[tile] && last == t.tile_start[tile + 1];
         for (index_t b = 0; b < c; ++b) in_order = in_order && done[b] == t.colour_start[b + 1] - t.colour_start[b];
         ++done[c];
       }

@@ -1,0 +1,54 @@
+#pragma once
+// local_force_model: the part of the discrete model that one rank's force loop reads
+// (solver/point_forces.hpp, solver/point_materials.hpp), from the whole model and the rank's
+// halo plan (parallel/halo.hpp; docs/method.md section 9.8):
+//   particles       the plan's local particles, owned first, then the ghosts
+//   points          the plan's points (redundant ghost points included), in global order
+//   at_points       their rows, columns renamed to local particles (local_shape_table)
+//   traversal       the global tiles and colours restricted to them (local_traversal)
+//   test_gradient   the corrected gradients of those rows, for a VCI rule
+//   own             owned, ghost and point ranges (halo_plan::own)
+//   global_mean_support  the whole model's mean support (the stable step's support stretch)
+// Over it the force loop gives every owned particle the force it has on one process, bit for
+// bit (tests/mpi/local_force.cpp), and every point the same stress and material state. What
+// the rest of the step reads (the table at the particles, lumped volumes, bodies and surfaces)
+// is not restricted yet: it comes with the distributed step.
+
+#include <vector>
+
+#include <rkpm/parallel/halo.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+
+namespace rkpm::parallel {
+
+inline discrete_model local_force_model(const discrete_model& global, const halo_plan& plan) {
+  if (global.particle_count() != plan.global_particles || global.point_count() != plan.global_points)
+    fail("local force model: the plan was made for {} particles and {} points but the model has {} and {}; make "
+         "the plan from this model's table",
+         plan.global_particles, plan.global_points, global.particle_count(), global.point_count());
+  discrete_model m;
+  for (index_t i = 0; i < plan.local_particles(); ++i) {
+    const index_t I = plan.global_particle(i);
+    m.particles.position.push_back(global.particles.position[I]);
+    m.particles.volume.push_back(global.particles.volume[I]);
+    m.particles.support.push_back(global.particles.support[I]);
+  }
+  for (const stored_index q : plan.points) {
+    m.points.position.push_back(global.points.position[q]);
+    m.points.weight.push_back(global.points.weight[q]);
+    if (!global.points.cell.empty()) m.points.cell.push_back(global.points.cell[q]);
+  }
+  m.at_points = local_shape_table(plan, global.at_points);
+  m.traversal = local_traversal(plan, global.traversal);
+  if (!global.test_gradient.empty()) {
+    m.test_gradient.reserve(m.at_points.entries());
+    for (const stored_index q : plan.points)
+      for (index_t e = global.at_points.offset[q]; e < global.at_points.offset[q + 1]; ++e)
+        m.test_gradient.push_back(global.test_gradient[e]);
+  }
+  m.own = plan.own();
+  m.global_mean_support = global.mean_support();
+  return m;
+}
+
+}  // namespace rkpm::parallel

@@ -1,0 +1,161 @@
+// One rank's force loop (parallel/local_model.hpp) against the whole model's, built on one
+// process for every rank of METIS partitions into 2 and 3 parts and of cuts forced along and
+// across the axis: an axisymmetric bar (cubic kernel, linear correction, Q2 points) of J2
+// material with linear hardening, deformed three times by a smooth field that yields most of
+// it. Each rank evaluates point_materials<axisymmetric, J2>::internal_force over its local
+// model from its owned and ghost coefficients: every owned particle's force equals the whole
+// model's bit for bit (memcmp: the local traversal adds the same terms in the same order),
+// every local point's material state equals that point's (a redundant ghost point is computed
+// alike on both ranks), and the smallest support stretch over the ranks equals the model's.
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <rkpm/correction/polynomial_bases.hpp>
+#include <rkpm/geometry/axisymmetric.hpp>
+#include <rkpm/kernel/cubic_spline.hpp>
+#include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/parallel/halo.hpp>
+#include <rkpm/parallel/local_model.hpp>
+#include <rkpm/parallel/partition.hpp>
+#include <rkpm/quadrature/cell_rules.hpp>
+#include <rkpm/solver/body_materials.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/point_materials.hpp>
+
+namespace test_mpi_local_force {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
+using namespace rkpm;
+using namespace rkpm::parallel;
+
+namespace {
+
+using G = geometry::axisymmetric;
+using M = material::j2_plasticity<material::hardening::linear>;
+constexpr double radius = 3.2e-3, height = 16e-3;
+
+discrete_model bar_model() {
+  const vec2 lo(0.0, 0.0), hi(radius, height);
+  const Eigen::Vector2i n(9, 31);
+  return build_discrete_model<kernel::cubic_spline, correction::linear, quadrature::q2, G>(
+      make_grid_particles<2>(lo, hi, n, 2.0), make_grid_mesh(lo, hi, n));
+}
+
+M copper() {
+  return M(material::elastic_constants{117e9, 0.35, 8930.0}, material::hardening::linear{400e6, 100e6});
+}
+
+// Coefficients x_I = X_I + s u(X_I): a barrelling squash, not a polynomial, 1.5 % strain at s = 1.
+std::vector<vec2> deformed(const discrete_model& m, double s) {
+  std::vector<vec2> x(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I) {
+    const vec2& X = m.particles.position[I];
+    const double z = X[1] / height, r = X[0] / radius;
+    x[I] = X + s * 0.015 * vec2(0.5 * X[0] * (1.0 + 0.6 * std::sin(3.0 * z)) * (1.0 + 0.2 * r * r),
+                                 -X[1] * (1.0 + 0.3 * std::cos(2.0 * z + r)));
+  }
+  return x;
+}
+
+struct evaluation {
+  std::vector<vec2> force;
+  std::vector<M::state_type> states;
+  double min_stretch;
+};
+
+// Three force evaluations at s = 0.4, 0.8, 1.2 over model m from the whole coefficient field
+// (local particle i is global particle global_of(i)).
+template <class GlobalOf>
+std::vector<evaluation> evaluate(const discrete_model& m, const std::vector<vec2>& x0, const std::vector<vec2>& x1,
+                                 const std::vector<vec2>& x2, GlobalOf&& global_of) {
+  const materials_by_body<M> material(m, copper(), {});
+  point_materials<G, M> points(m, material);
+  std::vector<evaluation> out;
+  const std::vector<vec2>* fields[] = {&x0, &x1, &x2};
+  for (int k = 0; k < 3; ++k) {
+    std::vector<vec2> x(m.particle_count()), f(m.particle_count());
+    for (index_t i = 0; i < m.particle_count(); ++i) x[i] = (*fields[k])[global_of(i)];
+    points.internal_force(m, material, x, f, step_context{k + 1, 1e-7 * (k + 1), 1e-7});
+    out.push_back({f, points.states(), points.min_stretch()});
+  }
+  return out;
+}
+
+void check_partition(const discrete_model& m, const std::vector<evaluation>& whole, const particle_partition& p,
+                     const std::vector<vec2>& x0, const std::vector<vec2>& x1, const std::vector<vec2>& x2,
+                     const std::string& name) {
+  CAPTURE(name);
+  std::vector<double> narrowest(3, 1e300);
+  std::vector<int> owners(m.particle_count(), 0);
+  index_t redundant = 0;
+  for (int r = 0; r < p.parts; ++r) {
+    CAPTURE(r);
+    const halo_plan plan = make_halo_plan(p, m.at_points, r);
+    const discrete_model local = local_force_model(m, plan);
+    REQUIRE(local.traversal.tile_start.back() == local.point_count());
+    const auto result = evaluate(local, x0, x1, x2, [&](index_t i) { return plan.global_particle(i); });
+    redundant += local.point_count();
+    for (int k = 0; k < 3; ++k) {
+      CAPTURE(k);
+      bool forces_equal = true, states_equal = true;
+      for (std::size_t i = 0; i < plan.owned.size(); ++i) {
+        const index_t I = plan.owned[i];
+        ++owners[I];
+        forces_equal = forces_equal && std::memcmp(&result[k].force[i], &whole[k].force[I], sizeof(vec2)) == 0;
+      }
+      for (std::size_t j = 0; j < plan.points.size(); ++j)
+        states_equal = states_equal && std::memcmp(&result[k].states[j], &whole[k].states[plan.points[j]],
+                                                   sizeof(M::state_type)) == 0;
+      CHECK(forces_equal);
+      CHECK(states_equal);
+      narrowest[k] = std::min(narrowest[k], result[k].min_stretch);
+    }
+  }
+  for (int k = 0; k < 3; ++k) CHECK(narrowest[k] == whole[k].min_stretch);
+  CHECK(std::ranges::all_of(owners, [](int o) { return o == 3; }));  // every particle owned once, 3 times checked
+  CHECK(redundant > m.point_count());  // the cuts make some points redundant: the check crosses them
+}
+
+}  // namespace
+
+TEST_CASE("local force model: each rank's owned forces and point states equal the whole model's, bit for bit") {
+  const discrete_model m = bar_model();
+  const std::vector<vec2> x0 = deformed(m, 0.4), x1 = deformed(m, 0.8), x2 = deformed(m, 1.2);
+  const auto whole = evaluate(m, x0, x1, x2, [](index_t I) { return I; });
+  // The field yields: the check covers the return mapping, not the elastic branch alone.
+  index_t plastic = 0;
+  for (const auto& s : whole[2].states) plastic += s.equivalent_plastic_strain > 0.0;
+  CHECK(plastic > m.point_count() / 2);
+  // More than one tile and colour, so the restriction of the traversal is exercised.
+  CHECK(m.traversal.colours() >= 2);
+
+  for (index_t parts : {2, 3})
+    check_partition(m, whole, partition_particles(m.at_points, m.particle_count(), parts), x0, x1, x2,
+                    "METIS into " + std::to_string(parts));
+  // Cuts forced along the axis (r < R / 2 against the rest) and across the bar in three stripes.
+  std::vector<stored_index> along(m.particle_count()), across(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I) {
+    const vec2& X = m.particles.position[I];
+    along[I] = X[0] < 0.5 * radius ? 0 : 1;
+    across[I] = static_cast<stored_index>(std::min(2.0, std::floor(3.0 * X[1] / height)));
+  }
+  check_partition(m, whole, given_partition(along, 2), x0, x1, x2, "along the axis");
+  check_partition(m, whole, given_partition(across, 3), x0, x1, x2, "three stripes across");
+}
+
+TEST_CASE("local force model: a plan of another model is refused") {
+  const discrete_model m = bar_model();
+  const discrete_model other = build_discrete_model<kernel::cubic_spline, correction::linear, quadrature::q2, G>(
+      make_grid_particles<2>(vec2(0, 0), vec2(radius, height), Eigen::Vector2i(5, 9), 2.0),
+      make_grid_mesh(vec2(0, 0), vec2(radius, height), Eigen::Vector2i(5, 9)));
+  const halo_plan plan = make_halo_plan(partition_particles(other.at_points, other.particle_count(), 2), other.at_points, 0);
+  CHECK_THROWS_WITH_AS(local_force_model(m, plan), doctest::Contains("make the plan from this model's table"),
+                       rkpm::error);
+}
+
+}  // namespace test_mpi_local_force
