@@ -16,17 +16,13 @@
 #include <string>
 #include <vector>
 
-#include <rkpm/correction/polynomial_bases.hpp>
-#include <rkpm/geometry/axisymmetric.hpp>
-#include <rkpm/kernel/cubic_spline.hpp>
-#include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/local_model.hpp>
 #include <rkpm/parallel/partition.hpp>
-#include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/solver/body_materials.hpp>
-#include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_materials.hpp>
+
+#include "mpi/bar_problem.hpp"
 
 namespace test_mpi_local_force {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
@@ -35,30 +31,15 @@ using namespace rkpm::parallel;
 
 namespace {
 
-using G = geometry::axisymmetric;
-using M = material::j2_plasticity<material::hardening::linear>;
-constexpr double radius = 3.2e-3, height = 16e-3;
+using G = test::bar::geometry_type;
+using M = test::bar::material_type;
+using test::bar::height;
+using test::bar::radius;
 
-discrete_model bar_model() {
-  const vec2 lo(0.0, 0.0), hi(radius, height);
-  const Eigen::Vector2i n(9, 31);
-  return build_discrete_model<kernel::cubic_spline, correction::linear, quadrature::q2, G>(
-      make_grid_particles<2>(lo, hi, n, 2.0), make_grid_mesh(lo, hi, n));
-}
-
-M copper() {
-  return M(material::elastic_constants{117e9, 0.35, 8930.0}, material::hardening::linear{400e6, 100e6});
-}
-
-// Coefficients x_I = X_I + s u(X_I): a barrelling squash, not a polynomial, 1.5 % strain at s = 1.
+// The three deformed coefficient fields of the bar.
 std::vector<vec2> deformed(const discrete_model& m, double s) {
   std::vector<vec2> x(m.particle_count());
-  for (index_t I = 0; I < m.particle_count(); ++I) {
-    const vec2& X = m.particles.position[I];
-    const double z = X[1] / height, r = X[0] / radius;
-    x[I] = X + s * 0.015 * vec2(0.5 * X[0] * (1.0 + 0.6 * std::sin(3.0 * z)) * (1.0 + 0.2 * r * r),
-                                 -X[1] * (1.0 + 0.3 * std::cos(2.0 * z + r)));
-  }
+  for (index_t I = 0; I < m.particle_count(); ++I) x[I] = test::bar::deformed(m.particles.position[I], s);
   return x;
 }
 
@@ -73,7 +54,7 @@ struct evaluation {
 template <class GlobalOf>
 std::vector<evaluation> evaluate(const discrete_model& m, const std::vector<vec2>& x0, const std::vector<vec2>& x1,
                                  const std::vector<vec2>& x2, GlobalOf&& global_of) {
-  const materials_by_body<M> material(m, copper(), {});
+  const materials_by_body<M> material(m, test::bar::copper(), {});
   point_materials<G, M> points(m, material);
   std::vector<evaluation> out;
   const std::vector<vec2>* fields[] = {&x0, &x1, &x2};
@@ -124,8 +105,9 @@ void check_partition(const discrete_model& m, const std::vector<evaluation>& who
 }  // namespace
 
 TEST_CASE("local force model: each rank's owned forces and point states equal the whole model's, bit for bit") {
-  const discrete_model m = bar_model();
-  const std::vector<vec2> x0 = deformed(m, 0.4), x1 = deformed(m, 0.8), x2 = deformed(m, 1.2);
+  const discrete_model m = test::bar::model();
+  const auto [s0, s1, s2] = test::bar::amplitudes;
+  const std::vector<vec2> x0 = deformed(m, s0), x1 = deformed(m, s1), x2 = deformed(m, s2);
   const auto whole = evaluate(m, x0, x1, x2, [](index_t I) { return I; });
   // The field yields: the check covers the return mapping, not the elastic branch alone.
   index_t plastic = 0;
@@ -149,10 +131,8 @@ TEST_CASE("local force model: each rank's owned forces and point states equal th
 }
 
 TEST_CASE("local force model: a plan of another model is refused") {
-  const discrete_model m = bar_model();
-  const discrete_model other = build_discrete_model<kernel::cubic_spline, correction::linear, quadrature::q2, G>(
-      make_grid_particles<2>(vec2(0, 0), vec2(radius, height), Eigen::Vector2i(5, 9), 2.0),
-      make_grid_mesh(vec2(0, 0), vec2(radius, height), Eigen::Vector2i(5, 9)));
+  const discrete_model m = test::bar::model();
+  const discrete_model other = test::bar::model(5, 9);
   const halo_plan plan = make_halo_plan(partition_particles(other.at_points, other.particle_count(), 2), other.at_points, 0);
   CHECK_THROWS_WITH_AS(local_force_model(m, plan), doctest::Contains("make the plan from this model's table"),
                        rkpm::error);

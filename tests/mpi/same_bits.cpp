@@ -27,6 +27,7 @@
 #include <rkpm/parallel/mpi_exchange.hpp>
 #include <rkpm/parallel/partition.hpp>
 
+#include "mpi/gather_owned.hpp"
 #include "mpi/grid_problem.hpp"
 
 namespace test_mpi_same_bits {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -57,28 +58,6 @@ std::vector<vec2> internal_force(const shape_table<2>& table, const std::vector<
 bool same_bits(const vec2& a, const vec2& b) { return std::memcmp(a.data(), b.data(), sizeof(double) * 2) == 0; }
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
-// The owned forces of every rank, in global order, on rank 0 (empty elsewhere).
-std::vector<vec2> gather_owned(communicator& world, const halo_plan& plan, const std::vector<vec2>& f) {
-  const int owned = static_cast<int>(plan.owned.size());
-  std::vector<double> values(2 * owned);
-  for (int i = 0; i < owned; ++i) std::memcpy(values.data() + 2 * i, f[i].data(), 2 * sizeof(double));
-  std::vector<int> counts(world.size()), displacements(world.size(), 0);
-  MPI_Gather(&owned, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world.get());
-  for (int r = 1; r < world.size(); ++r) displacements[r] = displacements[r - 1] + counts[r - 1];
-  std::vector<stored_index> ids(world.rank() == 0 ? plan.global_particles : 0);
-  MPI_Gatherv(plan.owned.data(), owned, MPI_INT, ids.data(), counts.data(), displacements.data(), MPI_INT, 0, world.get());
-  for (int r = 0; r < world.size(); ++r) {
-    counts[r] *= 2;
-    displacements[r] *= 2;
-  }
-  std::vector<double> all(world.rank() == 0 ? 2 * plan.global_particles : 0);
-  MPI_Gatherv(values.data(), 2 * owned, MPI_DOUBLE, all.data(), counts.data(), displacements.data(), MPI_DOUBLE, 0,
-              world.get());
-  std::vector<vec2> out(world.rank() == 0 ? plan.global_particles : 0, vec2::Constant(nan));
-  for (std::size_t k = 0; k < ids.size(); ++k) std::memcpy(out[ids[k]].data(), all.data() + 2 * k, 2 * sizeof(double));
-  return out;
-}
-
 struct distributed_force {
   std::vector<vec2> gathered;  // on rank 0
   index_t ghosts_everywhere = 0, wrong_ghosts = 0;
@@ -106,7 +85,7 @@ distributed_force force_on_ranks(communicator& world, const test::grid_problem& 
   }
   out.ghosts_everywhere = static_cast<index_t>(plan.ghosts.size());
   MPI_Allreduce(MPI_IN_PLACE, &out.ghosts_everywhere, 1, MPI_INT64_T, MPI_SUM, world.get());
-  out.gathered = gather_owned(world, plan, internal_force(local, weight, d));
+  out.gathered = test::gather_owned(world, plan, internal_force(local, weight, d));
   return out;
 }
 

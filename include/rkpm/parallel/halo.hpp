@@ -198,4 +198,35 @@ inline point_traversal local_traversal(const halo_plan& plan, const point_traver
   return t;
 }
 
+// The owner of each point for sums over the points (the plastic work): the owner of the first
+// particle of its row, which computes it (the point touches that particle). Every point has
+// one owner, as every particle does, so per-point terms can be summed in one process's order by
+// a global block plan (parallel/global_blocks.hpp) made from this partition of the points.
+template <int Dim>
+particle_partition point_owners(const particle_partition& particles, const shape_table<Dim>& table) {
+  particle_partition points;
+  points.parts = particles.parts;
+  points.part.resize(table.points());
+  for (index_t q = 0; q < table.points(); ++q) {
+    if (table.offset[q + 1] == table.offset[q])
+      fail("point owners: point {} has no particle in its support; build the table from particles that cover the "
+           "points",
+           q);
+    points.part[q] = particles.part[table.neighbor[table.offset[q]]];
+  }
+  return points;
+}
+
+// The plan's points that this rank owns (point_owners), as positions in plan.points, in
+// increasing global id: the owned items of a global block plan made from point_owners.
+inline std::vector<stored_index> owned_point_positions(const halo_plan& plan, const particle_partition& point_owner) {
+  if (point_owner.particles() != plan.global_points)
+    fail("owned points: the point owners cover {} points but the plan was made for {}; make both from one table",
+         point_owner.particles(), plan.global_points);
+  std::vector<stored_index> out;
+  for (std::size_t k = 0; k < plan.points.size(); ++k)
+    if (point_owner.part[plan.points[k]] == plan.rank) out.push_back(static_cast<stored_index>(k));
+  return out;
+}
+
 }  // namespace rkpm::parallel

@@ -152,16 +152,20 @@ class global_block_sums {
  public:
   using sums = std::array<double, K>;
 
-  global_block_sums(communicator& comm, global_block_plan plan) : comm_(comm), plan_(std::move(plan)) {
+  // one_process_block: the block of the one-process sum to reproduce, block_sums<K>::block_size
+  // for the solver's per-particle sums, or traversal_tile_points for point_materials' per-tile
+  // sums over the points (a plan over point_owners, parallel/halo.hpp).
+  global_block_sums(communicator& comm, global_block_plan plan, index_t one_process_block = block_sums<K>::block_size)
+      : comm_(comm), plan_(std::move(plan)) {
     comm.guarded([&] {
       if (comm.size() != plan_.ranks || comm.rank() != plan_.rank)
         fail("global block sums: the plan is rank {} of {} but this process is rank {} of {}; make the plan with "
              "the communicator's rank and as many parts as processes",
              plan_.rank, plan_.ranks, comm.rank(), comm.size());
-      if (plan_.block_size != block_sums<K>::block_size)
-        fail("global block sums: blocks of {} particles, but one process's block_sums<{}> uses {}; make the plan "
-             "with block_sums<K>::block_size",
-             plan_.block_size, K, block_sums<K>::block_size);
+      if (plan_.block_size != one_process_block)
+        fail("global block sums: blocks of {} terms, but the one-process sum uses {}; make the plan with that block "
+             "size (block_sums<K>::block_size for per-particle sums)",
+             plan_.block_size, one_process_block);
     });
     comm.agree();
     index_t received = 0;
