@@ -13,7 +13,7 @@
 //   block_sums<K>                        sums in fixed blocks (core/block_sums.hpp)
 //   exchange(point, ownership, fields)   where values cross processes; nothing on one process
 // An MPI backend plugs in here: exchange() sends owned values to the processes that hold them
-// as ghosts and sums ghosts' scattered forces back into their owners, and the totals of
+// as ghosts (parallel/mpi_exchange.hpp, halo_exchange::forward), and the totals of
 // block_sums, max_over and min_over are combined over the processes in a fixed order, so that
 // the totals do not depend on the partition or the message timing (include/rkpm/parallel,
 // docs/method.md section 9.8).
@@ -38,9 +38,11 @@ struct index_range {
 
 // Which particles and quadrature points this process computes. Owned particles are updated,
 // summed and written here; ghosts are copies of other processes' particles that this process's
-// points or contact read (and scatter into), numbered after the owned ones. Points have no
-// ghosts: a point is integrated by the process that owns it, and its forces on ghost particles
-// go to their owners at exchange_point::after_scatter. On one process everything is owned.
+// points or contact read (and scatter into), numbered after the owned ones. The points are all
+// computed here: the plans of parallel/halo.hpp give a process every point of its owned
+// particles, so a point whose support straddles processes is computed by each of them (a
+// redundant point) and no force is sent back; what such a point scatters into ghosts is
+// discarded. On one process everything is owned.
 struct ownership {
   index_range particles;        // owned: 0 .. owned-1
   index_range ghost_particles;  // owned .. particle count - 1
@@ -65,7 +67,8 @@ struct ownership {
 //   after_predictor  d(n+1), v(n+1/2) of the owned particles to their ghosts (contact reads them)
 //   after_contact    the same after the contact and constraint corrections (the force loop
 //                    gathers them)
-//   after_scatter    the ghosts' parts of f_int(n+1) added into their owners' (the scatter)
+//   after_scatter    the ghosts' parts of f_int(n+1) added into their owners': nothing with
+//                    redundant points (parallel/halo.hpp), kept for a backend without them
 enum class exchange_point { after_predictor, after_contact, after_scatter };
 
 namespace exec {
