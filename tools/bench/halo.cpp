@@ -7,13 +7,19 @@
 //   - the time of one forward exchange of d and v (two 2-vectors per ghost, what a step sends
 //     twice), median over the repetitions of the slowest rank's time, after a barrier;
 //   - the time of one MPI_Allreduce of a double (a step's stable-step minimum and energy sums);
+//   - the force loop measured (parallel/local_model.hpp): the bar squashed into yield a little
+//     more at every evaluation (so that every one is plastic), evaluated by one process on 1 and
+//     on 2 threads (rank 0 alone, the other ranks asleep), then by the P processes on one thread
+//     each (each rank's local model: forward of the ghosts' coefficients, internal_force, the
+//     plastic work's fixed-order sum and the support stretch's minimum), the slowest rank's
+//     time; the medians, alternated round by round, and their ratios;
 //   - from them and a force-loop cost per point (--point-us, measured by tools/rkpm bench:
 //     BM_step's s_per_particle_step over its points per particle), the modelled time per step on
 //     P processes and its parallel efficiency.
 // The exchanges are timed on this machine (shared memory, oversubscribed beyond its cores): the
 // bandwidth and latency of a cluster are the model's assumptions, given as options and printed.
 //
-//   mpiexec -np P rkpm_bench_halo [--resolutions 8,32] [--repeat 200] [--point-us U]
+//   mpiexec -np P rkpm_bench_halo [--resolutions 8,32] [--repeat 200] [--rounds 5] [--point-us U]
 //                                 [--latency-us A] [--bandwidth-GB-s B]
 //                                 [--ghost-layers L] [--point-layers L]
 
@@ -28,10 +34,18 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <omp.h>
+#include <sched.h>
+#include <unistd.h>
+
 #include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
+#include <rkpm/parallel/local_model.hpp>
 #include <rkpm/parallel/mpi_exchange.hpp>
 #include <rkpm/parallel/partition.hpp>
+#include <rkpm/solver/body_materials.hpp>
+#include <rkpm/solver/point_materials.hpp>
 
 #include "taylor_bar_solver.hpp"
 
@@ -42,6 +56,7 @@ using namespace rkpm;
 struct options {
   std::vector<int> resolutions{8, 32};
   int repeat = 200;
+  int rounds = 9;  // force-loop rounds: one process on 1 and 2 threads, then P processes, alternated
   double point_us = 0.105;     // force loop per point and step, one core (0.21 us per particle-step, 2 points)
   double latency_us = 2.0;     // a cluster's message latency, assumed
   double bandwidth_GB_s = 10.0;  // and its bandwidth per link, assumed
@@ -59,6 +74,9 @@ std::optional<int> parse(int argc, char** argv, options& o, int rank) {
       ->check(CLI::Range(1, 32))
       ->capture_default_str();
   app.add_option("--repeat", o.repeat, "timed exchanges and reductions")->check(CLI::Range(1, 1000000))->capture_default_str();
+  app.add_option("--rounds", o.rounds, "rounds of force-loop timings (one process, then P processes)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
   app.add_option("--point-us", o.point_us, "force loop per point and step on one core (us)")
       ->check(CLI::Range(1e-6, 1e6))
       ->capture_default_str();
@@ -103,6 +121,136 @@ double slowest_median(MPI_Comm comm, int repeat, Work&& work) {
   return median(slowest);
 }
 
+// A barrier where the waiting ranks sleep instead of polling (MPI_Barrier spins), so that rank 0
+// alone can time one process's force loop on both cores.
+void quiet_barrier(MPI_Comm comm) {
+  MPI_Request request;
+  MPI_Ibarrier(comm, &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    usleep(500);
+  }
+}
+
+// The coefficients of the bar squashed by 1.5 % times `amplitude` (a barrelling field, not a
+// polynomial: the whole bar yields).
+vec2 squashed(const vec2& X, double radius, double height, double amplitude) {
+  const double z = X[1] / height, r = X[0] / radius;
+  return X + amplitude * 0.015 * vec2(0.5 * X[0] * (1.0 + 0.6 * std::sin(3.0 * z)) * (1.0 + 0.2 * r * r),
+                                       -X[1] * (1.0 + 0.3 * std::cos(2.0 * z + r)));
+}
+
+// Pins this process to the `rank`-th CPU it may run on, while it lives, when there are as many
+// CPUs as ranks (each rank a core of its own, as on a cluster; mpiexec's own binding is turned
+// off by tools/rkpm so that rank 0 can time one process on two threads); restores the mask after.
+class pinned_to_core {
+ public:
+  pinned_to_core(int rank, int ranks) {
+    sched_getaffinity(0, sizeof(cpu_set_t), &original_);
+    std::vector<int> cpus;
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &original_)) cpus.push_back(c);
+    if (static_cast<int>(cpus.size()) < ranks) return;  // oversubscribed: leave it to the scheduler
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpus[static_cast<std::size_t>(rank)], &one);
+    pinned_ = sched_setaffinity(0, sizeof(cpu_set_t), &one) == 0;
+  }
+  ~pinned_to_core() {
+    if (pinned_) sched_setaffinity(0, sizeof(cpu_set_t), &original_);
+  }
+  pinned_to_core(const pinned_to_core&) = delete;
+  pinned_to_core& operator=(const pinned_to_core&) = delete;
+
+ private:
+  cpu_set_t original_;
+  bool pinned_ = false;
+};
+
+struct force_loop_times {
+  double one_thread, two_threads, ranks;  // s per evaluation, medians over the rounds
+  // The ratios of each round's timings (one process on 1 thread, on 2, over P processes), their
+  // medians: a burst of load on a noisy host moves these far less than the times.
+  double ranks_over_one, ranks_over_two;
+};
+
+// The force loop of the bar on one process (1 and 2 threads, rank 0) and on the P processes.
+// Each evaluation squashes a little further than the last, from fresh states for each of the
+// three, so all three do the same work.
+template <class Problem>
+force_loop_times time_force_loop(parallel::communicator& comm, const options& o, const Problem& problem,
+                                 const discrete_model& m, const parallel::particle_partition& part,
+                                 const parallel::halo_plan& plan) {
+  using G = geometry::axisymmetric;
+  using M = std::decay_t<decltype(problem.material)>;
+  const bench::bar::parameters b{};
+  const int evaluations = std::max(3, o.repeat / 20);
+  const auto amplitude = [](int k) { return 1.0 + 0.002 * k; };
+  const auto field = [&](const discrete_model& model, index_t owned, auto&& global_of, int k) {
+    std::vector<vec2> x(model.particle_count(), vec2::Zero());
+    for (index_t i = 0; i < owned; ++i)
+      x[i] = squashed(m.particles.position[global_of(i)], b.radius_m, b.height_m, amplitude(k));
+    return x;
+  };
+  std::vector<double> one, two, many;
+  const discrete_model local = parallel::local_force_model(m, plan);
+  const parallel::particle_partition point_owner = parallel::point_owners(part, m.at_points);
+  const std::vector<stored_index> owned_points = parallel::owned_point_positions(plan, point_owner);
+  parallel::global_block_sums<1> plastic_sum(
+      comm, parallel::make_global_block_plan(point_owner, comm.rank(), traversal_tile_points), traversal_tile_points);
+  parallel::halo_exchange exchange(comm, plan);
+  for (int round = 0; round < o.rounds; ++round) {
+    if (comm.rank() == 0)
+      for (const int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        const materials_by_body<M> material(m, problem.material, {});
+        point_materials<G, M> points(m, material);
+        std::vector<vec2> f(m.particle_count());
+        double total = 0.0;
+        for (int k = 0; k < evaluations; ++k) {
+          const std::vector<vec2> x = field(m, m.particle_count(), [](index_t I) { return I; }, k);
+          const double start = MPI_Wtime();
+          points.internal_force(m, material, x, f, step_context{k + 1, 1e-8 * (k + 1), 1e-8});
+          total += MPI_Wtime() - start;
+        }
+        (threads == 1 ? one : two).push_back(total / evaluations);
+      }
+    omp_set_num_threads(1);
+    quiet_barrier(comm.get());
+    const pinned_to_core pin(comm.rank(), comm.size());
+    const materials_by_body<M> material(local, problem.material, {});
+    point_materials<G, M> points(local, material);
+    std::vector<vec2> f(local.particle_count());
+    double total = 0.0;
+    for (int k = 0; k < evaluations; ++k) {
+      std::vector<vec2> x = field(local, static_cast<index_t>(plan.owned.size()),
+                                  [&](index_t i) { return plan.global_particle(i); }, k);
+      MPI_Barrier(comm.get());
+      const double start = MPI_Wtime();
+      exchange.forward(x);
+      points.internal_force(local, material, x, f, step_context{k + 1, 1e-8 * (k + 1), 1e-8});
+      const double plastic = plastic_sum([&](index_t i, parallel::global_block_sums<1>::sums& t) {
+        const stored_index j = owned_points[i];
+        t[0] += points.states()[j].plastic_work * local.points.weight[j];
+      })[0];
+      const double narrowest = comm.min(points.min_stretch());
+      double t = MPI_Wtime() - start;
+      MPI_Allreduce(MPI_IN_PLACE, &t, 1, MPI_DOUBLE, MPI_MAX, comm.get());
+      total += t;
+      if (!(plastic > 0.0 && narrowest > 0.0)) fail("force loop bench: the bar did not yield ({} J)", plastic);
+    }
+    many.push_back(total / evaluations);
+  }
+  if (comm.rank() != 0) return {};
+  std::vector<double> over_one, over_two;
+  for (std::size_t r = 0; r < many.size(); ++r) {
+    over_one.push_back(one[r] / many[r]);
+    over_two.push_back(two[r] / many[r]);
+  }
+  return {median(one), median(two), median(many), median(over_one), median(over_two)};
+}
+
 struct rank_figures {
   double owned, ghosts, points, neighbours, exchanged;  // exchanged: ghosts received plus particles sent
 };
@@ -136,6 +284,8 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
     MPI_Allreduce(&x, &sum, 1, MPI_DOUBLE, MPI_SUM, comm.get());
   });
 
+  const force_loop_times loop = time_force_loop(comm, o, problem, m, part, plan);
+
   if (comm.rank() != 0) return;
   double max_points = 0.0, total_points = 0.0, max_ghosts = 0.0, total_ghosts = 0.0, max_neighbours = 0.0,
          max_exchanged = 0.0;
@@ -163,6 +313,12 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
              "by the busiest rank, {:.0f} kB)\n",
              t_exchange * 1e6, o.repeat, static_cast<index_t>(max_exchanged), max_exchanged * 32.0 / 1e3);
   fmt::print("  MPI_Allreduce of a double: {:.1f} us\n", t_allreduce * 1e6);
+  fmt::print("  force loop measured, per evaluation (medians of {} rounds): one process 1 thread {:.3f} ms, 2 threads "
+             "{:.3f} ms; {} processes x 1 thread {:.3f} ms (slowest rank, with the forward exchange and both "
+             "reductions); speed-up of the {} processes, the median of the rounds' ratios: {:.2f} x one thread, "
+             "{:.2f} x two threads\n",
+             o.rounds, loop.one_thread * 1e3, loop.two_threads * 1e3, P, loop.ranks * 1e3, P, loop.ranks_over_one,
+             loop.ranks_over_two);
   fmt::print("  model here: step {:.3f} ms = force loop {:.3f} ms + 2 exchanges + 3 reductions; one process {:.3f} ms; "
              "speed-up {:.2f}, efficiency {:.2f}\n",
              step_s * 1e3, force_s * 1e3, serial_s * 1e3, serial_s / step_s, serial_s / step_s / P);
