@@ -12,6 +12,13 @@
                                                 <FieldData>; appended zlib
   /usr/bin/python3 check_vtu.py pvd FILE T0,N0 T1,N1 ...
                                                 a .pvd listing exactly those (time, N) snapshots
+  /usr/bin/python3 check_vtu.py pvtu FILE N PIECES
+                                                a .pvtu index of PIECES pieces (one per process)
+                                                that together hold points 0 .. N-1 once each,
+                                                each piece's points in any order with their
+                                                index as the array "particle" and the same
+                                                formulas, as vertices; the index declares
+                                                exactly the pieces' arrays
 Expected values are recomputed here from the same closed formulas the C++ test uses, so a
 value is only accepted if the writer put the right double at the right place. Appended raw
 data is also walked here without meshio: each array's UInt64 header (byte count, or VTK's
@@ -314,6 +321,44 @@ def check_pvd(path, expect):
         check_vtu(f, n)
 
 
+def check_pvtu(path, n, pieces):
+    root = ET.parse(path).getroot()
+    assert root.tag == "VTKFile" and root.get("type") == "PUnstructuredGrid", f"root {root.tag} {root.attrib}"
+    grid = root.find("PUnstructuredGrid")
+    assert grid is not None, "no <PUnstructuredGrid>"
+    _, data = expected(n)
+    declared = [(a.get("Name"), a.get("type"), int(a.get("NumberOfComponents", 1)))
+                for a in grid.findall("./PPointData/PDataArray")]
+    want = [(name, "Float64", 1 if v.ndim == 1 else v.shape[1]) for name, v in data.items()] + [("particle", "Float64", 1)]
+    assert declared == want, f"declared point arrays {declared} != {want}"
+    points = grid.findall("./PPoints/PDataArray")
+    assert len(points) == 1 and points[0].get("type") == "Float64" and points[0].get("NumberOfComponents") == "3", \
+        "PPoints must declare one Float64 array of 3 components"
+    sources = [p.get("Source") for p in grid.findall("Piece")]
+    assert len(sources) == pieces, f"{len(sources)} pieces, expected {pieces}"
+    base = os.path.dirname(path)
+    seen = np.zeros(n, dtype=int)
+    all_points, all_data = expected(n)
+    for source in sources:
+        f = os.path.join(base, source)
+        assert os.path.isfile(f), f"piece {f} missing"
+        mesh = meshio.read(f)
+        ids = np.asarray(mesh.point_data["particle"])
+        assert np.array_equal(ids, np.round(ids)) and ids.min(initial=0) >= 0 and ids.max(initial=0) < n, \
+            f"{source}: particle ids not in 0 .. {n - 1}"
+        idx = ids.astype(int)
+        seen[idx] += 1
+        assert list(mesh.point_data) == [w[0] for w in want], f"{source}: arrays {list(mesh.point_data)}"
+        assert np.array_equal(mesh.points, all_points[idx]), f"{source}: points differ"
+        for name, v in all_data.items():
+            assert np.array_equal(np.asarray(mesh.point_data[name]), v[idx]), f"{source}: {name} differs"
+        conn = mesh.cells[0].data
+        assert mesh.cells[0].type == "vertex" and np.array_equal(conn[:, 0], np.arange(len(idx))), \
+            f"{source}: vertex cells"
+    assert (seen == 1).all(), f"points held by no piece: {np.flatnonzero(seen == 0)[:5]}, by several: " \
+                              f"{np.flatnonzero(seen > 1)[:5]}"
+
+
 def main():
     kind, path = sys.argv[1], sys.argv[2]
     if kind == "vtus":  # many files in one start of Python: PATH N ENCODING COMPRESSION, repeated
@@ -327,6 +372,8 @@ def main():
         if len(sys.argv) > 4:
             check_format(path, vertex_sizes(int(sys.argv[3])), sys.argv[4], sys.argv[5])
         check_vtu(path, int(sys.argv[3]))
+    elif kind == "pvtu":
+        check_pvtu(path, int(sys.argv[3]), int(sys.argv[4]))
     elif kind == "cells":
         check_cells(path, int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]))
     else:

@@ -32,6 +32,7 @@
 #include <rkpm/io/vtk.hpp>
 
 #include "support/run_capture.hpp"
+#include "support/vtu_formulas.hpp"
 
 namespace fs = std::filesystem;
 using rkpm::mat3;
@@ -66,27 +67,8 @@ void check_vtu_refuses(const std::string& args, const std::string& why) {
 }
 
 // The same closed formulas as expected() in check_vtu.py.
-struct snapshot {
-  std::vector<vec2> points;
-  rkpm::io::point_data data;
-};
-snapshot make(int n) {
-  snapshot s;
-  std::vector<double> eps(n), det(n);
-  std::vector<vec2> u(n);
-  std::vector<mat3> sigma(n);
-  for (int k = 0; k < n; ++k) {
-    const double i = k;
-    s.points.emplace_back(i * 0.125 - 3.0 / 7.0, -i / 3.0 + 1e-7);
-    eps[k] = i / 7.0 - 2.5;
-    u[k] = vec2(i * 1e-6, -i / 3.0);
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) sigma[k](r, c) = 1e8 * (i + 1.0) + 10.0 * r + c + 0.1;
-    det[k] = 1.0 + i / 1024.0;
-  }
-  s.data.add("eps_p", eps).add("u", u).add("sigma", sigma).add("det F <J>", det);
-  return s;
-}
+using snapshot = rkpm::test::vtu_snapshot;
+snapshot make(int n) { return rkpm::test::snapshot_of(n); }
 
 std::string file_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
