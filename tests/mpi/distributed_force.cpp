@@ -8,8 +8,12 @@
 // stretch, a minimum over the ranks. For METIS's partition and for stripes forced across the bar.
 // The plastic work summed per rank and then across the ranks (the obvious way) counts the
 // redundant points twice: the test checks that it differs, so the comparison can fail.
+// A bar with one particle pushed through it: the ranks stop together with one message, naming
+// the failing rank and the point by its index in the whole model (as one process names it).
 
 #include <doctest/doctest.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -124,6 +128,77 @@ TEST_CASE("the force loop on 1, 2 or 3 ranks: one process's forces, plastic work
     stripes[I] = static_cast<stored_index>(
         std::min<double>(P - 1, std::floor(P * m.particles.position[I][1] / test::bar::height)));
   check_on_ranks(world, m, whole, given_partition(stripes, P), "stripes across the bar");
+}
+
+TEST_CASE("an inverted point on the ranks: every rank stops with the same message, naming the rank and the point") {
+  communicator world;
+  const int P = world.size();
+  const discrete_model m = test::bar::model();
+  // One particle pushed 6 spacings down through the bar (at mid-height, by the axis): the points
+  // of its support invert. On one process the loop stops at the first of them in its order.
+  const index_t J = m.particle_count() / 2 - 4;
+  const auto inverted = [&](index_t I) {
+    vec2 x = m.particles.position[I];
+    if (I == J) x[1] -= 6.0 * test::bar::height / 30.0;
+    return x;
+  };
+  std::string serial;
+  {
+    const materials_by_body<M> material(m, test::bar::copper(), {});
+    point_materials<G, M> points(m, material);
+    std::vector<vec2> x(m.particle_count()), f(m.particle_count());
+    for (index_t I = 0; I < m.particle_count(); ++I) x[I] = inverted(I);
+    try {
+      points.internal_force(m, material, x, f, step(0));
+    } catch (const error& e) {
+      serial = e.what();
+    }
+  }
+  REQUIRE(serial.find("det F") != std::string::npos);
+
+  const auto check = [&](const particle_partition& partition, const std::string& name) {
+    CAPTURE(name);
+    const halo_plan plan = make_halo_plan(partition, m.at_points, world.rank());
+    const discrete_model local = local_force_model(m, plan);
+    const materials_by_body<M> material(local, test::bar::copper(), {});
+    point_materials<G, M> points(local, material);
+    std::vector<vec2> x(local.particle_count()), f(local.particle_count());
+    for (index_t i = 0; i < local.particle_count(); ++i) x[i] = inverted(plan.global_particle(i));
+    std::string agreed;
+    try {
+      world.guarded([&] { points.internal_force(local, material, x, f, step(0)); });
+      world.agree();
+    } catch (const rank_failure& e) {
+      agreed = e.what();
+    }
+    // The same line on every rank (rank 0's, sent to all, compared).
+    int length = static_cast<int>(agreed.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, world.get());
+    std::string first(static_cast<std::size_t>(length), ' ');
+    if (world.rank() == 0) first = agreed;
+    MPI_Bcast(first.data(), length, MPI_CHAR, 0, world.get());
+    CHECK(agreed == first);
+    if (world.rank() == 0) MESSAGE(agreed);
+    // "rank r of P: <the one-process message for the point that rank found first>": the point
+    // is named by its index in the whole model, with its position.
+    REQUIRE(agreed.rfind("rank ", 0) == 0);
+    const std::string message = agreed.substr(agreed.find(": ") + 2);
+    const auto at = message.find("quadrature point ");
+    REQUIRE(at != std::string::npos);
+    const index_t q = std::stol(message.substr(at + 17));
+    const vec2& X = m.points.position[q];
+    CHECK(message.find(fmt::format("quadrature point {} (X = {:.6g}, {:.6g})", q, X[0], X[1])) != std::string::npos);
+    CHECK(message.find("det F") != std::string::npos);
+    if (P == 1) CHECK(message == serial);
+  };
+  check(partition_particles(m.at_points, m.particle_count(), P), "METIS");
+  // Stripes numbered from the top, so that rank 0 holds the top of the bar: its local point
+  // numbers then differ from the whole model's at the failure.
+  std::vector<stored_index> from_top(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I)
+    from_top[I] = static_cast<stored_index>(
+        std::min<double>(P - 1, std::floor(P * (1.0 - m.particles.position[I][1] / test::bar::height))));
+  check(given_partition(from_top, P), "stripes from the top");
 }
 
 }  // namespace test_mpi_distributed_force

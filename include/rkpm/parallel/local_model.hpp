@@ -9,6 +9,7 @@
 //   test_gradient   the corrected gradients of those rows, for a VCI rule
 //   own             owned, ghost and point ranges (halo_plan::own)
 //   global_mean_support  the whole model's mean support (the stable step's support stretch)
+//   point_id        each point's global index, which an error names
 // Over it the force loop gives every owned particle the force it has on one process, bit for
 // bit (tests/mpi/local_force.cpp), and every point the same stress and material state. What
 // the rest of the step reads (the table at the particles, lumped volumes, bodies and surfaces)
@@ -48,6 +49,7 @@ inline discrete_model local_force_model(const discrete_model& global, const halo
   }
   m.own = plan.own();
   m.global_mean_support = global.mean_support();
+  m.point_id = plan.points;
   return m;
 }
 

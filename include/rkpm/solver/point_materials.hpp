@@ -176,12 +176,12 @@ class point_materials {
       std::string message;
       std::swap(message, error_);
       fail("step {}, t = {:.6g} s: the material update failed at quadrature point {} (X = {:.6g}, {:.6g}): {}",
-           where.step, where.time, q, X[0], X[1], message);
+           where.step, where.time, m.global_point(q), X[0], X[1], message);
     }
     fail("step {}, t = {:.6g} s: det F = {:.6g} at quadrature point {} (X = {:.6g}, {:.6g}): the body "
          "has inverted or the solution has blown up; reduce the time step fraction, refine the "
          "particles or check the boundary conditions. Output written so far is kept",
-         where.step, where.time, tile.det, q, X[0], X[1]);
+         where.step, where.time, tile.det, m.global_point(q), X[0], X[1]);
   }
 
   // How much the support has narrowed, as the highest frequency sees it: current gradients
