@@ -2,9 +2,10 @@
 // The bar of the distributed force tests (tests/mpi/local_force.cpp, distributed_force.cpp): an
 // axisymmetric copper bar, 3.2 x 16 mm, 9 x 31 particles, cubic kernel, linear correction, Q2
 // points, J2 with linear hardening, and a smooth deformation (a barrelling squash, not a
-// polynomial) that yields most of it at full amplitude.
+// polynomial) that yields most of it at full amplitude, and its coefficients at three amplitudes.
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <rkpm/correction/polynomial_bases.hpp>
@@ -13,6 +14,7 @@
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/point_materials.hpp>
 
 namespace rkpm::test::bar {
 
@@ -38,7 +40,19 @@ inline vec2 deformed(const vec2& X, double s) {
                                -X[1] * (1.0 + 0.3 * std::cos(2.0 * z + r)));
 }
 
-// The amplitudes of the three evaluations the tests make.
+// The amplitudes of the evaluations the tests make, and the step each is told it belongs to.
 inline constexpr double amplitudes[] = {0.4, 0.8, 1.2};
+inline constexpr int evaluations = 3;
+inline step_context step(int k) { return {k + 1, 1e-7 * (k + 1), 1e-7}; }
+
+// The coefficients of evaluation k at the first `count` particles of m (all when count < 0),
+// from m's own positions (a rank's model holds its particles' reference positions), NaN at the
+// rest (ghosts that an exchange must fill).
+inline std::vector<vec2> coefficients(const discrete_model& m, int k, index_t count = -1) {
+  std::vector<vec2> x(m.particle_count(), vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
+  const index_t n = count < 0 ? m.particle_count() : count;
+  for (index_t i = 0; i < n; ++i) x[i] = deformed(m.particles.position[i], amplitudes[k]);
+  return x;
+}
 
 }  // namespace rkpm::test::bar

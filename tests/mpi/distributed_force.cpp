@@ -42,11 +42,10 @@ namespace {
 
 using G = test::bar::geometry_type;
 using M = test::bar::material_type;
-constexpr int evaluations = 3;
+using test::bar::evaluations;
+using test::bar::step;
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
-
-step_context step(int k) { return {k + 1, 1e-7 * (k + 1), 1e-7}; }
 
 struct one_process {
   std::vector<std::vector<vec2>> force;
@@ -58,10 +57,8 @@ one_process evaluate_whole(const discrete_model& m) {
   point_materials<G, M> points(m, material);
   one_process out;
   for (int k = 0; k < evaluations; ++k) {
-    std::vector<vec2> x(m.particle_count()), f(m.particle_count());
-    for (index_t I = 0; I < m.particle_count(); ++I)
-      x[I] = test::bar::deformed(m.particles.position[I], test::bar::amplitudes[k]);
-    points.internal_force(m, material, x, f, step(k));
+    std::vector<vec2> f(m.particle_count());
+    points.internal_force(m, material, test::bar::coefficients(m, k), f, step(k));
     out.force.push_back(f);
     out.plastic.push_back(points.plastic_work());
     out.stretch.push_back(points.min_stretch());
@@ -85,9 +82,8 @@ void check_on_ranks(communicator& world, const discrete_model& m, const one_proc
   for (int k = 0; k < evaluations; ++k) {
     CAPTURE(k);
     // Owners set theirs; ghosts start as NaN, so one that forward() missed would show.
-    std::vector<vec2> x(local.particle_count(), vec2::Constant(std::nan(""))), f(local.particle_count());
-    for (std::size_t i = 0; i < plan.owned.size(); ++i)
-      x[i] = test::bar::deformed(m.particles.position[plan.owned[i]], test::bar::amplitudes[k]);
+    std::vector<vec2> x = test::bar::coefficients(local, k, static_cast<index_t>(plan.owned.size())),
+                      f(local.particle_count());
     exchange.forward(x);
     points.internal_force(local, material, x, f, step(k));
     const std::vector<vec2> gathered = test::gather_owned(world, plan, f);

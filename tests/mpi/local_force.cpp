@@ -36,39 +36,27 @@ using M = test::bar::material_type;
 using test::bar::height;
 using test::bar::radius;
 
-// The three deformed coefficient fields of the bar.
-std::vector<vec2> deformed(const discrete_model& m, double s) {
-  std::vector<vec2> x(m.particle_count());
-  for (index_t I = 0; I < m.particle_count(); ++I) x[I] = test::bar::deformed(m.particles.position[I], s);
-  return x;
-}
-
 struct evaluation {
   std::vector<vec2> force;
   std::vector<M::state_type> states;
   double min_stretch;
 };
 
-// Three force evaluations at s = 0.4, 0.8, 1.2 over model m from the whole coefficient field
-// (local particle i is global particle global_of(i)).
-template <class GlobalOf>
-std::vector<evaluation> evaluate(const discrete_model& m, const std::vector<vec2>& x0, const std::vector<vec2>& x1,
-                                 const std::vector<vec2>& x2, GlobalOf&& global_of) {
+// The force evaluations of mpi/bar_problem.hpp over model m (the whole model or a rank's: the
+// coefficients come from its particles' positions).
+std::vector<evaluation> evaluate(const discrete_model& m) {
   const materials_by_body<M> material(m, test::bar::copper(), {});
   point_materials<G, M> points(m, material);
   std::vector<evaluation> out;
-  const std::vector<vec2>* fields[] = {&x0, &x1, &x2};
-  for (int k = 0; k < 3; ++k) {
-    std::vector<vec2> x(m.particle_count()), f(m.particle_count());
-    for (index_t i = 0; i < m.particle_count(); ++i) x[i] = (*fields[k])[global_of(i)];
-    points.internal_force(m, material, x, f, step_context{k + 1, 1e-7 * (k + 1), 1e-7});
+  for (int k = 0; k < test::bar::evaluations; ++k) {
+    std::vector<vec2> f(m.particle_count());
+    points.internal_force(m, material, test::bar::coefficients(m, k), f, test::bar::step(k));
     out.push_back({f, points.states(), points.min_stretch()});
   }
   return out;
 }
 
 void check_partition(const discrete_model& m, const std::vector<evaluation>& whole, const particle_partition& p,
-                     const std::vector<vec2>& x0, const std::vector<vec2>& x1, const std::vector<vec2>& x2,
                      const std::string& name) {
   CAPTURE(name);
   std::vector<double> narrowest(3, 1e300);
@@ -79,7 +67,7 @@ void check_partition(const discrete_model& m, const std::vector<evaluation>& who
     const halo_plan plan = make_halo_plan(p, m.at_points, r);
     const discrete_model local = local_force_model(m, plan);
     REQUIRE(local.traversal.tile_start.back() == local.point_count());
-    const auto result = evaluate(local, x0, x1, x2, [&](index_t i) { return plan.global_particle(i); });
+    const auto result = evaluate(local);
     redundant += local.point_count();
     for (int k = 0; k < 3; ++k) {
       CAPTURE(k);
@@ -106,9 +94,7 @@ void check_partition(const discrete_model& m, const std::vector<evaluation>& who
 
 TEST_CASE("local force model: each rank's owned forces and point states equal the whole model's, bit for bit") {
   const discrete_model m = test::bar::model();
-  const auto [s0, s1, s2] = test::bar::amplitudes;
-  const std::vector<vec2> x0 = deformed(m, s0), x1 = deformed(m, s1), x2 = deformed(m, s2);
-  const auto whole = evaluate(m, x0, x1, x2, [](index_t I) { return I; });
+  const auto whole = evaluate(m);
   // The field yields: the check covers the return mapping, not the elastic branch alone.
   index_t plastic = 0;
   for (const auto& s : whole[2].states) plastic += s.equivalent_plastic_strain > 0.0;
@@ -117,7 +103,7 @@ TEST_CASE("local force model: each rank's owned forces and point states equal th
   CHECK(m.traversal.colours() >= 2);
 
   for (index_t parts : {2, 3})
-    check_partition(m, whole, partition_particles(m.at_points, m.particle_count(), parts), x0, x1, x2,
+    check_partition(m, whole, partition_particles(m.at_points, m.particle_count(), parts),
                     "METIS into " + std::to_string(parts));
   // Cuts forced along the axis (r < R / 2 against the rest) and across the bar in three stripes.
   std::vector<stored_index> along(m.particle_count()), across(m.particle_count());
@@ -126,8 +112,8 @@ TEST_CASE("local force model: each rank's owned forces and point states equal th
     along[I] = X[0] < 0.5 * radius ? 0 : 1;
     across[I] = static_cast<stored_index>(std::min(2.0, std::floor(3.0 * X[1] / height)));
   }
-  check_partition(m, whole, given_partition(along, 2), x0, x1, x2, "along the axis");
-  check_partition(m, whole, given_partition(across, 3), x0, x1, x2, "three stripes across");
+  check_partition(m, whole, given_partition(along, 2), "along the axis");
+  check_partition(m, whole, given_partition(across, 3), "three stripes across");
 }
 
 TEST_CASE("local force model: a plan of another model is refused") {

@@ -187,12 +187,14 @@ force_loop_times time_force_loop(parallel::communicator& comm, const options& o,
   const bench::bar::parameters b{};
   const int evaluations = std::max(3, o.repeat / 20);
   const auto amplitude = [](int k) { return 1.0 + 0.002 * k; };
-  const auto field = [&](const discrete_model& model, index_t owned, auto&& global_of, int k) {
+  // Evaluation k's coefficients at the first `owned` particles of `model` (the whole model's or
+  // a rank's, which holds its particles' positions); the ghosts' come by the exchange.
+  const auto field = [&](const discrete_model& model, index_t owned, int k) {
     std::vector<vec2> x(model.particle_count(), vec2::Zero());
-    for (index_t i = 0; i < owned; ++i)
-      x[i] = squashed(m.particles.position[global_of(i)], b.radius_m, b.height_m, amplitude(k));
+    for (index_t i = 0; i < owned; ++i) x[i] = squashed(model.particles.position[i], b.radius_m, b.height_m, amplitude(k));
     return x;
   };
+  const auto step = [](int k) { return step_context{k + 1, 1e-8 * (k + 1), 1e-8}; };
   std::vector<double> one, two, many;
   const discrete_model local = parallel::local_force_model(m, plan);
   const parallel::particle_partition point_owner = parallel::point_owners(part, m.at_points);
@@ -209,9 +211,9 @@ force_loop_times time_force_loop(parallel::communicator& comm, const options& o,
         std::vector<vec2> f(m.particle_count());
         double total = 0.0;
         for (int k = 0; k < evaluations; ++k) {
-          const std::vector<vec2> x = field(m, m.particle_count(), [](index_t I) { return I; }, k);
+          const std::vector<vec2> x = field(m, m.particle_count(), k);
           const double start = MPI_Wtime();
-          points.internal_force(m, material, x, f, step_context{k + 1, 1e-8 * (k + 1), 1e-8});
+          points.internal_force(m, material, x, f, step(k));
           total += MPI_Wtime() - start;
         }
         (threads == 1 ? one : two).push_back(total / evaluations);
@@ -224,12 +226,11 @@ force_loop_times time_force_loop(parallel::communicator& comm, const options& o,
     std::vector<vec2> f(local.particle_count());
     double total = 0.0;
     for (int k = 0; k < evaluations; ++k) {
-      std::vector<vec2> x = field(local, static_cast<index_t>(plan.owned.size()),
-                                  [&](index_t i) { return plan.global_particle(i); }, k);
+      std::vector<vec2> x = field(local, static_cast<index_t>(plan.owned.size()), k);
       MPI_Barrier(comm.get());
       const double start = MPI_Wtime();
       exchange.forward(x);
-      points.internal_force(local, material, x, f, step_context{k + 1, 1e-8 * (k + 1), 1e-8});
+      points.internal_force(local, material, x, f, step(k));
       const double plastic = plastic_sum([&](index_t i, parallel::global_block_sums<1>::sums& t) {
         const stored_index j = owned_points[i];
         t[0] += points.states()[j].plastic_work * local.points.weight[j];

@@ -1,6 +1,7 @@
 #pragma once
 // global_block_plan: how P processes add per-particle terms to the totals that one process's
-// block_sums (core/block_sums.hpp) gives, bit for bit (docs/method.md section 9.8). One process
+// block_sums (core/block_sums.hpp) gives, bit for bit (docs/method.md section 9.8), and the same
+// for per-point terms over point_owners (below), whose blocks are the traversal's tiles. One process
 // cuts the global index range into blocks of block_sums<K>::block_size, sums each block in index
 // order from zero and adds the blocks' sums in block order. A partition does not respect the
 // blocks (a block of 2048 consecutive particles usually straddles a cut), and a block's sum
@@ -106,6 +107,37 @@ inline global_block_plan make_global_block_plan(const particle_partition& partit
     g.member_offset.push_back(static_cast<index_t>(g.member_term.size()));
   }
   return g;
+}
+
+// The owner of each point for sums over the points (the plastic work): the owner of the first
+// particle of its row, which computes it (the point touches that particle). Every point has
+// one owner, as every particle does, so per-point terms can be summed in one process's order by
+// a global block plan (make_global_block_plan, above) made from this partition of the points.
+template <int Dim>
+particle_partition point_owners(const particle_partition& particles, const shape_table<Dim>& table) {
+  particle_partition points;
+  points.parts = particles.parts;
+  points.part.resize(table.points());
+  for (index_t q = 0; q < table.points(); ++q) {
+    if (table.offset[q + 1] == table.offset[q])
+      fail("point owners: point {} has no particle in its support; build the table from particles that cover the "
+           "points",
+           q);
+    points.part[q] = particles.part[table.neighbor[table.offset[q]]];
+  }
+  return points;
+}
+
+// The plan's points that this rank owns (point_owners), as positions in plan.points, in
+// increasing global id: the owned items of a global block plan made from point_owners.
+inline std::vector<stored_index> owned_point_positions(const halo_plan& plan, const particle_partition& point_owner) {
+  if (point_owner.particles() != plan.global_points)
+    fail("owned points: the point owners cover {} points but the plan was made for {}; make both from one table",
+         point_owner.particles(), plan.global_points);
+  std::vector<stored_index> out;
+  for (std::size_t k = 0; k < plan.points.size(); ++k)
+    if (point_owner.part[plan.points[k]] == plan.rank) out.push_back(static_cast<stored_index>(k));
+  return out;
 }
 
 }  // namespace rkpm::parallel

@@ -23,7 +23,6 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/execution.hpp>
-#include <rkpm/discretization/point_traversal.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/parallel/partition.hpp>
 
@@ -165,68 +164,6 @@ shape_table<Dim> local_shape_table(const halo_plan& plan, const shape_table<Dim>
     }
   }
   return t;
-}
-
-// The global traversal restricted to the plan's points, in local point ids: each tile keeps the
-// points of the plan it holds (a tile with none is left out), each colour its tiles in the same
-// order. An owned particle's points are all in the plan, and the force loop sums a particle's
-// force colour by colour, tile by tile, point by point: over the local traversal it adds the
-// same terms in the same order as over the global one, on any partition.
-inline point_traversal local_traversal(const halo_plan& plan, const point_traversal& global) {
-  if (global.tile_start.back() != plan.global_points)
-    fail("local traversal: the plan was made for {} points but the traversal covers {}; make both from one model",
-         plan.global_points, global.tile_start.back());
-  const auto points = static_cast<index_t>(plan.points.size());
-  point_traversal t;
-  std::vector<index_t> local_tile(global.tiles(), -1);
-  index_t k = 0;
-  for (index_t g = 0; g < global.tiles(); ++g) {
-    const index_t first = k;
-    while (k < points && plan.points[k] < global.tile_start[g + 1]) ++k;
-    if (k == first) continue;
-    local_tile[g] = t.tiles();
-    t.tile_start.push_back(k);
-  }
-  for (index_t c = 0; c < global.colours(); ++c) {
-    if (c == global.serial_from) t.serial_from = t.colours();
-    for (index_t j = global.colour_start[c]; j < global.colour_start[c + 1]; ++j)
-      if (const index_t lt = local_tile[global.tile[j]]; lt >= 0) t.tile.push_back(lt);
-    if (static_cast<index_t>(t.tile.size()) > t.colour_start.back())
-      t.colour_start.push_back(static_cast<index_t>(t.tile.size()));
-  }
-  if (global.serial_from >= global.colours()) t.serial_from = t.colours();
-  return t;
-}
-
-// The owner of each point for sums over the points (the plastic work): the owner of the first
-// particle of its row, which computes it (the point touches that particle). Every point has
-// one owner, as every particle does, so per-point terms can be summed in one process's order by
-// a global block plan (parallel/global_blocks.hpp) made from this partition of the points.
-template <int Dim>
-particle_partition point_owners(const particle_partition& particles, const shape_table<Dim>& table) {
-  particle_partition points;
-  points.parts = particles.parts;
-  points.part.resize(table.points());
-  for (index_t q = 0; q < table.points(); ++q) {
-    if (table.offset[q + 1] == table.offset[q])
-      fail("point owners: point {} has no particle in its support; build the table from particles that cover the "
-           "points",
-           q);
-    points.part[q] = particles.part[table.neighbor[table.offset[q]]];
-  }
-  return points;
-}
-
-// The plan's points that this rank owns (point_owners), as positions in plan.points, in
-// increasing global id: the owned items of a global block plan made from point_owners.
-inline std::vector<stored_index> owned_point_positions(const halo_plan& plan, const particle_partition& point_owner) {
-  if (point_owner.particles() != plan.global_points)
-    fail("owned points: the point owners cover {} points but the plan was made for {}; make both from one table",
-         point_owner.particles(), plan.global_points);
-  std::vector<stored_index> out;
-  for (std::size_t k = 0; k < plan.points.size(); ++k)
-    if (point_owner.part[plan.points[k]] == plan.rank) out.push_back(static_cast<stored_index>(k));
-  return out;
 }
 
 }  // namespace rkpm::parallel

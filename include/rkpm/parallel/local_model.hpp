@@ -5,7 +5,7 @@
 //   particles       the plan's local particles, owned first, then the ghosts
 //   points          the plan's points (redundant ghost points included), in global order
 //   at_points       their rows, columns renamed to local particles (local_shape_table)
-//   traversal       the global tiles and colours restricted to them (local_traversal)
+//   traversal       the global tiles and colours restricted to them (local_traversal, below)
 //   test_gradient   the corrected gradients of those rows, for a VCI rule
 //   own             owned, ghost and point ranges (halo_plan::own)
 //   global_mean_support  the whole model's mean support (the stable step's support stretch)
@@ -17,10 +17,42 @@
 
 #include <vector>
 
+#include <rkpm/discretization/point_traversal.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm::parallel {
+
+// The global traversal restricted to the plan's points, in local point ids: each tile keeps the
+// points of the plan it holds (a tile with none is left out), each colour its tiles in the same
+// order. An owned particle's points are all in the plan, and the force loop sums a particle's
+// force colour by colour, tile by tile, point by point: over the local traversal it adds the
+// same terms in the same order as over the global one, on any partition.
+inline point_traversal local_traversal(const halo_plan& plan, const point_traversal& global) {
+  if (global.tile_start.back() != plan.global_points)
+    fail("local traversal: the plan was made for {} points but the traversal covers {}; make both from one model",
+         plan.global_points, global.tile_start.back());
+  const auto points = static_cast<index_t>(plan.points.size());
+  point_traversal t;
+  std::vector<index_t> local_tile(global.tiles(), -1);
+  index_t k = 0;
+  for (index_t g = 0; g < global.tiles(); ++g) {
+    const index_t first = k;
+    while (k < points && plan.points[k] < global.tile_start[g + 1]) ++k;
+    if (k == first) continue;
+    local_tile[g] = t.tiles();
+    t.tile_start.push_back(k);
+  }
+  for (index_t c = 0; c < global.colours(); ++c) {
+    if (c == global.serial_from) t.serial_from = t.colours();
+    for (index_t j = global.colour_start[c]; j < global.colour_start[c + 1]; ++j)
+      if (const index_t lt = local_tile[global.tile[j]]; lt >= 0) t.tile.push_back(lt);
+    if (static_cast<index_t>(t.tile.size()) > t.colour_start.back())
+      t.colour_start.push_back(static_cast<index_t>(t.tile.size()));
+  }
+  if (global.serial_from >= global.colours()) t.serial_from = t.colours();
+  return t;
+}
 
 inline discrete_model local_force_model(const discrete_model& global, const halo_plan& plan) {
   if (global.particle_count() != plan.global_particles || global.point_count() != plan.global_points)

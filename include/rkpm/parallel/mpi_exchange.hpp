@@ -154,7 +154,7 @@ class global_block_sums {
 
   // one_process_block: the block of the one-process sum to reproduce, block_sums<K>::block_size
   // for the solver's per-particle sums, or traversal_tile_points for point_materials' per-tile
-  // sums over the points (a plan over point_owners, parallel/halo.hpp).
+  // sums over the points (a plan over point_owners, parallel/global_blocks.hpp).
   global_block_sums(communicator& comm, global_block_plan plan, index_t one_process_block = block_sums<K>::block_size)
       : comm_(comm), plan_(std::move(plan)) {
     comm.guarded([&] {
