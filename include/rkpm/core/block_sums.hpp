@@ -11,11 +11,17 @@
 //
 // The body may do other per-index work (it runs once for every index), so one pass over the
 // particles can update them and sum at once. No allocation after construction.
+//
+// On several processes (a process_group, core/process_group.hpp) the indices are this process's
+// owned particles; each one's terms are kept and the group adds them over all processes to the
+// totals one process's blocks give over all particles, bit for bit. A body therefore adds at
+// most one term to each s[k] per index, as the library's bodies do.
 
 #include <algorithm>
 #include <array>
 #include <vector>
 
+#include <rkpm/core/process_group.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -29,13 +35,17 @@ class block_sums {
   static constexpr index_t block_size = 2048;
 
   block_sums() = default;
-  explicit block_sums(index_t n) : n_(n), partial_(static_cast<std::size_t>((n + block_size - 1) / block_size)) {}
+  explicit block_sums(index_t n, process_group* group = nullptr)
+      : n_(n), partial_(static_cast<std::size_t>((n + block_size - 1) / block_size)), group_(group) {
+    if (group_) terms_.resize(static_cast<std::size_t>(n * K));
+  }
 
   index_t size() const { return n_; }
 
   // Calls body(I, s) for every I, s the sums of I's block; returns the K totals.
   template <class Body>
   sums operator()(Body&& body) const {
+    if (group_) return across_processes(body);
     const index_t blocks = static_cast<index_t>(partial_.size());
 #pragma omp parallel for schedule(static)
     for (index_t b = 0; b < blocks; ++b) {
@@ -51,8 +61,23 @@ class block_sums {
   }
 
  private:
+  template <class Body>
+  sums across_processes(Body& body) const {
+#pragma omp parallel for schedule(static)
+    for (index_t I = 0; I < n_; ++I) {
+      sums s{};
+      body(I, s);
+      for (int k = 0; k < K; ++k) terms_[static_cast<std::size_t>(I * K + k)] = s[k];
+    }
+    sums total{};
+    group_->sum_particles(terms_, total);
+    return total;
+  }
+
   index_t n_ = 0;
   mutable std::vector<sums> partial_;  // one per block
+  process_group* group_ = nullptr;
+  mutable std::vector<double> terms_;  // with a group: K per index
 };
 
 }  // namespace rkpm

@@ -12,11 +12,12 @@
 //   max_over(range, value), min_over     order-free reductions: the same whatever the threads
 //   block_sums<K>                        sums in fixed blocks (core/block_sums.hpp)
 //   exchange(point, ownership, fields)   where values cross processes; nothing on one process
-// An MPI backend plugs in here: exchange() sends owned values to the processes that hold them
-// as ghosts (parallel/mpi_exchange.hpp, halo_exchange::forward), and the totals of
-// block_sums, max_over and min_over are combined over the processes in a fixed order, so that
-// the totals do not depend on the partition or the message timing (include/rkpm/parallel,
-// docs/method.md section 9.8).
+// Several processes plug in through ownership::group (core/process_group.hpp; on MPI
+// parallel/mpi_process_group.hpp): exchange() forwards owned values to the processes that hold
+// them as ghosts, block_sums made with the group add their terms over the processes in one
+// process's order, and max_over and min_over's callers combine their values with the group's
+// max and min, so that the totals do not depend on the partition or the message timing
+// (include/rkpm/parallel, docs/method.md section 9.8).
 
 #include <algorithm>
 #include <limits>
@@ -25,6 +26,7 @@
 
 #include <rkpm/core/block_sums.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/process_group.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -47,6 +49,8 @@ struct ownership {
   index_range particles;        // owned: 0 .. owned-1
   index_range ghost_particles;  // owned .. particle count - 1
   index_range points;           // owned quadrature points: all of the model's
+  // The other processes (null on one process): not owned, the run keeps it alive.
+  process_group* group = nullptr;
 
   static ownership single_process(index_t particle_count, index_t point_count) {
     return {{0, particle_count}, {particle_count, particle_count}, {0, point_count}};
@@ -69,7 +73,10 @@ struct ownership {
 //                    gathers them)
 //   after_scatter    the ghosts' parts of f_int(n+1) added into their owners': nothing with
 //                    redundant points (parallel/halo.hpp), kept for a backend without them
-enum class exchange_point { after_predictor, after_contact, after_scatter };
+//   before_constraints v(n+1) of the owned particles to their ghosts, before the constraints
+//                    project it (every rank projects the whole model's constrained particles)
+//   stiffness_product  the power iteration's vector before each product with K (the stable step)
+enum class exchange_point { after_predictor, after_contact, after_scatter, before_constraints, stiffness_product };
 
 namespace exec {
 
@@ -141,11 +148,23 @@ double min_over(index_range r, Value&& value, double init = std::numeric_limits<
   return m;
 }
 
+// The largest of init and value(I) over the owned particles of every process (value runs for
+// each owned particle here).
+template <class Value>
+double max_over_owned(const ownership& own, Value&& value, double init) {
+  const double m = max_over(own.particles, value, init);
+  return own.group ? own.group->max(m) : m;
+}
+
 // Makes `fields` (per-particle vectors) consistent across processes at `point` of the step.
 // On one process every particle is owned: nothing to send. Ghosts without a backend that
 // fills them would be read stale, so they are refused.
 template <class... Fields>
 void exchange(exchange_point point, const ownership& own, Fields&... fields) {
+  if (own.group) {
+    if (point != exchange_point::after_scatter) own.group->forward(fields...);  // redundant points: nothing back
+    return;
+  }
   if (!own.ghost_particles.empty())
     fail("exchange point {}: {} ghost particles, but this build exchanges nothing between processes",
          static_cast<int>(point), own.ghost_particles.size());

@@ -12,6 +12,7 @@
 //                  particles only when the particles are the mesh nodes; otherwise, or when the
 //                  cells' boundary is not a set of chains, surface() refuses with the reason.
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -60,6 +61,24 @@ class model_bodies {
     point_body_.resize(points.size());
     for (index_t q = 0; q < points.size(); ++q)
       point_body_[q] = static_cast<stored_index>(partition_.cell_body[points.cell[q]]);
+  }
+
+  // The bodies of a rank's part of a model (parallel/local_model.hpp): its particles' and points'
+  // bodies, given by their indices in the whole model. It has no cells and no surfaces: contact
+  // between bodies and tool vertices on the surfaces do not run on several processes yet.
+  static model_bodies part(const model_bodies& whole, std::span<const stored_index> particles,
+                           std::span<const stored_index> points) {
+    model_bodies b;
+    b.partition_.bodies = whole.partition_.bodies;
+    b.partition_.nodes_are_particles = false;
+    b.positions_count_ = particles.size();
+    if (whole.count() > 1)
+      for (const stored_index I : particles) b.partition_.particle_body.push_back(whole.partition_.particle_body[I]);
+    if (!whole.point_body_.empty())
+      for (const stored_index q : points) b.point_body_.push_back(whole.point_body_[q]);
+    b.surface_error_ = "a rank's part of a model on several processes has no surfaces: contact between bodies and "
+                       "tool vertices against the surfaces run on one process only (for now)";
+    return b;
   }
 
   // Whether the bodies were found (a model assembled by hand may not have them).

@@ -104,11 +104,14 @@ class communicator {
   int size() const { return size_; }
 
   // Runs work(); an exception it throws is kept for the next agree() instead of leaving this
-  // rank (the first one kept; later ones are dropped).
+  // rank (the first one kept; later ones are dropped). A rank_failure, which an agree() inside
+  // work threw on every rank alike, goes on.
   template <class Work>
   void guarded(Work&& work) {
     try {
       std::forward<Work>(work)();
+    } catch (const rank_failure&) {
+      throw;  // already agreed: every rank throws it from the same collective call
     } catch (const std::exception& e) {
       if (!failed_) pending_ = e.what();
       failed_ = true;

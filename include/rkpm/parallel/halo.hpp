@@ -18,6 +18,7 @@
 // order; `forward` (parallel/mpi_exchange.hpp) copies owned values to ghosts along them.
 
 #include <algorithm>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -59,9 +60,16 @@ struct halo_plan {
 
 // The plan of `rank` for `partition` (as many parts as ranks) and the table at the points
 // (rows: points, columns: the partition's particles). Every rank builds its own from the same
-// global table and partition; nothing is communicated.
+// global table and partition; nothing is communicated. For the whole step two more sets of
+// particles are held (parallel/local_model.hpp):
+//   at_particles  the table at the particles (rows: particles): each owned particle's row, so
+//                 that its physical values are computed by its owner
+//   shared        particles every rank holds (sorted global ids): the constrained and contact
+//                 slave particles with their rows' columns, whose corrections every rank
+//                 computes alike (the replicated region of docs/method.md section 9.8)
 template <int Dim>
-halo_plan make_halo_plan(const particle_partition& partition, const shape_table<Dim>& table, int rank) {
+halo_plan make_halo_plan(const particle_partition& partition, const shape_table<Dim>& table, int rank,
+                         const shape_table<Dim>* at_particles = nullptr, std::span<const stored_index> shared = {}) {
   const index_t n = partition.particles(), np = table.points();
   if (rank < 0 || rank >= partition.parts)
     fail("halo plan: rank {} of a partition into {} parts; run on as many processes as parts", rank,
@@ -110,6 +118,27 @@ halo_plan make_halo_plan(const particle_partition& partition, const shape_table<
       if (part[I] == rank)
         for (const stored_index b : ranks_here) to_send.emplace_back(b, static_cast<stored_index>(I));
     }
+  }
+  // An owned particle's row at the particles: its columns held here, ours sent to the row's owner.
+  if (at_particles) {
+    if (at_particles->points() != n)
+      fail("halo plan: the table at the particles has {} rows but the partition has {} particles; build both from "
+           "the same particles",
+           at_particles->points(), n);
+    for (index_t I = 0; I < n; ++I)
+      for (index_t e = at_particles->offset[I]; e < at_particles->offset[I + 1]; ++e) {
+        const index_t J = at_particles->neighbor[e];
+        if (part[I] == rank && part[J] != rank) is_ghost[J] = 1;
+        if (part[I] != rank && part[J] == rank) to_send.emplace_back(part[I], static_cast<stored_index>(J));
+      }
+  }
+  // The shared particles: every rank holds them; their owner sends them to all the others.
+  for (const stored_index I : shared) {
+    if (I < 0 || I >= n) fail("halo plan: shared particle {} outside 0..{}", I, n - 1);
+    if (part[I] != rank) is_ghost[I] = 1;
+    else
+      for (int b = 0; b < h.ranks; ++b)
+        if (b != rank) to_send.emplace_back(b, I);
   }
   for (index_t I = 0; I < n; ++I)
     if (is_ghost[I]) {

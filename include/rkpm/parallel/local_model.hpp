@@ -11,9 +11,8 @@
 //   global_mean_support  the whole model's mean support (the stable step's support stretch)
 //   point_id        each point's global index, which an error names
 // Over it the force loop gives every owned particle the force it has on one process, bit for
-// bit (tests/mpi/local_force.cpp), and every point the same stress and material state. What
-// the rest of the step reads (the table at the particles, lumped volumes, bodies and surfaces)
-// is not restricted yet: it comes with the distributed step.
+// bit (tests/mpi/local_force.cpp), and every point the same stress and material state.
+// local_model (below) adds what the rest of the step reads.
 
 #include <vector>
 
@@ -82,6 +81,48 @@ inline discrete_model local_force_model(const discrete_model& global, const halo
   m.own = plan.own();
   m.global_mean_support = global.mean_support();
   m.point_id = plan.points;
+  return m;
+}
+
+// A rank's whole model for the time step (solver/explicit_solver.hpp): the force model above,
+// and what the rest of the step reads:
+//   lumped_volume  every local particle's (the masses: ghosts' too, for the shared region)
+//   at_particles   the rows of the owned particles and of every ghost whose columns are all
+//                  held here (the shared region's: parallel/halo.hpp), columns renamed; the
+//                  other ghosts' rows are empty (no rank reads them)
+//   particle_id    each particle's index in the whole model
+//   bodies         the particles' and points' bodies (model_bodies::part)
+// own.group is left to the caller (the process group the run lives in).
+inline discrete_model local_model(const discrete_model& global, const halo_plan& plan) {
+  discrete_model m = local_force_model(global, plan);
+  const index_t n = plan.local_particles(), owned = static_cast<index_t>(plan.owned.size());
+  std::vector<stored_index> local(plan.global_particles, -1);
+  for (index_t i = 0; i < n; ++i) {
+    const stored_index I = plan.global_particle(i);
+    local[I] = static_cast<stored_index>(i);
+    m.particle_id.push_back(I);
+    m.lumped_volume.push_back(global.lumped_volume[I]);
+  }
+  const shape_table<2>& rows = global.at_particles;
+  shape_table<2>& t = m.at_particles;
+  t.offset.assign(1, 0);
+  for (index_t i = 0; i < n; ++i) {
+    const stored_index I = m.particle_id[i];
+    bool held = true;
+    for (index_t e = rows.offset[I]; e < rows.offset[I + 1] && held; ++e) held = local[rows.neighbor[e]] >= 0;
+    if (!held && i < owned)
+      fail("local model: owned particle {}'s row at the particles names a particle rank {} does not hold; make the "
+           "plan with the table at the particles",
+           I, plan.rank);
+    if (held)
+      for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
+        t.neighbor.push_back(local[rows.neighbor[e]]);
+        t.N.push_back(rows.N[e]);
+        if (!rows.grad.empty()) t.grad.push_back(rows.grad[e]);
+      }
+    t.offset.push_back(static_cast<index_t>(t.neighbor.size()));
+  }
+  m.bodies = model_bodies::part(global.bodies, m.particle_id, plan.points);
   return m;
 }
 

@@ -59,13 +59,13 @@ inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t
   return out;
 }
 
-// v_I = problem.initial_particle_velocity(I, X_I), else problem.initial_velocity(X_I); v is left
+// v_I = problem.initial_particle_velocity(I, X_I) (I: the index in the whole model), else problem.initial_velocity(X_I); v is left
 // as it is (at rest) when the problem gives neither.
 template <class Problem>
 void initial_velocities(const discrete_model& m, const Problem& p, std::vector<vec2>& v) {
   const auto& X = m.particles.position;
   if (p.initial_particle_velocity)
-    for (index_t I = 0; I < m.particle_count(); ++I) v[I] = p.initial_particle_velocity(I, X[I]);
+    for (index_t I = 0; I < m.particle_count(); ++I) v[I] = p.initial_particle_velocity(m.global_particle(I), X[I]);
   else if (p.initial_velocity)
     for (index_t I = 0; I < m.particle_count(); ++I) v[I] = p.initial_velocity(X[I]);
 }

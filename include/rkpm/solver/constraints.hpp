@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
@@ -36,8 +37,12 @@ class constraint_projector {
  public:
   constraint_projector() = default;
 
+  // `global_id`: each particle's index in the whole model when this is one rank's part of it
+  // (discrete_model::particle_id; empty: the particles' own indices). The rows are then every
+  // rank's copy of the whole model's rows, and the projector orders what it sums by those
+  // indices, so that every rank computes the one-process projection, bit for bit.
   constraint_projector(std::vector<velocity_constraint> constraints, const shape_table<2>& at_particles,
-                       const std::vector<double>& mass)
+                       const std::vector<double>& mass, std::span<const stored_index> global_id = {})
       : constraints_(std::move(constraints)) {
     const index_t n = static_cast<index_t>(constraints_.size());
     if (n == 0) return;
@@ -54,21 +59,27 @@ class constraint_projector {
       }
       offset_.push_back(static_cast<index_t>(column_.size()));
     }
+    const auto key = [&](index_t I) -> index_t { return global_id.empty() ? I : global_id[I]; };
     touched_ = column_;
-    std::sort(touched_.begin(), touched_.end());
+    std::ranges::sort(touched_, {}, key);
     touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
     v_start_.resize(touched_.size());
     // A = Lambda M^-1 Lambda^T per direction (rows of different directions act on different
-    // velocity components and do not couple): A_rs = sum_I Lambda_rI Lambda_sI / m_I.
+    // velocity components and do not couple): A_rs = sum_I Lambda_rI Lambda_sI / m_I, over the
+    // touched particles in the order of their indices in the whole model (Lambda's columns).
+    const auto position = [&](index_t I) {
+      return static_cast<index_t>(std::ranges::lower_bound(touched_, key(I), {}, key) - touched_.begin());
+    };
+    const auto columns = static_cast<Eigen::Index>(touched_.size());
     Eigen::SparseMatrix<double> A(n, n);
-    Eigen::VectorXd inverse_mass(static_cast<Eigen::Index>(mass.size()));
-    for (std::size_t I = 0; I < mass.size(); ++I) inverse_mass[static_cast<Eigen::Index>(I)] = 1.0 / mass[I];
+    Eigen::VectorXd inverse_mass(columns);
+    for (Eigen::Index k = 0; k < columns; ++k) inverse_mass[k] = 1.0 / mass[touched_[k]];
     for (int k = 0; k < 2; ++k) {
       std::vector<Eigen::Triplet<double>> lambda;
       for (index_t r = 0; r < n; ++r)
         if (constraints_[r].direction == k)
-          for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) lambda.emplace_back(r, column_[e], value_[e]);
-      Eigen::SparseMatrix<double> L(n, static_cast<Eigen::Index>(mass.size()));
+          for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) lambda.emplace_back(r, position(column_[e]), value_[e]);
+      Eigen::SparseMatrix<double> L(n, columns);
       L.setFromTriplets(lambda.begin(), lambda.end());
       A += Eigen::SparseMatrix<double>(L * inverse_mass.asDiagonal() * L.transpose());  // disjoint patterns
     }
@@ -82,8 +93,9 @@ class constraint_projector {
 
   index_t size() const { return static_cast<index_t>(constraints_.size()); }
   const std::vector<velocity_constraint>& constraints() const { return constraints_; }
-  // The particles whose coefficient velocities apply() can change (in increasing order): the
-  // columns of the rows; every other velocity it leaves as it is, bit for bit.
+  // The particles whose coefficient velocities apply() can change, the columns of the rows, in
+  // increasing order of their index in the whole model; every other velocity it leaves as it
+  // is, bit for bit.
   const std::vector<index_t>& touched() const { return touched_; }
 
   // apply(t, v), returning the work of the velocity jump it made (docs/method.md (68)) with the

@@ -55,10 +55,13 @@ struct discrete_model {
   ownership own;
   model_bodies bodies;
   // A rank's model (parallel/local_model.hpp): the whole model's mean support, which
-  // mean_support() gives instead of its own particles' mean, and each point's index in the
-  // whole model, which errors name. Empty on one process.
+  // mean_support() gives instead of its own particles' mean, each point's index in the whole
+  // model, which errors name, and each particle's, which orders what every rank computes over
+  // the same particles (the constraints, the contact, the stable step's start vector). Empty on
+  // one process.
   std::optional<vec2> global_mean_support;
   std::vector<stored_index> point_id;
+  std::vector<stored_index> particle_id;
 
   // Takes the bodies found for these particles and cells, and finds each point's.
   void set_bodies(model_bodies b) {
@@ -76,8 +79,11 @@ struct discrete_model {
     return sum / static_cast<double>(particle_count());
   }
   index_t point_count() const { return points.size(); }
-  // Point q's index in the whole model (q itself on one process).
+  // Point q's and particle I's index in the whole model (q and I themselves on one process).
   index_t global_point(index_t q) const { return point_id.empty() ? q : point_id[q]; }
+  index_t global_particle(index_t I) const { return particle_id.empty() ? I : particle_id[I]; }
+  // Whether this is one rank's part of a model on several processes (parallel/local_model.hpp).
+  bool is_part() const { return own.group != nullptr; }
   // The gradients the internal force is scattered with (#entries of at_points).
   const std::vector<vec2>& test_gradients() const { return test_gradient.empty() ? at_points.grad : test_gradient; }
 };

@@ -140,9 +140,16 @@ class explicit_solver {
   }
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).
+  // On several processes an error of the force loop on one rank (an inverted point) is thrown on
+  // every rank, with the same message, by the collective calls that follow it.
   void compute_internal_force() {
-    points_.internal_force(model_, materials_, d_, f_int_, {timeline_.current_step(), timeline_.current_time(), timeline_.taking});
+    const auto loop = [&] {
+      points_.internal_force(model_, materials_, d_, f_int_, {timeline_.current_step(), timeline_.current_time(), timeline_.taking});
+    };
+    if (model_.own.group) model_.own.group->guarded(loop);
+    else loop();
     exec::exchange(exchange_point::after_scatter, model_.own, f_int_);
+    points_.combine(model_);
     energy_.plastic = points_.plastic_work();
   }
 
@@ -167,7 +174,7 @@ class explicit_solver {
 template <Geometry G, Material M, Contact Ct>
 explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options,
                                            model_factory factory)
-    : model_(with_bodies<G>(std::move(model))),
+    : model_(model.is_part() ? std::move(model) : with_bodies<G>(std::move(model))),
       factory_(std::move(factory)),
       materials_(model_, std::move(prob.material), std::move(prob.body_materials)),
       contact_{std::move(prob.contact)},
@@ -178,10 +185,11 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
   d_.assign(model_.particle_count(), vec2::Zero());
   v_ = a_ = v_half_prev_ = f_int_ = d_;
   f_ext_ = body_forces(prob.body_force, std::move(prob.body_force_field), model_.particles.position, mass_);
-  sums_ = block_sums<2>(model_.own.particles.size());  // owned particles come first
+  sums_ = block_sums<2>(model_.own.particles.size(), model_.own.group);  // owned particles come first
   points_ = point_materials<G, M>(model_, materials_);
-  add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
-  constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_);
+  // A rank's part of a model has them already: the whole model's (parallel/distributed_problem.hpp).
+  if (!model_.is_part()) add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
+  constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_, model_.particle_id);
   d_start_.resize(constraints_.touched().size());
   contact_.setup(model_, body(), std::move(prob.slave_particles));
   initial_velocities(model_, prob, v_);
@@ -217,6 +225,8 @@ void explicit_solver<G, M, Ct>::step() {
     for (std::size_t k = 0; k < constrained.size(); ++k) d_[constrained[k]] = d_start_[k] + dt * v_[constrained[k]];
   }
   exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
+  // The ghosts' v(n+1/2) as well, for the constraints' work at the step's end.
+  exec::parallel_for(model_.own.ghost_particles, [&](index_t I) { v_half_prev_[I] = v_[I]; });
   f_ext_.advance(timeline_.time + dt, model_.particles.position, mass_);
   // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
   // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
@@ -239,6 +249,7 @@ void explicit_solver<G, M, Ct>::step() {
   energy_.external += external;
   energy_.kinetic = kinetic;
   if (constrained_end) {
+    exec::exchange(exchange_point::before_constraints, model_.own, v_);
     energy_.constraint += constraints_.apply_with_work(timeline_.time + dt, v_, mass_, v_half_prev_);
     energy_.kinetic = kinetic_energy();
   }

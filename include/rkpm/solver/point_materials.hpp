@@ -113,6 +113,21 @@ class point_materials {
     plastic_work_ = plastic;
   }
 
+  // On one rank of several (discrete_model::is_part): the plastic work and the smallest stretch
+  // over every rank's points. internal_force() leaves this rank's; this combines them, the
+  // work summed per point owner in one process's order (process_group::sum_points).
+  // Collective: every rank calls it after internal_force(). Nothing to do on one process.
+  void combine(const discrete_model& m) {
+    process_group* group = m.own.group;
+    if (!group) return;
+    const std::vector<stored_index>& owned = group->owned_points();
+    point_terms_.resize(owned.size());
+    for (std::size_t k = 0; k < owned.size(); ++k)
+      point_terms_[k] = state_[owned[k]].plastic_work * m.points.weight[owned[k]];
+    plastic_work_ = group->sum_points(point_terms_);
+    min_stretch_ = group->min(min_stretch_);
+  }
+
   // Smallest support stretch over the points at the last evaluation (1 at F = I).
   double min_stretch() const { return min_stretch_; }
   // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
@@ -199,6 +214,7 @@ class point_materials {
   std::vector<state_type> state_;
   std::vector<block_matrix> tau_, F_;  // empty when the material recomputes tau / the state records F
   std::vector<tile_summary> tile_;     // per tile of the traversal
+  std::vector<double> point_terms_;    // on several ranks: the owned points' plastic work
   std::string error_;                  // the first material error's message (of point error_point_)
   index_t error_point_ = 0;
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction

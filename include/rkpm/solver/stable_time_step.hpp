@@ -31,7 +31,8 @@ namespace rkpm {
 struct stiffness_workspace {
   std::vector<vec2> kx;
   block_sums<2> sums;  // x.Kx and x.Mx, in a fixed order
-  explicit stiffness_workspace(const discrete_model& m) : kx(m.particle_count()), sums(m.particle_count()) {}
+  explicit stiffness_workspace(const discrete_model& m)
+      : kx(m.particle_count()), sums(m.own.particles.size(), m.own.group) {}
 };
 
 // The Lame moduli (lambda, mu) at each quadrature point: one pair per body and the body of
@@ -109,31 +110,40 @@ inline vec2 power_iteration_start(std::size_t I) {
 inline void power_iteration_start(std::vector<vec2>& x) {
   for (std::size_t I = 0; I < x.size(); ++I) x[I] = power_iteration_start(I);
 }
+// The same over a model's particles, by their index in the whole model (the same vector on any
+// number of processes).
+inline void power_iteration_start(const discrete_model& m, std::vector<vec2>& x) {
+  x.resize(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I) x[I] = power_iteration_start(m.global_particle(I));
+}
 
 // omega_max^2 of M^-1 K(F) by `iterations` power steps from (and into) x. No allocation. F: a
-// std::vector<mat3> (empty: the reference configuration) or a callable q -> mat3.
+// std::vector<mat3> (empty: the reference configuration) or a callable q -> mat3. On several
+// processes x's owned values are iterated: its ghosts are forwarded before each product, and
+// the sums and the norm taken over every process's owned particles.
 template <Geometry G, class PointF>
 double largest_frequency_squared(const discrete_model& m, const point_moduli& c, const PointF& F,
                                  const std::vector<double>& mass, std::vector<vec2>& x, stiffness_workspace& w,
                                  int iterations) {
-  const index_t n = m.particle_count();
+  const index_range owned = m.own.particles;
   double omega2 = 0.0;
   for (int it = 0; it < iterations; ++it) {
+    exec::exchange(exchange_point::stiffness_product, m.own, x);
     apply_elastic_stiffness<G>(m, c, F, x, w.kx);
     const auto [xkx, xmx] = w.sums([&](index_t I, block_sums<2>::sums& s) {
       s[0] += x[I].dot(w.kx[I]);
       s[1] += mass[I] * x[I].squaredNorm();
     });
     omega2 = xkx / xmx;
-    const double norm = exec::max_over(
-        {0, n},
+    const double norm = exec::max_over_owned(
+        m.own,
         [&](index_t I) {
           x[I] = w.kx[I] / mass[I];
           return x[I].cwiseAbs().maxCoeff();
         },
         0.0);
     if (!(norm > 0.0)) break;
-    exec::parallel_for(n, [&](index_t I) { x[I] /= norm; });
+    exec::parallel_for(owned, [&](index_t I) { x[I] /= norm; });
   }
   if (!(omega2 > 0.0) || !std::isfinite(omega2))
     fail("could not estimate the stable time step (omega^2 = {}): check the material constants "
@@ -145,8 +155,8 @@ double largest_frequency_squared(const discrete_model& m, const point_moduli& c,
 template <Geometry G>
 double reference_stable_time_step(const discrete_model& m, const material::elastic_constants& c,
                                   const std::vector<double>& mass, int iterations = 100) {
-  std::vector<vec2> x(m.particle_count());
-  power_iteration_start(x);
+  std::vector<vec2> x;
+  power_iteration_start(m, x);
   stiffness_workspace w(m);
   static const std::vector<mat3> reference;
   return 2.0 / std::sqrt(largest_frequency_squared<G>(m, point_moduli(c), reference, mass, x, w, iterations));

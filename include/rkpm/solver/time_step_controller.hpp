@@ -35,8 +35,7 @@ class time_step_controller {
   template <class PointF>
   double start(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass, const PointF& F,
                const run_options& options) {
-    mode_.resize(m.particle_count());
-    power_iteration_start(mode_);
+    power_iteration_start(m, mode_);
     workspace_ = stiffness_workspace(m);
     reference_dt_ = estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 100));
     estimate_stretch_ = 1.0;
@@ -51,11 +50,10 @@ class time_step_controller {
                 index_t steps) {
     const double drift = min_stretch / estimate_stretch_;
     if (steps > 0 && (drift < 0.9 || drift > 1.25 || steps - estimate_step_ >= 500)) {
-      const auto n = static_cast<index_t>(mode_.size());
-      const double norm = exec::max_over({0, n}, [&](index_t I) { return mode_[I].cwiseAbs().maxCoeff(); }, 0.0);
+      const double norm = exec::max_over_owned(m.own, [&](index_t I) { return mode_[I].cwiseAbs().maxCoeff(); }, 0.0);
       // The start vector recomputed, not stored (16 bytes per particle): the same values.
-      exec::parallel_for(n, [&](index_t I) {
-        mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(static_cast<std::size_t>(I));
+      exec::parallel_for(m.own.particles, [&](index_t I) {
+        mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(static_cast<std::size_t>(m.global_particle(I)));
       });
       estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 20));
       estimate_stretch_ = min_stretch;

@@ -1,0 +1,106 @@
+#pragma once
+// distributed_solver<Solver>: one rank's part of an explicit solver (solver/explicit_solver.hpp)
+// on P processes, from the whole model and problem that every rank builds alike (docs/method.md
+// section 9.8). Set-up, on every rank:
+//   1. on the whole model: its bodies, the axis constraints and the contact slaves, as one
+//      process finds them;
+//   2. the shared region: the constrained and slave particles and their rows' columns, which
+//      every rank holds (as ghosts where it does not own them), so that every rank computes the
+//      constraints' projection and the contact corrections of the whole model alike, as one
+//      process does: the replicated region. It is the body's surface and axis, a thin band;
+//   3. the halo plan (parallel/halo.hpp) with it and the owned particles' rows, the rank's
+//      model (local_model) and its process group (mpi_process_group);
+//   4. the solver on that model, the problem's constraints and slaves renamed to local ids.
+// Then step() and run() are the solver's: owned values are updated on their owner, ghosts
+// forwarded, sums taken in one process's order. Every rank's owned values, and every total
+// (energies, time, step size), equal one process's bit for bit, on any partition.
+// An error on one rank in the set-up or a step is thrown on every rank with one message
+// (communicator::agree). The whole model is dropped once the rank's part is built; building it
+// on every rank is the set-up's memory limit (the step's is the part).
+// Contact between bodies and tool vertices against the surfaces read the bodies' surfaces,
+// which a part does not have: they are refused on more than one process (model_bodies::part).
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/halo.hpp>
+#include <rkpm/parallel/local_model.hpp>
+#include <rkpm/parallel/mpi_process_group.hpp>
+#include <rkpm/parallel/partition.hpp>
+#include <rkpm/solver/body_setup.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/problem.hpp>
+
+namespace rkpm::parallel {
+
+// The particles every rank holds (sorted global ids): the constrained and slave particles and
+// the columns of their rows at the particles.
+inline std::vector<stored_index> shared_particles(const shape_table<2>& at_particles,
+                                                  const std::vector<velocity_constraint>& constraints,
+                                                  const std::vector<index_t>& slaves) {
+  std::vector<stored_index> out;
+  const auto add_row = [&](index_t I) {
+    out.push_back(static_cast<stored_index>(I));
+    for (index_t e = at_particles.offset[I]; e < at_particles.offset[I + 1]; ++e) out.push_back(at_particles.neighbor[e]);
+  };
+  for (const velocity_constraint& c : constraints) add_row(c.particle);
+  for (const index_t I : slaves) add_row(I);
+  std::ranges::sort(out);
+  out.erase(std::ranges::unique(out).begin(), out.end());
+  return out;
+}
+
+template <class Solver>
+class distributed_solver {
+ public:
+  using geometry_type = typename Solver::geometry_type;
+  using problem_type = problem<typename Solver::material_type, typename Solver::contact_type>;
+
+  // Collective. `partition`: one part per process (partition_particles, or a given one).
+  distributed_solver(communicator& comm, discrete_model whole, problem_type prob, run_options options,
+                     const particle_partition& partition) {
+    if (partition.parts != comm.size())
+      fail("distributed solver: a partition into {} parts on {} processes; partition into as many parts as "
+           "processes",
+           partition.parts, comm.size());
+    if (partition.particles() != whole.particle_count())
+      fail("distributed solver: the partition has {} particles but the model {}; partition this model's particles",
+           partition.particles(), whole.particle_count());
+    discrete_model local;
+    comm.guarded([&] {
+      whole = with_bodies<geometry_type>(std::move(whole));
+      add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
+      prob.slave_particles = select_slaves(whole, std::move(prob.slave_particles), has_contact(prob.contact)).particle;
+      const std::vector<stored_index> shared = shared_particles(whole.at_particles, prob.constraints, prob.slave_particles);
+      plan_ = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles, shared);
+      local = local_model(whole, plan_);
+    });
+    comm.agree();
+    group_ = std::make_unique<mpi_process_group>(comm, partition, plan_, whole.at_points);
+    whole = discrete_model{};
+    local.own.group = group_.get();
+    std::vector<stored_index> local_id(plan_.global_particles, -1);
+    for (index_t i = 0; i < plan_.local_particles(); ++i) local_id[plan_.global_particle(i)] = static_cast<stored_index>(i);
+    for (velocity_constraint& c : prob.constraints) c.particle = local_id[c.particle];
+    for (index_t& I : prob.slave_particles) I = local_id[I];
+    comm.guarded([&] { solver_.emplace(std::move(local), std::move(prob), options); });
+    comm.agree();
+  }
+
+  Solver& solver() { return *solver_; }
+  const Solver& solver() const { return *solver_; }
+  // This rank's plan: its owned particles and ghosts by global id (local ids: owned, then ghosts).
+  const halo_plan& plan() const { return plan_; }
+  mpi_process_group& group() { return *group_; }
+
+ private:
+  halo_plan plan_;
+  std::unique_ptr<mpi_process_group> group_;  // the solver's model points to it
+  std::optional<Solver> solver_;
+};
+
+}  // namespace rkpm::parallel
