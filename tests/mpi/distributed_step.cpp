@@ -1,5 +1,5 @@
 // The whole explicit step on 1, 2 and 3 processes (parallel/distributed_solver.hpp; run by ctest
-// as mpi.distributed_step.ranks_N): the copper bar of mpi/bar_problem.hpp (axisymmetric, J2,
+// as mpi.distributed_step.ranks_N): the copper bar of mpi/bar_impact.hpp (axisymmetric, J2,
 // Q2) thrown at 150 m/s onto a rigid anvil with Coulomb friction, so that a step has all of its
 // parts: the axis constraints (u_r = 0) and the contact corrections on the shared region, the
 // force loop with redundant points, the stable step's power iterations (the first, and again
@@ -18,13 +18,11 @@
 #include <string>
 #include <vector>
 
-#include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/distributed_solver.hpp>
 #include <rkpm/parallel/partition.hpp>
-#include <rkpm/solver/explicit_solver.hpp>
 
-#include "mpi/bar_problem.hpp"
+#include "mpi/bar_impact.hpp"
 #include "mpi/gather_owned.hpp"
 
 namespace test_mpi_distributed_step {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -34,37 +32,12 @@ using namespace rkpm::parallel;
 
 namespace {
 
-using G = test::bar::geometry_type;
-using M = test::bar::material_type;
-using Ct = contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>;
-using solver_type = explicit_solver<G, M, Ct>;
+using test::bar::solver_type;
+using test::bar::impact;
+using test::bar::options;
+using test::bar::totals;
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
-
-problem<M, Ct> impact() {
-  // The anvil 20 um below the bar's face: the first steps fly, then the face is crushed.
-  const contact::rigid_tool anvil("anvil", {vec2(-1e-3, -2e-5), vec2(2 * test::bar::radius, -2e-5)},
-                                  contact::side::left, contact::tool_motion::fixed());
-  return {.particles = {},
-          .mesh = {},
-          .material = test::bar::copper(),
-          .contact = Ct({anvil}, contact::friction::coulomb{0.2}),
-          .initial_velocity = [](const vec2&) { return vec2(0.0, -150.0); }};
-}
-
-run_options options() {
-  run_options o;
-  o.end_time = 1.0;  // stepped by hand
-  o.time_step_update_interval = 3;
-  return o;
-}
-
-// What every rank compares: the totals, the same on every rank.
-std::vector<double> totals(const solver_type& s) {
-  const energy_balance& e = s.energy();
-  return {s.time(), s.time_step(), e.kinetic, e.internal, e.external, e.contact, e.constraint, e.plastic,
-          s.tool_impulses()[0][0], s.tool_impulses()[0][1], s.max_penetration(), s.min_stretch()};
-}
 
 struct gathered {
   std::vector<vec2> d, v;

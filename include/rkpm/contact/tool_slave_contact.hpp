@@ -131,7 +131,7 @@ class tool_slave_contact {
         held = hit.segment;
         if (hit.segment < 0) continue;
         contact_pair& p = pair_[pairs_++];
-        p = contact_pair{j, k, hit.segment, hit.gap, tool.normal(hit.segment), 0.0, vec2::Zero()};
+        p = contact_pair{j, k, hit.segment, hit.gap, tool.normal(hit.segment), 0.0, 0.0, vec2::Zero()};
         result.max_penetration = std::max(result.max_penetration, hit.gap);
         if (!in_contact_[j]) {
           in_contact_[j] = 1;

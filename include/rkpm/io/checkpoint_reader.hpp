@@ -6,7 +6,9 @@
 // truncated file, a damaged one (naming the part whose checksum fails), then, while sections
 // are read, another configuration, other counts, a section out of place or of another value
 // size. A solver is not half loaded from a damaged or truncated file. Classes read their
-// sections through load(checkpoint_reader&).
+// sections through load(checkpoint_reader&). On one rank of several, a layout
+// (io/checkpoint_layout.hpp) names the sections of the whole model's particles and points: the
+// reader takes each local value from the whole array by its index there.
 
 #include <cstdint>
 #include <cstring>
@@ -24,6 +26,7 @@
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/checkpoint_format.hpp>
+#include <rkpm/io/checkpoint_layout.hpp>
 #include <rkpm/io/crc32.hpp>
 
 namespace rkpm::io {
@@ -64,11 +67,26 @@ class checkpoint_reader {
   }
 
   const checkpoint_header& header() const { return header_; }
+  // Reads the whole model's sections into a rank's part (null: the arrays as they are).
+  void set_layout(const checkpoint_layout* layout) { layout_ = layout; }
 
   // Section `name` into `values`, which must already have the stored size.
   template <bitwise_value T>
   void array(std::string_view name, std::vector<T>& values) {
     const section& s = open<T>(name);
+    if (const std::vector<stored_index>* index = layout_ ? layout_->whole_index(name) : nullptr) {
+      if (index->size() != values.size())
+        fail("checkpoint '{}': section '{}': this rank holds {} values but its layout maps {}", name_, name,
+             values.size(), index->size());
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        if (static_cast<std::uint64_t>((*index)[i]) >= s.count)
+          fail("checkpoint '{}': section '{}' has {} values, this problem's value {} is beyond them: a different "
+               "problem",
+               name_, name, s.count, (*index)[i]);
+        std::memcpy(static_cast<void*>(&values[i]), bytes_.data() + s.offset + (*index)[i] * sizeof(T), sizeof(T));
+      }
+      return;
+    }
     if (s.count != values.size())
       fail("checkpoint '{}': section '{}' has {} values, this solver expects {}: a different problem", name_, name,
            s.count, values.size());
@@ -242,6 +260,7 @@ class checkpoint_reader {
   std::uint32_t header_crc_ = 0;
   std::vector<section> sections_;
   std::size_t next_ = 0;
+  const checkpoint_layout* layout_ = nullptr;
 };
 
 // The header of a checkpoint (configuration, counts, description), checked to be a complete and

@@ -4,6 +4,9 @@
 // writing leaves the previous checkpoint usable. Classes add their sections through
 // save(checkpoint_writer&) const (see io/checkpoint.hpp). Each section's CRC-32 is taken as it
 // is added, the header's, the table's and the prefix's at commit().
+// On one rank of several, a layout (io/checkpoint_layout.hpp) turns the sections of the whole
+// model's particles and points into the whole arrays, gathered on the rank that writes; the
+// other ranks take part in the gathers and write nothing.
 
 #include <cstdint>
 #include <cstring>
@@ -16,6 +19,7 @@
 #include <rkpm/core/bitwise.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/checkpoint_format.hpp>
+#include <rkpm/io/checkpoint_layout.hpp>
 #include <rkpm/io/crc32.hpp>
 #include <rkpm/io/files.hpp>
 
@@ -23,8 +27,9 @@ namespace rkpm::io {
 
 class checkpoint_writer {
  public:
-  checkpoint_writer(std::filesystem::path path, const checkpoint_identity& id, std::string_view description = {})
-      : path_(std::move(path)) {
+  checkpoint_writer(std::filesystem::path path, const checkpoint_identity& id, std::string_view description = {},
+                    checkpoint_layout* layout = nullptr)
+      : path_(std::move(path)), layout_(layout) {
     bytes_.resize(checkpoint_prefix_bytes);  // filled in by commit()
     text(bytes_, id.configuration);
     for (index_t n : {id.particles, id.points, id.slaves, id.tools}) put(bytes_, static_cast<std::uint64_t>(n));
@@ -34,6 +39,13 @@ class checkpoint_writer {
 
   template <bitwise_value T>
   void array(std::string_view name, std::span<const T> values) {
+    if (layout_ && layout_->whole_index(name)) {
+      const std::string whole = layout_->gather(
+          name, {reinterpret_cast<const char*>(values.data()), values.size_bytes()}, sizeof(T));
+      sections_.push_back({std::string(name), whole.size() / sizeof(T), sizeof(T), crc32_of(whole.data(), whole.size())});
+      bytes_ += whole;
+      return;
+    }
     const char* data = reinterpret_cast<const char*>(values.data());
     sections_.push_back({std::string(name), values.size(), sizeof(T), crc32_of(data, values.size_bytes())});
     bytes_.append(data, values.size_bytes());
@@ -55,6 +67,7 @@ class checkpoint_writer {
 
   // Appends the table, fills in the prefix and puts the file in place (temporary file and rename).
   void commit() {
+    if (layout_ && !layout_->writes()) return;
     std::string table;
     put(table, header_bytes_);
     put(table, crc32_of(bytes_.data() + checkpoint_prefix_bytes, header_bytes_));
@@ -88,6 +101,7 @@ class checkpoint_writer {
     out.append(s);
   }
   std::filesystem::path path_;
+  checkpoint_layout* layout_ = nullptr;  // on one rank of several: the whole arrays from the ranks' parts
   std::string bytes_;
   std::uint64_t header_bytes_ = 0;
   std::vector<checkpoint_section> sections_;
