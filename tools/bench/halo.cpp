@@ -13,6 +13,11 @@
 //     each (each rank's local model: forward of the ghosts' coefficients, internal_force, the
 //     plastic work's fixed-order sum and the support stretch's minimum), the slowest rank's
 //     time; the medians, alternated round by round, and their ratios;
+//   - the whole step measured (parallel/distributed_solver.hpp): the Taylor bar from impact,
+//     stepped in rounds by one process on 1 and on 2 threads (rank 0 alone, one solver) and by
+//     the P processes on one thread each (each rank's part of the model: the force loop, the
+//     contact and constraints on the shared region, the exchanges and the fixed-order sums), the
+//     slowest rank's time per step; the medians of the rounds' ratios;
 //   - from them and a force-loop cost per point (--point-us, measured by tools/rkpm bench:
 //     BM_step's s_per_particle_step over its points per particle), the modelled time per step on
 //     P processes and its parallel efficiency.
@@ -39,6 +44,7 @@
 #include <unistd.h>
 
 #include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/distributed_solver.hpp>
 #include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/local_model.hpp>
@@ -57,6 +63,7 @@ struct options {
   std::vector<int> resolutions{8, 32};
   int repeat = 200;
   int rounds = 9;  // force-loop rounds: one process on 1 and 2 threads, then P processes, alternated
+  int steps = 20;  // whole-step rounds: steps per round and way (0: the whole step is not timed)
   double point_us = 0.105;     // force loop per point and step, one core (0.21 us per particle-step, 2 points)
   double latency_us = 2.0;     // a cluster's message latency, assumed
   double bandwidth_GB_s = 10.0;  // and its bandwidth per link, assumed
@@ -76,6 +83,9 @@ std::optional<int> parse(int argc, char** argv, options& o, int rank) {
   app.add_option("--repeat", o.repeat, "timed exchanges and reductions")->check(CLI::Range(1, 1000000))->capture_default_str();
   app.add_option("--rounds", o.rounds, "rounds of force-loop timings (one process, then P processes)")
       ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  app.add_option("--steps", o.steps, "whole steps per round and way (0: do not time the whole step)")
+      ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   app.add_option("--point-us", o.point_us, "force loop per point and step on one core (us)")
       ->check(CLI::Range(1e-6, 1e6))
@@ -252,6 +262,50 @@ force_loop_times time_force_loop(parallel::communicator& comm, const options& o,
   return {median(one), median(two), median(many), median(over_one), median(over_two)};
 }
 
+// The whole step of the Taylor bar: one solver on rank 0 stepped `steps` steps on 1 thread, then
+// `steps` on 2 threads (the other ranks asleep), then the P ranks' solver 2 x `steps` steps (so
+// that both stay on the same trajectory, a round apart at most); per round the time per step of
+// each, the P processes' the slowest rank's. The solvers start from the same state: the bar at
+// the wall, t = 0.
+template <class Problem>
+force_loop_times time_whole_step(parallel::communicator& comm, const options& o, const Problem& problem,
+                                 const discrete_model& m, const parallel::particle_partition& part) {
+  using solver_type = solver_for<bench::wall_method<quadrature::q2>>;
+  std::optional<solver_type> one;
+  if (comm.rank() == 0) one.emplace(discrete_model(m), Problem(problem), bench::bench_options());
+  parallel::distributed_solver<solver_type> many(comm, discrete_model(m), Problem(problem), bench::bench_options(), part);
+  std::vector<double> t1, t2, tp;
+  for (int round = 0; round < o.rounds; ++round) {
+    if (comm.rank() == 0)
+      for (const int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        const double start = MPI_Wtime();
+        for (int k = 0; k < o.steps; ++k) one->step();
+        (threads == 1 ? t1 : t2).push_back((MPI_Wtime() - start) / o.steps);
+      }
+    omp_set_num_threads(1);
+    quiet_barrier(comm.get());
+    const pinned_to_core pin(comm.rank(), comm.size());
+    MPI_Barrier(comm.get());
+    const double start = MPI_Wtime();
+    for (int k = 0; k < 2 * o.steps; ++k) many.solver().step();
+    double t = (MPI_Wtime() - start) / (2 * o.steps);
+    MPI_Allreduce(MPI_IN_PLACE, &t, 1, MPI_DOUBLE, MPI_MAX, comm.get());
+    tp.push_back(t);
+  }
+  if (comm.rank() != 0) return {};
+  if (one->steps() != many.solver().steps() || one->time() != many.solver().time())
+    fail("whole-step bench: one process reached t = {} s at step {}, {} processes t = {} s at step {}: not the same "
+         "run",
+         one->time(), one->steps(), comm.size(), many.solver().time(), many.solver().steps());
+  std::vector<double> over_one, over_two;
+  for (std::size_t r = 0; r < tp.size(); ++r) {
+    over_one.push_back(t1[r] / tp[r]);
+    over_two.push_back(t2[r] / tp[r]);
+  }
+  return {median(t1), median(t2), median(tp), median(over_one), median(over_two)};
+}
+
 struct rank_figures {
   double owned, ghosts, points, neighbours, exchanged;  // exchanged: ghosts received plus particles sent
 };
@@ -286,6 +340,8 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
   });
 
   const force_loop_times loop = time_force_loop(comm, o, problem, m, part, plan);
+  const std::optional<force_loop_times> whole =
+      o.steps > 0 ? std::optional(time_whole_step(comm, o, problem, m, part)) : std::nullopt;
 
   if (comm.rank() != 0) return;
   double max_points = 0.0, total_points = 0.0, max_ghosts = 0.0, total_ghosts = 0.0, max_neighbours = 0.0,
@@ -320,6 +376,12 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
              "{:.2f} x two threads\n",
              o.rounds, loop.one_thread * 1e3, loop.two_threads * 1e3, P, loop.ranks * 1e3, P, loop.ranks_over_one,
              loop.ranks_over_two);
+  if (whole)
+    fmt::print("  whole step measured, per step (medians of {} rounds of {} steps): one process 1 thread {:.3f} ms, 2 "
+               "threads {:.3f} ms; {} processes x 1 thread {:.3f} ms (slowest rank); speed-up of the {} processes, the "
+               "median of the rounds' ratios: {:.2f} x one thread, {:.2f} x two threads\n",
+               o.rounds, o.steps, whole->one_thread * 1e3, whole->two_threads * 1e3, P, whole->ranks * 1e3, P,
+               whole->ranks_over_one, whole->ranks_over_two);
   fmt::print("  model here: step {:.3f} ms = force loop {:.3f} ms + 2 exchanges + 3 reductions; one process {:.3f} ms; "
              "speed-up {:.2f}, efficiency {:.2f}\n",
              step_s * 1e3, force_s * 1e3, serial_s * 1e3, serial_s / step_s, serial_s / step_s / P);
