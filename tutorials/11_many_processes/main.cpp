@@ -101,8 +101,11 @@ int main(int argc, char** argv) {
     const auto stepping = std::chrono::steady_clock::now();
     solver_type& s = run.solver();
     if (root)
-      fmt::print("rank 0 owns {} particles and holds {} ghosts; first step {:.4g} ns\n", run.plan().owned.size(),
-                 run.plan().ghosts.size(), s.time_step() * 1e9);
+      fmt::print("rank 0 owns {} particles and holds {} ghosts; every rank holds the {} particles of the contact "
+                 "face, the axis and their neighbours ({:.1f}%); first step {:.4g} ns\n",
+                 run.plan().owned.size(), run.plan().ghosts.size(), run.shared_particles(),
+                 100.0 * run.shared_particles() / static_cast<double>(run.plan().global_particles),
+                 s.time_step() * 1e9);
     double next_report = 0.1 * end_time;
     s.run([&](const solver_type& at) {
       if (root && at.time() >= next_report) {

@@ -77,6 +77,7 @@ class distributed_solver {
       prob.slave_particles = select_slaves(whole, std::move(prob.slave_particles), has_contact(prob.contact)).particle;
       const std::vector<stored_index> shared = shared_particles(whole.at_particles, prob.constraints, prob.slave_particles);
       plan_ = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles, shared);
+      shared_ = static_cast<index_t>(shared.size());
       local = local_model(whole, plan_);
     });
     comm.agree();
@@ -96,9 +97,13 @@ class distributed_solver {
   // This rank's plan: its owned particles and ghosts by global id (local ids: owned, then ghosts).
   const halo_plan& plan() const { return plan_; }
   mpi_process_group& group() { return *group_; }
+  // The particles every rank holds and corrects alike: the constrained and slave particles and
+  // their rows' columns.
+  index_t shared_particles() const { return shared_; }
 
  private:
   halo_plan plan_;
+  index_t shared_ = 0;
   std::unique_ptr<mpi_process_group> group_;  // the solver's model points to it
   std::optional<Solver> solver_;
 };
