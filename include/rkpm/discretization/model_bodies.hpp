@@ -64,10 +64,13 @@ class model_bodies {
   }
 
   // The bodies of a rank's part of a model (parallel/local_model.hpp): its particles' and points'
-  // bodies, given by their indices in the whole model. It has no cells and no surfaces: contact
-  // between bodies and tool vertices on the surfaces do not run on several processes yet.
+  // bodies, given by their indices in the whole model. It has no cells. Its surfaces are the
+  // whole model's chains in local particle ids (`local_id`: each particle's local id, -1 where
+  // the part does not hold it) when the part holds every chain's particles (the shared region
+  // of parallel/distributed_solver.hpp holds them when the contact reads the surfaces);
+  // otherwise surface() refuses.
   static model_bodies part(const model_bodies& whole, std::span<const stored_index> particles,
-                           std::span<const stored_index> points) {
+                           std::span<const stored_index> points, std::span<const stored_index> local_id = {}) {
     model_bodies b;
     b.partition_.bodies = whole.partition_.bodies;
     b.partition_.nodes_are_particles = false;
@@ -76,8 +79,20 @@ class model_bodies {
       for (const stored_index I : particles) b.partition_.particle_body.push_back(whole.partition_.particle_body[I]);
     if (!whole.point_body_.empty())
       for (const stored_index q : points) b.point_body_.push_back(whole.point_body_[q]);
-    b.surface_error_ = "a rank's part of a model on several processes has no surfaces: contact between bodies and "
-                       "tool vertices against the surfaces run on one process only (for now)";
+    b.surface_error_ = whole.surface_error_;
+    if (!b.surface_error_.empty()) return b;
+    b.surface_ = whole.surface_;
+    for (boundary_chain& c : b.surface_)
+      for (index_t& node : c.node) {
+        const stored_index i = local_id.empty() ? -1 : local_id[node];
+        if (i < 0) {
+          b.surface_.clear();
+          b.surface_error_ = "this rank's part of the model does not hold the whole surface (it holds the surfaces "
+                             "only when the contact policy reads them: contact between bodies, tool vertices)";
+          return b;
+        }
+        node = i;
+      }
     return b;
   }
 

@@ -17,8 +17,8 @@
 // An error on one rank in the set-up or a step is thrown on every rank with one message
 // (communicator::agree). The whole model is dropped once the rank's part is built; building it
 // on every rank is the set-up's memory limit (the step's is the part).
-// Contact between bodies and tool vertices against the surfaces read the bodies' surfaces,
-// which a part does not have: they are refused on more than one process (model_bodies::part).
+// Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: then
+// the surfaces' particles and rows join the shared region, and every rank corrects them alike.
 
 #include <algorithm>
 #include <memory>
@@ -37,11 +37,12 @@
 
 namespace rkpm::parallel {
 
-// The particles every rank holds (sorted global ids): the constrained and slave particles and
-// the columns of their rows at the particles.
+// The particles every rank holds (sorted global ids): the constrained and slave particles, the
+// surfaces' particles when the contact reads them, and the columns of their rows at the particles.
 inline std::vector<stored_index> shared_particles(const shape_table<2>& at_particles,
                                                   const std::vector<velocity_constraint>& constraints,
-                                                  const std::vector<index_t>& slaves) {
+                                                  const std::vector<index_t>& slaves,
+                                                  const std::vector<boundary_chain>& surfaces = {}) {
   std::vector<stored_index> out;
   const auto add_row = [&](index_t I) {
     out.push_back(static_cast<stored_index>(I));
@@ -49,9 +50,21 @@ inline std::vector<stored_index> shared_particles(const shape_table<2>& at_parti
   };
   for (const velocity_constraint& c : constraints) add_row(c.particle);
   for (const index_t I : slaves) add_row(I);
+  for (const boundary_chain& c : surfaces)
+    for (const index_t I : c.node) add_row(I);
   std::ranges::sort(out);
   out.erase(std::ranges::unique(out).begin(), out.end());
   return out;
+}
+
+// Whether a contact policy reads the bodies' surfaces (contact/particle_to_segment.hpp's pairs
+// of bodies and tool vertices).
+template <class Contact>
+bool reads_surfaces(const Contact& c) {
+  if constexpr (requires { c.body_pairs(); c.tool_vertex_slaves(); })
+    return !c.body_pairs().empty() || c.tool_vertex_slaves();
+  else
+    return false;
 }
 
 template <class Solver>
@@ -75,7 +88,12 @@ class distributed_solver {
       whole = with_bodies<geometry_type>(std::move(whole));
       add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
       prob.slave_particles = select_slaves(whole, std::move(prob.slave_particles), has_contact(prob.contact)).particle;
-      const std::vector<stored_index> shared = shared_particles(whole.at_particles, prob.constraints, prob.slave_particles);
+      // Contact between bodies and tool vertices read the bodies' surfaces: every rank holds them.
+      static const std::vector<boundary_chain> none;
+      const std::vector<boundary_chain>& surfaces =
+          reads_surfaces(prob.contact) ? whole.bodies.surface("contact on several processes") : none;
+      const std::vector<stored_index> shared =
+          parallel::shared_particles(whole.at_particles, prob.constraints, prob.slave_particles, surfaces);
       plan_ = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles, shared);
       shared_ = static_cast<index_t>(shared.size());
       local = local_model(whole, plan_);

@@ -91,7 +91,8 @@ inline discrete_model local_force_model(const discrete_model& global, const halo
 //                  held here (the shared region's: parallel/halo.hpp), columns renamed; the
 //                  other ghosts' rows are empty (no rank reads them)
 //   particle_id    each particle's index in the whole model
-//   bodies         the particles' and points' bodies (model_bodies::part)
+//   bodies         the particles' and points' bodies, and the surfaces if the part holds them
+//                  (model_bodies::part)
 // own.group is left to the caller (the process group the run lives in).
 inline discrete_model local_model(const discrete_model& global, const halo_plan& plan) {
   discrete_model m = local_force_model(global, plan);
@@ -122,7 +123,7 @@ inline discrete_model local_model(const discrete_model& global, const halo_plan&
       }
     t.offset.push_back(static_cast<index_t>(t.neighbor.size()));
   }
-  m.bodies = model_bodies::part(global.bodies, m.particle_id, plan.points);
+  m.bodies = model_bodies::part(global.bodies, m.particle_id, plan.points, local);
   return m;
 }
 
