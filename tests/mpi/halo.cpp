@@ -4,7 +4,8 @@
 // it computes, and computes every point of every particle it owns (and no other point); the
 // ghosts are exactly the other ranks' particles those points need; rank a's send list to b is
 // b's receive list from a; the local table is the global one renamed; every block is collected
-// by one rank, from every particle of it, in index order. The halo sizes are printed (MESSAGE).
+// by one rank, from every particle of it, in index order, and the blocks a rank owns whole and
+// the rest of its items cover its items once. The halo sizes are printed (MESSAGE).
 
 #include <doctest/doctest.h>
 
@@ -180,6 +181,20 @@ void check_plans(const test::grid_problem& g, const particle_partition& p, const
             wrong += slot != base[owner] + from[owner]++;
         }
       }
+      CHECK(wrong == 0);
+      // The whole blocks and the partial items cover the owned items once each; a whole block is
+      // its particles, consecutive owned items from its first.
+      std::vector<int> covered(static_cast<std::size_t>(b.owned), 0);
+      for (std::size_t w = 0; w < b.whole_first.size(); ++w)
+        for (index_t i = b.whole_first[w]; i < b.whole_first[w] + b.whole_size[w]; ++i) ++covered[i];
+      for (const stored_index i : b.partial) ++covered[i];
+      CHECK(std::ranges::all_of(covered, [](int c) { return c == 1; }));
+      for (std::size_t k = 0; k < b.collected.size(); ++k)
+        if (const index_t w = b.whole_of_collected[k]; w >= 0) {
+          const index_t first = b.collected[k] * block, last = std::min(n, first + block);
+          CHECK(b.whole_size[w] == last - first);
+          for (index_t i = 0; i < b.whole_size[w]; ++i) wrong += plans[b.rank].owned[b.whole_first[w] + i] != first + i;
+        }
       CHECK(wrong == 0);
     }
     CHECK(std::ranges::all_of(collected, [](int c) { return c == 1; }));

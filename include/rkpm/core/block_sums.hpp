@@ -13,9 +13,10 @@
 // particles can update them and sum at once. No allocation after construction.
 //
 // On several processes (a process_group, core/process_group.hpp) the indices are this process's
-// owned particles; each one's terms are kept and the group adds them over all processes to the
-// totals one process's blocks give over all particles, bit for bit. A body therefore adds at
-// most one term to each s[k] per index, as the library's bodies do.
+// owned particles. The blocks of the whole model's particles that it owns whole are summed here
+// as one process sums them; the other particles' terms are kept, and the group adds everything
+// over all processes to the totals one process's blocks give, bit for bit. A body therefore adds
+// at most one term to each s[k] per index, as the library's bodies do.
 
 #include <algorithm>
 #include <array>
@@ -63,21 +64,32 @@ class block_sums {
  private:
   template <class Body>
   sums across_processes(Body& body) const {
+    const process_group::owned_blocks& blocks = group_->particle_blocks();
+    const auto whole = static_cast<index_t>(blocks.whole_first.size());
+    const auto partial = static_cast<index_t>(blocks.partial.size());
+    whole_sums_.resize(static_cast<std::size_t>(whole * K));
 #pragma omp parallel for schedule(static)
-    for (index_t I = 0; I < n_; ++I) {
+    for (index_t w = 0; w < whole; ++w) {
+      sums s{};
+      for (index_t I = blocks.whole_first[w]; I < blocks.whole_first[w] + blocks.whole_size[w]; ++I) body(I, s);
+      for (int k = 0; k < K; ++k) whole_sums_[static_cast<std::size_t>(w * K + k)] = s[k];
+    }
+#pragma omp parallel for schedule(static)
+    for (index_t j = 0; j < partial; ++j) {
+      const index_t I = blocks.partial[j];
       sums s{};
       body(I, s);
       for (int k = 0; k < K; ++k) terms_[static_cast<std::size_t>(I * K + k)] = s[k];
     }
     sums total{};
-    group_->sum_particles(terms_, total);
+    group_->sum_particles(whole_sums_, terms_, total);
     return total;
   }
 
   index_t n_ = 0;
   mutable std::vector<sums> partial_;  // one per block
   process_group* group_ = nullptr;
-  mutable std::vector<double> terms_;  // with a group: K per index
+  mutable std::vector<double> terms_, whole_sums_;  // with a group: K per index, K per whole block
 };
 
 }  // namespace rkpm

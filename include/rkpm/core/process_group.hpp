@@ -33,9 +33,21 @@ class process_group {
   virtual void forward(std::vector<vec2>& a) = 0;
   virtual void forward(std::vector<vec2>& a, std::vector<vec2>& b) = 0;
   virtual void forward(std::vector<double>& a) = 0;
-  // totals[k] = the sum over every process's owned particles of terms[i K + k], K = totals.size()
-  // (1 or 2), with terms[i K + k] particle i's term (one per owned particle, in local order).
-  virtual void sum_particles(std::span<const double> terms, std::span<double> totals) = 0;
+  // How the owned particles fall into the blocks of the one-process sum (core/block_sums.hpp):
+  // the blocks this process owns whole (the first owned particle and the count of each, in
+  // block order), which it sums itself from zero in particle order as one process does, and
+  // the owned particles of the other blocks (increasing), whose terms it keeps.
+  struct owned_blocks {
+    std::vector<index_t> whole_first, whole_size;
+    std::vector<stored_index> partial;
+  };
+  virtual const owned_blocks& particle_blocks() const = 0;
+  // totals[k] (K = totals.size(): 1 or 2) over every process's owned particles, from this
+  // process's whole blocks' sums (K each, in particle_blocks() order) and its partial
+  // particles' terms (K per owned particle, terms[i K + k] for particle i; only the partial
+  // particles' entries are read).
+  virtual void sum_particles(std::span<const double> whole_sums, std::span<const double> terms,
+                             std::span<double> totals) = 0;
   // The points this process owns among those it computes (positions in its point list), and the
   // sum over every process of one term per owned point, given in that order.
   virtual const std::vector<stored_index>& owned_points() const = 0;

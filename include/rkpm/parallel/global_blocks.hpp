@@ -15,6 +15,11 @@
 //               array [owned particles' terms | terms received from each contributor, in rank
 //               order]: member_offset[k] .. member_offset[k+1]-1 are block collected[k]'s
 //   receives    for each contributing rank (rank order): how many terms it sends
+//   whole       the blocks all of whose particles this rank owns (a subset of collected): the
+//               first owned item of each and its length, and for each collected block its
+//               position in `whole` (-1 if it is not whole). A whole block's items are
+//               consecutive owned items, so its sum can be taken where its terms are made
+//               (block_sums with a process group), and no term of it is stored.
 // Every rank then has the blocks' sums (an all-gather of blocks x K values) and adds them in
 // block order. Pure C++: no MPI call. What moves per sum is K values per owned particle in a
 // block collected elsewhere (the particles of straddling blocks), plus the blocks' sums.
@@ -44,6 +49,8 @@ struct global_block_plan {
   std::vector<stored_index> collected;
   std::vector<index_t> member_offset{0};
   std::vector<index_t> member_term;
+  std::vector<index_t> whole_first, whole_size, whole_of_collected;
+  std::vector<stored_index> partial;  // owned items in blocks that are not whole, increasing
 
   index_t blocks() const { return static_cast<index_t>(collector.size()); }
 };
@@ -86,8 +93,25 @@ inline global_block_plan make_global_block_plan(const particle_partition& partit
       continue;
     }
     g.collected.push_back(static_cast<stored_index>(b));
+    bool whole = true;
     for (index_t I = b * block_size; I < last; ++I)
-      if (part[I] != rank) ++received[part[I]];
+      if (part[I] != rank) {
+        ++received[part[I]];
+        whole = false;
+      }
+    g.whole_of_collected.push_back(whole ? static_cast<index_t>(g.whole_first.size()) : -1);
+    if (whole) {
+      g.whole_first.push_back(local[b * block_size]);
+      g.whole_size.push_back(last - b * block_size);
+    }
+  }
+  for (index_t b = 0; b < blocks; ++b) {
+    const bool whole = g.collector[b] == rank && g.whole_of_collected[static_cast<std::size_t>(
+                                                     std::ranges::lower_bound(g.collected, b) - g.collected.begin())] >= 0;
+    if (whole) continue;
+    const index_t last = std::min(n, (b + 1) * block_size);
+    for (index_t I = b * block_size; I < last; ++I)
+      if (part[I] == rank) g.partial.push_back(static_cast<stored_index>(local[I]));
   }
   for (int r = 0; r < g.ranks; ++r) {
     if (!to[r].empty()) g.sends.push_back({r, std::move(to[r])});

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstring>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -143,10 +144,11 @@ class halo_exchange {
 //   global_block_sums<2> sums(comm, make_global_block_plan(partition, comm.rank(), block_sums<2>::block_size));
 //   const auto [a, b] = sums([&](index_t i, global_block_sums<2>::sums& t) { t[0] += ...; t[1] += ...; });
 // body(i, t) runs once for every owned particle (local id i, in parallel, so it must not throw,
-// as block_sums' body must not), t zeroed before it; it adds at most one term to each t[k], as
-// block_sums' bodies in the library do (a body that added twice to one sum would round
-// differently from one process's running sum). Made once per plan, collectively; each sum is
-// collective and agrees on errors first.
+// as block_sums' body must not). In a block this rank owns whole, t is the block's running sum,
+// as in block_sums; elsewhere t is zeroed before it and the term kept for the block's collector.
+// So a body adds at most one term to each t[k], as block_sums' bodies in the library do (a body
+// that added twice to one sum would round differently from one process's running sum). Made
+// once per plan, collectively; each sum is collective and agrees on errors first.
 template <int K>
 class global_block_sums {
  public:
@@ -170,7 +172,9 @@ class global_block_sums {
     comm.agree();
     index_t received = 0;
     for (const term_count& c : plan_.receives) received += c.count;
-    terms_.resize((plan_.owned + received) * K);
+    owned_terms_.resize(plan_.owned * K);
+    received_.resize(received * K);
+    whole_sums_.resize(plan_.whole_first.size() * K);
     send_.resize(plan_.sends.size());
     requests_.resize(plan_.sends.size() + plan_.receives.size());
     // Where each rank's block sums land in the all-gather: the blocks it collects, in order.
@@ -195,17 +199,31 @@ class global_block_sums {
 
   template <class Body>
   sums operator()(Body&& body) {
-    comm_.agree();
-    exec::parallel_for(plan_.owned, [&](index_t i) {
+    // A whole block is summed from zero in index order where its terms are made, as one process
+    // sums it; only the items of the other blocks keep their terms.
+    exec::parallel_for(static_cast<index_t>(plan_.whole_first.size()), [&](index_t w) {
+      sums s{};
+      for (index_t i = plan_.whole_first[w]; i < plan_.whole_first[w] + plan_.whole_size[w]; ++i) body(i, s);
+      for (int k = 0; k < K; ++k) whole_sums_[w * K + k] = s[k];
+    });
+    exec::parallel_for(static_cast<index_t>(plan_.partial.size()), [&](index_t j) {
+      const index_t i = plan_.partial[j];
       sums t{};
       body(i, t);
-      for (int k = 0; k < K; ++k) terms_[i * K + k] = t[k];
+      for (int k = 0; k < K; ++k) owned_terms_[i * K + k] = t[k];
     });
+    return combine(whole_sums_, owned_terms_);
+  }
+
+  // The totals from this rank's whole blocks' sums (K per block of plan().whole_first) and its
+  // owned items' terms (K per owned item; only those of plan().partial are read). Collective.
+  sums combine(std::span<const double> whole_sums, std::span<const double> owned_terms) {
+    comm_.agree();
     // The terms of straddling blocks to their collectors.
     std::size_t request = 0;
-    index_t at = plan_.owned * K;
+    index_t at = 0;
     for (const term_count& c : plan_.receives) {
-      MPI_Irecv(terms_.data() + at, static_cast<int>(c.count * K), MPI_DOUBLE, c.rank, detail::block_tag,
+      MPI_Irecv(received_.data() + at, static_cast<int>(c.count * K), MPI_DOUBLE, c.rank, detail::block_tag,
                 comm_.get(), &requests_[request++]);
       at += c.count * K;
     }
@@ -214,16 +232,24 @@ class global_block_sums {
       buffer.resize(plan_.sends[k].particles.size() * K);
       double* out = buffer.data();
       for (const stored_index i : plan_.sends[k].particles)
-        for (int j = 0; j < K; ++j) *out++ = terms_[i * K + j];
+        for (int j = 0; j < K; ++j) *out++ = owned_terms[i * K + j];
       MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan_.sends[k].rank, detail::block_tag,
                 comm_.get(), &requests_[request++]);
     }
     MPI_Waitall(static_cast<int>(request), requests_.data(), MPI_STATUSES_IGNORE);
     // Our blocks, each from zero in index order (as block_sums sums a block).
+    const index_t owned = plan_.owned;
     exec::parallel_for(static_cast<index_t>(plan_.collected.size()), [&](index_t k) {
+      if (const index_t w = plan_.whole_of_collected[k]; w >= 0) {
+        for (int j = 0; j < K; ++j) mine_[k * K + j] = whole_sums[w * K + j];
+        return;
+      }
       sums s{};
-      for (index_t m = plan_.member_offset[k]; m < plan_.member_offset[k + 1]; ++m)
-        for (int j = 0; j < K; ++j) s[j] += terms_[plan_.member_term[m] * K + j];
+      for (index_t m = plan_.member_offset[k]; m < plan_.member_offset[k + 1]; ++m) {
+        const index_t slot = plan_.member_term[m];
+        const double* term = slot < owned ? &owned_terms[slot * K] : &received_[(slot - owned) * K];
+        for (int j = 0; j < K; ++j) s[j] += term[j];
+      }
       for (int j = 0; j < K; ++j) mine_[k * K + j] = s[j];
     });
     // Every block's sum on every rank, added in block order.
@@ -240,7 +266,8 @@ class global_block_sums {
  private:
   communicator& comm_;
   global_block_plan plan_;
-  std::vector<double> terms_;  // [owned particles' | received], K per particle
+  std::vector<double> owned_terms_, received_;  // K per item: the owned items' (of partial blocks), received
+  std::vector<double> whole_sums_;             // K per whole block
   std::vector<std::vector<double>> send_;
   std::vector<MPI_Request> requests_;
   std::vector<int> counts_, displacements_;  // of the all-gather, in doubles

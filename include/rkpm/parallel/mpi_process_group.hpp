@@ -2,7 +2,8 @@
 // mpi_process_group: the process_group of the time step (core/process_group.hpp) on MPI, over one
 // rank's plans (docs/method.md section 9.8):
 //   forward        halo_exchange::forward along the halo plan (parallel/mpi_exchange.hpp)
-//   sum_particles  global_block_sums<K> over the particle partition, blocks of block_sums' size
+//   sum_particles  global_block_sums<K>::combine over the particle partition, blocks of
+//                  block_sums' size (the blocks a rank owns whole summed by the caller)
 //   sum_points     global_block_sums<1> over the points' owners (point_owners), blocks of the
 //                  traversal's tiles
 //   max, min, guarded, agree   the communicator's
@@ -42,17 +43,16 @@ class mpi_process_group final : public process_group {
   void forward(std::vector<vec2>& a, std::vector<vec2>& b) override { halo_.forward(a, b); }
   void forward(std::vector<double>& a) override { halo_.forward(a); }
 
-  void sum_particles(std::span<const double> terms, std::span<double> totals) override {
+  const owned_blocks& particle_blocks() const override { return blocks_; }
+  void sum_particles(std::span<const double> whole_sums, std::span<const double> terms,
+                     std::span<double> totals) override {
     if (totals.size() == 1) {
-      totals[0] = particle_sums_1_([&](index_t i, global_block_sums<1>::sums& t) { t[0] += terms[i]; })[0];
+      totals[0] = particle_sums_1_.combine(whole_sums, terms)[0];
       return;
     }
     if (totals.size() != 2)
       fail("process group: {} sums at once over the particles; 1 or 2 are available", totals.size());
-    const auto s = particle_sums_2_([&](index_t i, global_block_sums<2>::sums& t) {
-      t[0] += terms[2 * i];
-      t[1] += terms[2 * i + 1];
-    });
+    const auto s = particle_sums_2_.combine(whole_sums, terms);
     totals[0] = s[0];
     totals[1] = s[1];
   }
@@ -74,9 +74,13 @@ class mpi_process_group final : public process_group {
         particle_sums_1_(comm, make_global_block_plan(particles, comm.rank(), block_sums<1>::block_size)),
         particle_sums_2_(comm, make_global_block_plan(particles, comm.rank(), block_sums<2>::block_size)),
         point_sums_(comm, make_global_block_plan(point_owner, comm.rank(), traversal_tile_points),
-                    traversal_tile_points) {}
+                    traversal_tile_points) {
+    const global_block_plan& p = particle_sums_2_.plan();  // the blocks of 1 and 2 sums are the same
+    blocks_ = {p.whole_first, p.whole_size, p.partial};
+  }
 
   communicator& comm_;
+  owned_blocks blocks_;
   std::vector<stored_index> owned_points_;
   halo_exchange halo_;
   global_block_sums<1> particle_sums_1_;
