@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
+#include <type_traits>
 #include <vector>
 
 #include <rkpm/core/process_group.hpp>
@@ -46,7 +48,13 @@ class block_sums {
   // Calls body(I, s) for every I, s the sums of I's block; returns the K totals.
   template <class Body>
   sums operator()(Body&& body) const {
-    if (group_) return across_processes(body);
+    if (group_) {
+      // Through a plain function pointer: the loops below are compiled once per K, not once per
+      // body of every solver type (they run only on several processes).
+      using B = std::remove_reference_t<Body>;
+      return across_processes({const_cast<void*>(static_cast<const void*>(std::addressof(body))),
+                               [](void* b, index_t I, sums& s) { (*static_cast<B*>(b))(I, s); }});
+    }
     const index_t blocks = static_cast<index_t>(partial_.size());
 #pragma omp parallel for schedule(static)
     for (index_t b = 0; b < blocks; ++b) {
@@ -62,8 +70,14 @@ class block_sums {
   }
 
  private:
-  template <class Body>
-  sums across_processes(Body& body) const {
+  // A body, called through a pointer.
+  struct body_ref {
+    void* body;
+    void (*call)(void*, index_t, sums&);
+    void operator()(index_t I, sums& s) const { call(body, I, s); }
+  };
+
+  sums across_processes(body_ref body) const {
     const process_group::owned_blocks& blocks = group_->particle_blocks();
     const auto whole = static_cast<index_t>(blocks.whole_first.size());
     const auto partial = static_cast<index_t>(blocks.partial.size());
