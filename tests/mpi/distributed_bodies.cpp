@@ -22,7 +22,6 @@
 
 #include "cases/rod_on_rod.hpp"
 #include "mpi/bar_impact.hpp"
-#include "mpi/gather_owned.hpp"
 
 namespace test_mpi_distributed_bodies {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
@@ -57,13 +56,6 @@ run_options rods_options() {
   return o;
 }
 
-// What every rank has: time, step size, the energies, the largest penetration, the narrowest stretch.
-std::vector<double> totals(const solver_type& s) {
-  const energy_balance& e = s.energy();
-  return {s.time(),   s.time_step(),  e.kinetic, e.internal,         e.external,
-          e.contact,  e.constraint,   e.plastic, s.max_penetration(), s.min_stretch()};
-}
-
 void check_partition(communicator& world, const particle_partition& partition, const std::string& name) {
   CAPTURE(name);
   solver_type one(rods_model(), rods_problem(), rods_options());
@@ -74,17 +66,10 @@ void check_partition(communicator& world, const particle_partition& partition, c
     part.solver().step();
     most_contacts = std::max(most_contacts, one.last_contact().active);
   }
-  const std::vector<double> a = totals(one), b = totals(part.solver());
-  CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-  const std::vector<vec2> d = test::gather_owned(world, part.plan(), part.solver().coefficients()),
-                          v = test::gather_owned(world, part.plan(), part.solver().coefficient_velocities());
-  if (world.rank() == 0) {
-    index_t differ = 0;
-    for (index_t I = 0; I < one.model().particle_count(); ++I)
-      differ += std::memcmp(d[I].data(), one.coefficients()[I].data(), sizeof(vec2)) != 0 ||
-                std::memcmp(v[I].data(), one.coefficient_velocities()[I].data(), sizeof(vec2)) != 0;
-    CHECK(differ == 0);
-  }
+  CHECK(test::bar::same_totals(one, part.solver()));
+  const test::bar::differing_particles n = test::bar::differing(world, part, one);
+  CHECK(n.coefficients == 0);
+  CHECK(n.velocities == 0);
   // The rods did meet: contacts between them, and plastic flow.
   CHECK(most_contacts > 0);
   CHECK(one.energy().plastic > 0.0);

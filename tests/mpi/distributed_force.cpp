@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/gather.hpp>
 #include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/local_model.hpp>
@@ -31,7 +32,6 @@
 #include <rkpm/solver/point_materials.hpp>
 
 #include "mpi/bar_problem.hpp"
-#include "mpi/gather_owned.hpp"
 
 namespace test_mpi_distributed_force {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
@@ -86,7 +86,7 @@ void check_on_ranks(communicator& world, const discrete_model& m, const one_proc
                       f(local.particle_count());
     exchange.forward(x);
     points.internal_force(local, material, x, f, step(k));
-    const std::vector<vec2> gathered = test::gather_owned(world, plan, f);
+    const std::vector<vec2> gathered = rkpm::parallel::gather_owned(world, plan, f);
     if (rank == 0) {
       index_t differ = 0;
       for (index_t I = 0; I < m.particle_count(); ++I)

@@ -26,7 +26,6 @@
 #include <rkpm/solver/explicit_solver.hpp>
 
 #include "mpi/bar_impact.hpp"
-#include "mpi/gather_owned.hpp"
 
 namespace test_mpi_distributed_restart {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
@@ -41,24 +40,6 @@ constexpr std::string_view configuration = "bar impact";
 std::string bytes_of(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// Owned d and v of a run on the ranks, against a one-process solver's, on rank 0: the number of
-// particles whose values differ in any bit.
-index_t differing(communicator& world, distributed_solver<solver_type>& part, const solver_type& one) {
-  const std::vector<vec2> d = test::gather_owned(world, part.plan(), part.solver().coefficients()),
-                          v = test::gather_owned(world, part.plan(), part.solver().coefficient_velocities());
-  index_t n = 0;
-  if (world.rank() == 0)
-    for (index_t I = 0; I < one.model().particle_count(); ++I)
-      n += std::memcmp(d[I].data(), one.coefficients()[I].data(), sizeof(vec2)) != 0 ||
-           std::memcmp(v[I].data(), one.coefficient_velocities()[I].data(), sizeof(vec2)) != 0;
-  return n;
-}
-
-bool same_totals(const solver_type& a, const solver_type& b) {
-  const std::vector<double> x = test::bar::totals(a), y = test::bar::totals(b);
-  return std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
 }
 
 }  // namespace
@@ -92,8 +73,10 @@ TEST_CASE("a checkpoint from P ranks is one process's file, and continues on P r
     read_checkpoint(again, from_ranks, configuration);
     CHECK(again.solver().steps() == 12);
     for (int n = 0; n < 12; ++n) again.solver().step();
-    CHECK(differing(world, again, whole) == 0);
-    CHECK(same_totals(again.solver(), whole));
+    const test::bar::differing_particles n = test::bar::differing(world, again, whole);
+    CHECK(n.coefficients == 0);
+    CHECK(n.velocities == 0);
+    CHECK(test::bar::same_totals(again.solver(), whole));
   }
   {
     solver_type alone(test::bar::model(), test::bar::impact(), test::bar::options());
@@ -103,7 +86,7 @@ TEST_CASE("a checkpoint from P ranks is one process's file, and continues on P r
     for (index_t I = 0; I < m.particle_count(); ++I)
       n += std::memcmp(alone.coefficients()[I].data(), whole.coefficients()[I].data(), sizeof(vec2)) != 0;
     CHECK(n == 0);
-    CHECK(same_totals(alone, whole));
+    CHECK(test::bar::same_totals(alone, whole));
   }
   // Another problem's checkpoint: every rank refuses it with the same line.
   {

@@ -23,7 +23,6 @@
 #include <rkpm/parallel/partition.hpp>
 
 #include "mpi/bar_impact.hpp"
-#include "mpi/gather_owned.hpp"
 
 namespace test_mpi_distributed_step {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
@@ -35,13 +34,9 @@ namespace {
 using test::bar::solver_type;
 using test::bar::impact;
 using test::bar::options;
-using test::bar::totals;
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
-
-struct gathered {
-  std::vector<vec2> d, v;
-};
+using test::bar::differing;
+using test::bar::differing_particles;
+using test::bar::same_totals;
 
 void check_partition(communicator& world, const particle_partition& partition, const std::string& name,
                      int steps, int every) {
@@ -53,21 +48,10 @@ void check_partition(communicator& world, const particle_partition& partition, c
     part.solver().step();
     if (n % every != 0 && n != steps) continue;
     CAPTURE(n);
-    const std::vector<double> a = totals(one), b = totals(part.solver());
-    index_t differ = 0;
-    for (std::size_t k = 0; k < a.size(); ++k) differ += !same_bits(a[k], b[k]);
-    CHECK(differ == 0);
-    const gathered g{test::gather_owned(world, part.plan(), part.solver().coefficients()),
-                     test::gather_owned(world, part.plan(), part.solver().coefficient_velocities())};
-    if (world.rank() == 0) {
-      index_t d_differ = 0, v_differ = 0;
-      for (index_t I = 0; I < one.model().particle_count(); ++I) {
-        d_differ += std::memcmp(g.d[I].data(), one.coefficients()[I].data(), sizeof(vec2)) != 0;
-        v_differ += std::memcmp(g.v[I].data(), one.coefficient_velocities()[I].data(), sizeof(vec2)) != 0;
-      }
-      CHECK(d_differ == 0);
-      CHECK(v_differ == 0);
-    }
+    CHECK(same_totals(one, part.solver()));
+    const differing_particles differ = differing(world, part, one);
+    CHECK(differ.coefficients == 0);
+    CHECK(differ.velocities == 0);
   }
   // The run did what the test is for: contact, plastic flow and re-estimated steps.
   CHECK(one.last_contact().active > 0);

@@ -22,12 +22,12 @@
 
 #include <rkpm/core/block_sums.hpp>
 #include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/gather.hpp>
 #include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/mpi_exchange.hpp>
 #include <rkpm/parallel/partition.hpp>
 
-#include "mpi/gather_owned.hpp"
 #include "mpi/grid_problem.hpp"
 
 namespace test_mpi_same_bits {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -85,7 +85,7 @@ distributed_force force_on_ranks(communicator& world, const test::grid_problem& 
   }
   out.ghosts_everywhere = static_cast<index_t>(plan.ghosts.size());
   MPI_Allreduce(MPI_IN_PLACE, &out.ghosts_everywhere, 1, MPI_INT64_T, MPI_SUM, world.get());
-  out.gathered = test::gather_owned(world, plan, internal_force(local, weight, d));
+  out.gathered = rkpm::parallel::gather_owned(world, plan, internal_force(local, weight, d));
   return out;
 }
 

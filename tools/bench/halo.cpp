@@ -178,8 +178,8 @@ class pinned_to_core {
   bool pinned_ = false;
 };
 
-struct force_loop_times {
-  double one_thread, two_threads, ranks;  // s per evaluation, medians over the rounds
+struct round_times {
+  double one_thread, two_threads, ranks;  // s per evaluation or step, medians over the rounds
   // The ratios of each round's timings (one process on 1 thread, on 2, over P processes), their
   // medians: a burst of load on a noisy host moves these far less than the times.
   double ranks_over_one, ranks_over_two;
@@ -189,7 +189,7 @@ struct force_loop_times {
 // Each evaluation squashes a little further than the last, from fresh states for each of the
 // three, so all three do the same work.
 template <class Problem>
-force_loop_times time_force_loop(parallel::communicator& comm, const options& o, const Problem& problem,
+round_times time_force_loop(parallel::communicator& comm, const options& o, const Problem& problem,
                                  const discrete_model& m, const parallel::particle_partition& part,
                                  const parallel::halo_plan& plan) {
   using G = geometry::axisymmetric;
@@ -268,7 +268,7 @@ force_loop_times time_force_loop(parallel::communicator& comm, const options& o,
 // each, the P processes' the slowest rank's. The solvers start from the same state: the bar at
 // the wall, t = 0.
 template <class Problem>
-force_loop_times time_whole_step(parallel::communicator& comm, const options& o, const Problem& problem,
+round_times time_whole_step(parallel::communicator& comm, const options& o, const Problem& problem,
                                  const discrete_model& m, const parallel::particle_partition& part) {
   using solver_type = solver_for<bench::wall_method<quadrature::q2>>;
   std::optional<solver_type> one;
@@ -339,8 +339,8 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
     MPI_Allreduce(&x, &sum, 1, MPI_DOUBLE, MPI_SUM, comm.get());
   });
 
-  const force_loop_times loop = time_force_loop(comm, o, problem, m, part, plan);
-  const std::optional<force_loop_times> whole =
+  const round_times loop = time_force_loop(comm, o, problem, m, part, plan);
+  const std::optional<round_times> whole =
       o.steps > 0 ? std::optional(time_whole_step(comm, o, problem, m, part)) : std::nullopt;
 
   if (comm.rank() != 0) return;

@@ -93,7 +93,7 @@ class distributed_solver {
       const std::vector<boundary_chain>& surfaces =
           reads_surfaces(prob.contact) ? whole.bodies.surface("contact on several processes") : none;
       const std::vector<stored_index> shared =
-          parallel::shared_particles(whole.at_particles, prob.constraints, prob.slave_particles, surfaces);
+          shared_particles(whole.at_particles, prob.constraints, prob.slave_particles, surfaces);
       plan_ = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles, shared);
       shared_ = static_cast<index_t>(shared.size());
       local = local_model(whole, plan_);
@@ -117,7 +117,7 @@ class distributed_solver {
   mpi_process_group& group() { return *group_; }
   // The particles every rank holds and corrects alike: the constrained and slave particles and
   // their rows' columns.
-  index_t shared_particles() const { return shared_; }
+  index_t shared_count() const { return shared_; }
 
  private:
   halo_plan plan_;
