@@ -28,6 +28,9 @@
 #include "memory_estimate.hpp"
 #include "methods.hpp"
 #include "outcome.hpp"
+#ifdef RKPM_RUNNER_MPI
+#include "ranks.hpp"
+#endif
 #include "request.hpp"
 #include "run_record.hpp"
 #include "simulate.hpp"
@@ -51,17 +54,26 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   options.end_time = Case::end_time(p);
   options.max_steps = r.max_steps;
   const rkpm::method_names method{r.kernel, r.correction, r.quadrature};
-  const std::function<Solver()> make = [&] {
+  const std::function<problem<M, Ct>()> make_problem = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
     pr.contact.set_enforcement(contact::enforcement::chosen::named(r.contact, penalty_stiffness<Case>(p)));
     warn_if_too_large(pr.particles.size(), quadrature_point_count(r.quadrature, pr.mesh.cells(),
                                                                   static_cast<index_t>(pr.mesh.node.size())));
-    return make_solver<G>(method, std::move(pr), options);
+    return pr;
   };
-  return simulate<Case, Solver>(r, p,
-                                {r.kernel, r.correction, r.quadrature, G::name, r.contact,
-                                 method.configuration_name<G, M, Ct>()},
-                                make, restart);
+  const run_policies policies{r.kernel, r.correction, r.quadrature, G::name, r.contact,
+                              method.configuration_name<G, M, Ct>()};
+  if (r.processes > 1) {
+#ifdef RKPM_RUNNER_MPI
+    return run_on_ranks<Case, Solver>(r, p, policies, make_problem, method, options, restart);
+#else
+    fail("rkpm_run runs on {} processes, but it was built without MPI: apt-get install libopenmpi-dev openmpi-bin "
+         "libmetis-dev, then build it again",
+         r.processes);
+#endif
+  }
+  const std::function<Solver()> make = [&] { return make_solver<G>(method, make_problem(), options); };
+  return simulate<Case, Solver>(r, p, policies, make, restart);
 }
 
 // Runs the case named by the request, with its parameters from --set and --end-time (the

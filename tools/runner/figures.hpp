@@ -57,10 +57,13 @@ class figure_recorder {
   figure_recorder(std::filesystem::path dir, const typename Case::parameters& p)
       : dir_(std::move(dir)), params_(p), times_(shape_times<Case>(p)) {}
 
+  // Whether observe() at time t would record a shape (last: the run's end).
+  bool due(double t, bool last) const { return next_ < times_.size() && (t >= times_[next_].time * (1.0 - 1e-9) || last); }
+
   template <class Solver>
   void observe(const Solver& s) {
     const bool last = s.time() >= s.options().end_time * (1.0 - 1e-12);
-    while (next_ < times_.size() && (s.time() >= times_[next_].time * (1.0 - 1e-9) || last)) {
+    while (due(s.time(), last)) {
       // A shape time beyond a run that stopped early is not drawn.
       if (!(last && times_[next_].time > s.time() * (1.0 + 1e-9))) record_shape(s, times_[next_].label);
       ++next_;

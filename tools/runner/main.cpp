@@ -1,11 +1,20 @@
 // rkpm_run: runs one of the paper's cases with the policies chosen on the command line, or
 // the whole paper (`rkpm_run paper`). See `rkpm_run --help`.
+// Under mpiexec (`mpiexec -np P rkpm_run CASE ...`, or `tools/rkpm run CASE --ranks P`) the
+// case runs on the P processes, each stepping a part (ranks.hpp); rank 0 writes the results
+// and prints. Started otherwise, it is one process and does not start MPI.
 #include <cstdio>
+#include <algorithm>
+#include <cstdlib>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
 #ifdef _OPENMP
 #include <omp.h>
+#endif
+#ifdef RKPM_RUNNER_MPI
+#include <rkpm/parallel/communicator.hpp>
 #endif
 
 #include <rkpm/core/error.hpp>
@@ -16,29 +25,73 @@
 #include "run_case_file.hpp"
 #include "request.hpp"
 
+namespace {
+
+// The processes mpiexec started this one among (its environment: Open MPI's, PMIx's, MPICH's), or 1.
+int launched_processes() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"})
+    if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
+  return 1;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace rkpm::runner;
+  const int processes = launched_processes();
+  int rank = 0;
+#ifdef RKPM_RUNNER_MPI
+  // MPI only under mpiexec: a run started alone needs none of it.
+  std::optional<rkpm::parallel::mpi_session> session;
+  if (processes > 1) {
+    session.emplace(argc, argv);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  }
+#endif
+  bool parsed = false;
   try {
     const command_line cl = parse_command_line(argc, argv);
+    parsed = true;
     if (cl.what == command_line::action::exit) return cl.exit_code;
-    if (cl.what == command_line::action::paper) return run_paper(cl.paper);
-    const run_request& r = cl.run;
+    if (cl.what == command_line::action::paper) {
+      if (processes > 1) rkpm::fail("rkpm_run paper runs on one process; run single cases on several (--ranks)");
+      return run_paper(cl.paper);
+    }
+    run_request r = cl.run;
+    r.processes = processes;
+    if (r.ranks > 0 && r.ranks != processes)
+      rkpm::fail("--ranks {}: this is {} process{}; start it with mpiexec -np {} (tools/rkpm run CASE --ranks {} does)",
+                 r.ranks, processes, processes == 1 ? "" : "es", r.ranks, r.ranks);
 #ifdef _OPENMP
     if (r.threads > 0) omp_set_num_threads(r.threads);
 #endif
     stop_between_steps_on_interrupt();
     const run_outcome out = r.case_file.empty() ? run_named_case(r) : run_case_file(r);
+    if (rank != 0) return 0;
     const auto& s = out.summary;
-    fmt::print("{} ({}-{}-{}-{}): {} steps in {:.2f} s (set-up {:.2f} s), energy balance error {:.2e}\n",
+    fmt::print("{} ({}-{}-{}-{}): {} steps in {:.2f} s (set-up {:.2f} s){}, energy balance error {:.2e}\n",
                s.at("case").get<std::string>(), s.at("kernel").get<std::string>(),
                s.at("correction").get<std::string>(), s.at("quadrature").get<std::string>(),
                s.at("contact").get<std::string>(), s.at("steps").get<long>(), s.at("wall_s").get<double>(),
-               s.at("setup_s").get<double>(), s.at("energy").at("balance_error").get<double>());
+               s.at("setup_s").get<double>(), processes > 1 ? fmt::format(" on {} processes", processes) : "",
+               s.at("energy").at("balance_error").get<double>());
     for (const auto& [k, v] : s.at("results").items()) fmt::print("  {:<34} {:.6g}\n", k, v.get<double>());
     fmt::print("results in {}\n", out.directory);
     return 0;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "rkpm_run: {}\n", e.what());
+    // On several processes the command line's errors and the errors the ranks agreed on
+    // (parallel::rank_failure) are every rank's: rank 0 says them. Another rank's own error may
+    // leave the others waiting: it is said with the rank, and MPI_Abort ends every process.
+    if (rank == 0) {
+      fmt::print(stderr, "rkpm_run: {}\n", e.what());
+      return 1;
+    }
+#ifdef RKPM_RUNNER_MPI
+    if (parsed && !dynamic_cast<const rkpm::parallel::rank_failure*>(&e)) {
+      fmt::print(stderr, "rkpm_run (rank {} of {}): {}\n", rank, processes, e.what());
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+#endif
     return 1;
   }
 }

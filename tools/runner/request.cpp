@@ -74,6 +74,10 @@ void add_run_options(CLI::App* sub, run_request& r) {
       ->type_name("SECONDS")
       ->check(positive_seconds);
   sub->add_option("--threads", r.threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  sub->add_option("--ranks", r.ranks,
+                  "the processes to run on: tools/rkpm run starts them (mpiexec -np N); rkpm_run itself checks "
+                  "that mpiexec started as many")
+      ->check(CLI::Range(1, 1 << 20));
   sub->add_option("--max-steps", r.max_steps,
                   "refuse a run estimated to need more steps (a wrong constant, not a long run)")
       ->check(CLI::Range(1L, 1'000'000'000'000L))

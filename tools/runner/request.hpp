@@ -27,7 +27,9 @@ struct run_request {
   std::string contact{paper_enforcement::name};
   int resolution = 1;
   std::optional<double> end_time;  // s; overrides the case's
-  int threads = 0;                 // 0: OpenMP's default
+  int threads = 0;                 // 0: OpenMP's default (per process)
+  int processes = 1;               // the processes mpiexec started (main.cpp), each stepping a part (ranks.hpp)
+  int ranks = 0;                   // --ranks: the processes the command line expects (0: any)
   long max_steps = 50'000'000;     // run_options::max_steps: longer runs are refused before they start
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;

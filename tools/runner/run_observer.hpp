@@ -89,6 +89,23 @@ class run_observer {
       throw stop_requested{t, static_cast<long>(s.steps())};
   }
 
+  // Whether the call at time t would read the solver beyond its time and step (a history row, a
+  // snapshot, a shape, a checkpoint, an interrupt, a caller's hook). A run on several processes
+  // brings rank 0's whole solver up to date only for those calls (ranks.hpp) and makes the
+  // others through pass().
+  bool needs_state(double t, double end_time) const {
+    if (skip_next_) return false;
+    const bool last = t >= end_time * (1.0 - 1e-12);
+    return last || t >= record_.next_history || t >= record_.next_snapshot || figures_.due(t, last) ||
+           (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint) || pending_interrupt().load() != 0 ||
+           static_cast<bool>(hooks_.observe);
+  }
+  // The call when needs_state(t, end_time) is false: the progress line only.
+  void pass(double t, double end_time, long steps) {
+    if (std::exchange(skip_next_, false)) return;
+    if (!quiet_) progress_.update(t, end_time, steps);
+  }
+
   // Writes checkpoint_<step>.rkpmcp for the solver's current state (once per step); returns its path.
   std::filesystem::path write_checkpoint_now(const Solver& s) {
     if (!last_checkpoint_.empty() && last_checkpoint_.filename() == io::checkpoint_file_name(s.steps()))

@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -34,6 +35,7 @@
 #include "case_traits.hpp"
 #include "json.hpp"
 #include "outcome.hpp"
+#include "process_steps.hpp"
 #include "request.hpp"
 #include "run_observer.hpp"
 #include "run_record.hpp"
@@ -87,9 +89,12 @@ void final_plastic_strain_png(const std::filesystem::path& dir, const std::strin
                  .label = "equivalent plastic strain"});
 }
 
+// steps: null on one process; on several, rank 0's view of the divided run (process_steps.hpp),
+// whose make() builds the whole solver that rank 0 observes.
 template <class Case, class Solver>
 run_outcome simulate(const run_request& request, const typename Case::parameters& params, const run_policies& method,
-                     const std::function<Solver()>& make, const std::optional<restart_point>& restart = {}) {
+                     const std::function<Solver()>& make, const std::optional<restart_point>& restart = {},
+                     process_steps<Solver>* steps = nullptr) {
   namespace fs = std::filesystem;
   run_outcome outcome;
   outcome.directory = request.output_directory();
@@ -111,7 +116,10 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   try {
     holder.emplace(make());
     if (restart) {
-      read_checkpoint(*holder, restart->file, method.configuration);
+      if (steps)
+        steps->read_checkpoint(restart->file, &*holder);
+      else
+        read_checkpoint(*holder, restart->file, method.configuration);
       record = record_from_json(restart->description.at("record"));
       record.restarts.push_back({{"checkpoint", fs::absolute(restart->file).string()},
                                  {"time_s", holder->time()}, {"step", holder->steps()}});
@@ -127,44 +135,61 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     throw;
   }
   Solver& s = *holder;
-  if (restart && s.time() >= s.options().end_time * (1.0 - 1e-12))
-    fail("--restart {}: the checkpoint is at t = {:.6g} s, the end time already; give a later --end-time to "
-         "continue it",
-         restart->file.string(), s.time());
-  const double setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double end_time = s.options().end_time;
-  if (!restart) {
-    const auto [rows, snapshots] = output_counts<Case>(params);
-    record.history_interval = end_time / rows;
-    record.snapshot_interval = end_time / snapshots;
-    record.setup_s = setup_s;
-  }
-  // A new interval (a first run, or a restart asking for another) starts at the next multiple
-  // after now; a restart with the same interval keeps the checkpoint's clock, so that it writes
-  // the uninterrupted run's checkpoints.
-  if (request.checkpoint_interval && *request.checkpoint_interval != record.checkpoint_interval) {
-    record.checkpoint_interval = *request.checkpoint_interval;
-    record.next_checkpoint = std::floor(s.time() / record.checkpoint_interval) * record.checkpoint_interval;
-    while (record.next_checkpoint <= s.time()) record.next_checkpoint += record.checkpoint_interval;
-  }
-
-  run_observer<Case, Solver> observe(dir, params, s, std::move(record), identity,
-                                     method.configuration, request.quiet,
-                                     io::vtu_format(io::vtu_encoding::appended, request.vtu_compression), request.hooks);
-  if (restart) observe.resume(fs::absolute(restart->file).parent_path());
-  summary["status"] = "running";  // what a killed run's folder says
-  write_json(dir / "summary.json", summary);
-  std::string error;
-  bool stopped = false;
+  std::optional<run_observer<Case, Solver>> observer;
   try {
-    s.run(observe, 1);
+    if (restart && s.time() >= s.options().end_time * (1.0 - 1e-12))
+      fail("--restart {}: the checkpoint is at t = {:.6g} s, the end time already; give a later --end-time to "
+           "continue it",
+           restart->file.string(), s.time());
+    const double setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double end_time = s.options().end_time;
+    if (!restart) {
+      const auto [rows, snapshots] = output_counts<Case>(params);
+      record.history_interval = end_time / rows;
+      record.snapshot_interval = end_time / snapshots;
+      record.setup_s = setup_s;
+    }
+    // A new interval (a first run, or a restart asking for another) starts at the next multiple
+    // after now; a restart with the same interval keeps the checkpoint's clock, so that it writes
+    // the uninterrupted run's checkpoints.
+    if (request.checkpoint_interval && *request.checkpoint_interval != record.checkpoint_interval) {
+      record.checkpoint_interval = *request.checkpoint_interval;
+      record.next_checkpoint = std::floor(s.time() / record.checkpoint_interval) * record.checkpoint_interval;
+      while (record.next_checkpoint <= s.time()) record.next_checkpoint += record.checkpoint_interval;
+    }
+    observer.emplace(dir, params, s, std::move(record), identity, method.configuration, request.quiet,
+                     io::vtu_format(io::vtu_encoding::appended, request.vtu_compression), request.hooks);
+    if (restart) observer->resume(fs::absolute(restart->file).parent_path());
+    summary["status"] = "running";  // what a killed run's folder says
+    write_json(dir / "summary.json", summary);
+  } catch (const std::exception& e) {
+    if (steps) steps->abandon(e.what());  // the other ranks wait for the run: every rank throws
+    throw;
+  }
+  run_observer<Case, Solver>& observe = *observer;
+  std::string error;
+  bool stopped = false, settled = false;
+  // On several processes: the whole solver brought up to date after the run, ended or failed.
+  const auto settle = [&] {
+    if (steps && !std::exchange(settled, true)) steps->settle(&s);
+  };
+  try {
+    if (steps)
+      steps->run(
+          &s, [&](double t, double end) { return observe.needs_state(t, end); },
+          [&](double t, double end, long n) { observe.pass(t, end, n); }, [&](const Solver& at) { observe(at); });
+    else
+      s.run(observe, 1);
+    settle();
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
   } catch (const stop_requested&) {
     stopped = true;  // the caller's observer asked (run_hooks.hpp): not an error
   } catch (const std::exception& e) {
     error = e.what();
+    settle();
     // Stopped between steps (the step limit, Ctrl-C): the state is whole and can be continued.
-    if (s.between_steps() && (observe.record().checkpoint_interval > 0.0 || pending_interrupt().load() != 0)) {
+    const bool whole = steps ? steps->between_steps() : s.between_steps();
+    if (whole && (observe.record().checkpoint_interval > 0.0 || pending_interrupt().load() != 0)) {
       try {
         observe.write_checkpoint_now(s);
       } catch (const std::exception& e2) {
@@ -183,6 +208,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   summary["dt_max_s"] = s.max_time_step();
   summary["end_time_s"] = s.time();
   summary["threads"] = active_threads();
+  summary["processes"] = steps ? steps->processes() : 1;
   summary["wall_s"] = observe.wall_s();
   summary["setup_s"] = observe.record().setup_s;
   if (!observe.record().restarts.empty()) summary["restarts"] = observe.record().restarts;

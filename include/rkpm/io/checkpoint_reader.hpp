@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -46,13 +47,29 @@ class checkpoint_reader {
     std::ifstream in(path, std::ios::binary);
     if (!in) fail("cannot read checkpoint '{}': the file does not exist or is not readable", name_);
     bytes_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    check_all();
+  }
+  // A checkpoint's bytes held in memory (checkpoint_writer::close), called `name` in messages.
+  checkpoint_reader(std::string bytes, std::string name) : name_(std::move(name)), bytes_(std::move(bytes)) {
+    check_all();
+  }
+  // ... and checks its identity against `expected`.
+  checkpoint_reader(const std::filesystem::path& path, const checkpoint_identity& expected) : checkpoint_reader(path) {
+    check_identity(expected);
+  }
+  checkpoint_reader(std::string bytes, std::string name, const checkpoint_identity& expected)
+      : checkpoint_reader(std::move(bytes), std::move(name)) {
+    check_identity(expected);
+  }
+
+ private:
+  void check_all() {
     const std::uint64_t table = check_prefix();
     read_table(table);
     check_parts();
     read_header();
   }
-  // ... and checks its identity against `expected`.
-  checkpoint_reader(const std::filesystem::path& path, const checkpoint_identity& expected) : checkpoint_reader(path) {
+  void check_identity(const checkpoint_identity& expected) const {
     const checkpoint_identity& id = header_.identity;
     if (id.configuration != expected.configuration)
       fail("checkpoint '{}' is of configuration '{}', this solver is '{}': restart with the same policies",
@@ -66,6 +83,7 @@ class checkpoint_reader {
              name_, have[k], what[k], want[k]);
   }
 
+ public:
   const checkpoint_header& header() const { return header_; }
   // Reads the whole model's sections into a rank's part (null: the arrays as they are).
   void set_layout(const checkpoint_layout* layout) { layout_ = layout; }
@@ -129,7 +147,7 @@ class checkpoint_reader {
   };
   // The fields of a checked part [at, end): one that would pass `end` makes get() false.
   struct fields {
-    const std::vector<char>& bytes;
+    const std::string& bytes;
     std::size_t at, end;
     template <class T>
     bool get(T& v) {
@@ -254,7 +272,7 @@ class checkpoint_reader {
   }
 
   std::string name_;
-  std::vector<char> bytes_;
+  std::string bytes_;
   checkpoint_header header_;
   std::uint64_t header_bytes_ = 0;
   std::uint32_t header_crc_ = 0;

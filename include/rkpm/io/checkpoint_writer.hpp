@@ -14,6 +14,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <rkpm/core/bitwise.hpp>
@@ -68,6 +69,13 @@ class checkpoint_writer {
   // Appends the table, fills in the prefix and puts the file in place (temporary file and rename).
   void commit() {
     if (layout_ && !layout_->writes()) return;
+    replace_file(path_, close());
+  }
+
+  // The file's bytes, complete (table and prefix added), for a caller that keeps them in memory
+  // (parallel::mirror_state); empty on a rank of several that does not write. Ends the writer.
+  std::string close() {
+    if (layout_ && !layout_->writes()) return {};
     std::string table;
     put(table, header_bytes_);
     put(table, crc32_of(bytes_.data() + checkpoint_prefix_bytes, header_bytes_));
@@ -88,7 +96,7 @@ class checkpoint_writer {
     put(prefix, table_offset);
     put(prefix, crc32_of(prefix.data(), prefix.size()));
     bytes_.replace(0, checkpoint_prefix_bytes, prefix);
-    replace_file(path_, bytes_);
+    return std::move(bytes_);
   }
 
  private:

@@ -5,6 +5,8 @@
 //   write_checkpoint(run, path, configuration)   collective; rank 0 writes the file
 //   read_checkpoint(run, path, configuration)    collective; every rank reads the file and
 //                                                takes its particles' and points' values
+//   mirror_state(run, whole, configuration)      collective; rank 0's one-process solver of the
+//                                                whole model takes the run's state
 // The sections of the whole model's particles and points are named below (mpi_checkpoint_layout):
 // each rank gives its owned particles' and owned points' values (point owners, parallel/
 // global_blocks.hpp), gathered by global index on rank 0. The other sections (time, energies,
@@ -136,6 +138,32 @@ void read_checkpoint(distributed_solver<Solver>& run, const std::filesystem::pat
            "density or particle placement)",
            r.file());
     r.part(run.solver());
+    r.finish();
+  });
+  run.group().agree();
+}
+
+// Collective: puts the run's whole state into `whole`, a one-process solver of the whole model
+// on rank 0 (null on the other ranks), through a checkpoint held in memory: afterwards it is the
+// solver one process would have at this step, bit for bit, and reads and writes as one (the
+// runner observes it for its history rows, snapshots and checkpoints, tools/runner/ranks.hpp).
+template <class Solver>
+void mirror_state(distributed_solver<Solver>& run, Solver* whole, std::string_view configuration) {
+  mpi_checkpoint_layout layout(run.group(), run.solver().model());
+  io::checkpoint_writer w({}, whole_identity(run, configuration), {}, &layout);
+  w.array("solver.mass", run.solver().mass());
+  w.part(run.solver());
+  run.group().guarded([&] {
+    std::string bytes = w.close();
+    if (run.group().rank() != 0) return;
+    if (!whole) fail("mirror_state: rank 0 has no whole solver to put the run's state into");
+    io::checkpoint_reader r(std::move(bytes), "the state of the run on several processes",
+                            checkpoint_identity_of(*whole, configuration));
+    std::vector<double> mass(whole->mass().size());
+    r.array("solver.mass", mass);
+    if (mass != whole->mass())
+      fail("mirror_state: the whole solver's particle masses differ from the run's; build it from the same problem");
+    r.part(*whole);
     r.finish();
   });
   run.group().agree();

@@ -1,0 +1,39 @@
+#pragma once
+// process_steps<Solver>: how simulate() steps the solver it observes when the run is divided over
+// several processes (rkpm_run under mpiexec; ranks.hpp implements it with MPI). Rank 0 observes
+// a one-process solver of the whole model, `whole`, which never steps itself: the ranks step
+// their parts, and this object puts their state into `whole` (parallel::mirror_state) at the
+// calls where the observer reads more than the time and step. `whole` is then the solver one
+// process would have, bit for bit, so the observer writes the one-process files unchanged. On
+// one process simulate() steps the solver itself and uses no such object.
+// Every call is collective: the other ranks make the same calls with no `whole` (follow_run in
+// ranks.hpp), so an error on any rank is thrown on every rank alike.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace rkpm::runner {
+
+template <class Solver>
+class process_steps {
+ public:
+  virtual ~process_steps() = default;
+  virtual int processes() const = 0;
+
+  // Every rank reads the checkpoint, then `whole` takes the state.
+  virtual void read_checkpoint(const std::filesystem::path& file, Solver* whole) = 0;
+  // Rank 0's set-up before the run failed with `message`: every rank throws it.
+  virtual void abandon(const std::string& message) = 0;
+  // Steps to the end. At each observation rank 0's needs(time, end time) says whether `whole` is
+  // brought up to date and observe(whole) called, or pass(time, end time, steps) is called alone.
+  virtual void run(Solver* whole, const std::function<bool(double, double)>& needs,
+                   const std::function<void(double, double, long)>& pass,
+                   const std::function<void(const Solver&)>& observe) = 0;
+  // After the run, ended or failed: whether the parts stopped between steps (their state whole),
+  // and, when they did, `whole` brought up to date.
+  virtual bool between_steps() const = 0;
+  virtual void settle(Solver* whole) = 0;
+};
+
+}  // namespace rkpm::runner

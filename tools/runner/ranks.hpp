@@ -1,0 +1,151 @@
+#pragma once
+// A case run on the processes mpiexec started (rkpm_run under `mpiexec -np P`, or
+// `tools/rkpm run CASE --ranks P`; docs/method.md section 9.8). Every rank builds the whole
+// problem and model alike, METIS divides the particles, and each rank steps its part
+// (parallel::distributed_solver). Rank 0 runs simulate() as one process does, on a whole solver
+// that never steps itself: rank_steps puts the parts' state into it (parallel::mirror_state)
+// at each call where the observer reads more than the time, so summary.json, history.csv, the
+// snapshots, the figures and the checkpoints are the files one process writes, bit for bit.
+// The other ranks follow the same collective calls (follow_run) and write nothing.
+// Costs of this first form: rank 0 holds the whole model beside its part, and a history row,
+// snapshot or checkpoint gathers the whole state there.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <mpi.h>
+
+#include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/distributed_checkpoint.hpp>
+#include <rkpm/parallel/distributed_solver.hpp>
+#include <rkpm/parallel/partition.hpp>
+#include <rkpm/solver/make_model.hpp>
+
+#include "process_steps.hpp"
+#include "run_record.hpp"
+#include "simulate.hpp"
+
+namespace rkpm::runner {
+
+template <class Solver>
+class rank_steps final : public process_steps<Solver> {
+ public:
+  using problem_type = problem<typename Solver::material_type, typename Solver::contact_type>;
+
+  rank_steps(parallel::communicator& comm, std::string configuration)
+      : comm_(comm), configuration_(std::move(configuration)) {}
+
+  // Collective: builds the problem and the whole model on every rank, divides the particles, and
+  // returns on rank 0 the whole solver it observes (empty elsewhere).
+  std::optional<Solver> build(const std::function<problem_type()>& make_problem, const method_names& method,
+                              const run_options& options) {
+    using G = typename Solver::geometry_type;
+    std::optional<problem_type> prob;
+    discrete_model model;
+    comm_.guarded([&] {
+      prob.emplace(make_problem());
+      model = make_model<G>(method, prob->particles, prob->mesh, options.max_moment_condition);
+      if (model.particle_count() < comm_.size())
+        fail("{} processes for {} particles: give at most one process per particle (--ranks)", comm_.size(),
+             model.particle_count());
+    });
+    comm_.agree();
+    std::optional<Solver> whole;
+    comm_.guarded([&] {
+      if (comm_.rank() != 0) return;
+      const model_factory factory = [method](particle_set<2> particles, background_mesh mesh, double max_condition) {
+        return make_model<G>(method, std::move(particles), std::move(mesh), max_condition);
+      };
+      whole.emplace(model, *prob, options, factory);
+    });
+    comm_.agree();
+    const parallel::particle_partition partition =
+        parallel::partition_particles(model.at_points, model.particle_count(), comm_.size());
+    run_.emplace(comm_, std::move(model), std::move(*prob), options, partition);
+    return whole;
+  }
+
+  int processes() const override { return comm_.size(); }
+
+  void read_checkpoint(const std::filesystem::path& file, Solver* whole) override {
+    parallel::read_checkpoint(*run_, file, configuration_);
+    parallel::mirror_state(*run_, whole, configuration_);
+  }
+
+  void abandon(const std::string& message) override {
+    comm_.guarded([&] { fail("{}", message); });
+    comm_.agree();
+  }
+
+  void run(Solver* whole, const std::function<bool(double, double)>& needs,
+           const std::function<void(double, double, long)>& pass,
+           const std::function<void(const Solver&)>& observe) override {
+    comm_.agree();  // rank 0's set-up (abandon)
+    started_ = true;
+    const bool root = comm_.rank() == 0;
+    Solver& part = run_->solver();
+    const double end = part.options().end_time;
+    part.run(
+        [&](const Solver& at) {
+          char wanted = root && needs(at.time(), end) ? 1 : 0;
+          MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
+          if (!wanted) {
+            if (root) pass(at.time(), end, static_cast<long>(at.steps()));
+            return;
+          }
+          parallel::mirror_state(*run_, whole, configuration_);
+          comm_.guarded([&] {
+            if (root) observe(*whole);
+          });
+          comm_.agree();
+        },
+        1);
+  }
+
+  bool started() const { return started_; }
+  bool between_steps() const override { return run_->solver().between_steps(); }
+  void settle(Solver* whole) override {
+    if (between_steps()) parallel::mirror_state(*run_, whole, configuration_);
+  }
+
+ private:
+  parallel::communicator& comm_;
+  std::string configuration_;
+  std::optional<parallel::distributed_solver<Solver>> run_;
+  bool started_ = false;
+};
+
+// The ranks other than 0: the calls simulate() makes on rank 0, with no whole solver and no files.
+template <class Solver>
+void follow_run(rank_steps<Solver>& steps, const std::optional<restart_point>& restart) {
+  if (restart) steps.read_checkpoint(restart->file, nullptr);
+  bool settled = false;
+  try {
+    steps.run(nullptr, {}, {}, {});
+    settled = true;
+    steps.settle(nullptr);
+  } catch (...) {
+    if (steps.started() && !settled) steps.settle(nullptr);
+    throw;
+  }
+}
+
+// run_with's form on several processes (dispatch.hpp): simulate() on rank 0, follow_run elsewhere.
+template <class Case, class Solver>
+run_outcome run_on_ranks(const run_request& r, const typename Case::parameters& p, const run_policies& policies,
+                         const std::function<typename rank_steps<Solver>::problem_type()>& make_problem,
+                         const method_names& method, const run_options& options,
+                         const std::optional<restart_point>& restart) {
+  parallel::communicator world;
+  rank_steps<Solver> steps(world, policies.configuration);
+  if (world.rank() == 0)
+    return simulate<Case, Solver>(
+        r, p, policies, [&] { return std::move(*steps.build(make_problem, method, options)); }, restart, &steps);
+  steps.build(make_problem, method, options);
+  follow_run(steps, restart);
+  return {};
+}
+
+}  // namespace rkpm::runner
