@@ -51,3 +51,42 @@ foreach(mode paper_taylor_bar paper_block_forging paper_wheel_forging paper_over
   set_tests_properties(tools.runner.case_files_${mode} PROPERTIES TIMEOUT 300 LABELS "tools/runner"
                        ENVIRONMENT "OMP_NUM_THREADS=1;OMP_WAIT_POLICY=passive")
 endforeach()
+
+# rkpm_run on several processes (runner/check_ranks.py; tools/runner/ranks.hpp), when rkpm::mpi
+# exists: the paper's three cases, rod_on_rod and the plate_impact case file each on 1, 2 and 3
+# processes give the same files byte for byte; a checkpoint from 2 processes continues on 1 and
+# on 3 to the uninterrupted run; a failure stops every rank with one line. One thread per
+# process, oversubscribed and unbound (rkpm_mpiexec_flags, tests/CMakeLists.txt).
+if(TARGET rkpm::mpi)
+  set(rkpm_ranks_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_ranks.py)
+  set(rkpm_ranks_launcher ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 1 ${rkpm_mpiexec_flags})
+  list(REMOVE_ITEM rkpm_ranks_launcher ${MPIEXEC_NUMPROC_FLAG} 1)
+  if(rkpm_mpiexec_version MATCHES "Open MPI|OpenRTE")
+    list(APPEND rkpm_ranks_launcher --bind-to none)
+  endif()
+  string(JOIN " " rkpm_ranks_launcher ${rkpm_ranks_launcher})
+  set(rkpm_ranks_cases
+      "taylor_bar|--end-time|2e-6"
+      "block_forging|--end-time|3e-4"
+      "wheel_forging|--end-time|2e-5"
+      "rod_on_rod|--end-time|2e-6"
+      "${PROJECT_SOURCE_DIR}/cases/plate_impact/plate_impact.json|--end-time|2e-6")
+  set(rkpm_ranks_tests)
+  foreach(request IN LISTS rkpm_ranks_cases)
+    string(REPLACE "|" ";" request "${request}")
+    list(GET request 0 name)
+    get_filename_component(label ${name} NAME_WE)
+    add_test(NAME tools.runner.ranks_${label}
+             COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_ranks_check} same "${rkpm_ranks_launcher}" $<TARGET_FILE:rkpm_run>
+                     ${rkpm_runner_work}/ranks ${request})
+    list(APPEND rkpm_ranks_tests tools.runner.ranks_${label})
+  endforeach()
+  foreach(mode restart errors)
+    add_test(NAME tools.runner.ranks_${mode}
+             COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_ranks_check} ${mode} "${rkpm_ranks_launcher}"
+                     $<TARGET_FILE:rkpm_run> ${rkpm_runner_work}/ranks)
+    list(APPEND rkpm_ranks_tests tools.runner.ranks_${mode})
+  endforeach()
+  set_tests_properties(${rkpm_ranks_tests} PROPERTIES TIMEOUT 300 LABELS "tools/runner" PROCESSORS 3
+                       ENVIRONMENT "${rkpm_mpi_test_environment}")
+endif()

@@ -1,0 +1,182 @@
+#!/usr/bin/python3
+"""rkpm_run on several processes (mpiexec -np P rkpm_run ...; tools/runner/ranks.hpp), run by ctest
+(tests/tools/runner.cmake) at one thread per process, where runs are reproducible to the bit.
+
+    check_ranks.py same MPIEXEC RKPM_RUN WORK NAME ARGS...
+        the case NAME (a built-in case, or a case file) with ARGS on 1, 2 and 3 processes: the same
+        history.csv, snapshots (.pvd and every .vtu), figure shapes, results, energies and steps,
+        byte for byte; summary.json records the processes
+    check_ranks.py restart MPIEXEC RKPM_RUN WORK
+        block forging (moving tools, friction) checkpointed mid-run on 2 processes and continued on
+        1 and on 3 gives the uninterrupted run's outputs; the checkpoint's state equals the one
+        process's checkpoint at that step (their sections after the description)
+    check_ranks.py errors MPIEXEC RKPM_RUN WORK
+        a body that inverts on 2 processes stops both with one line naming the quadrature point
+        and the rank, the same point one process names, and summary.json says so; --ranks that
+        differs from the processes started, and more processes than particles, are refused in one
+        line; no rank is left waiting (every run has a timeout)
+
+MPIEXEC is the launcher with its flags as one argument ("mpiexec --oversubscribe ..."). The
+reference is always the same program on one process: the division must not change a run.
+"""
+import os
+import shutil
+import sys
+
+from checks import check, exit_status, read, run, summary
+
+
+def launch(mpiexec, processes, rkpm_run, args):
+    if processes == 1:
+        return run([rkpm_run] + args)
+    return run(mpiexec.split() + ["-np", str(processes), rkpm_run] + args)
+
+
+def outputs(folder):
+    """Every file of a run's folder that must not depend on the processes (not summary.json,
+    which records the processes and times)."""
+    return sorted(f for f in os.listdir(folder) if f.endswith((".csv", ".vtu", ".pvd")))
+
+
+def same_outputs(reference, other, label):
+    a, b = summary(reference), summary(other)
+    for key in ["status", "results", "energy", "steps", "dt_min_s", "dt_max_s", "end_time_s", "particles",
+                "quadrature_points", "parameters"]:
+        check(a.get(key) == b.get(key), f"{label}: summary '{key}' differs: {a.get(key)} vs {b.get(key)}")
+    files = outputs(reference)
+    check(files == outputs(other), f"{label}: other files: {files} vs {outputs(other)}")
+    check(any(f.endswith(".vtu") for f in files) and "history.csv" in files, f"{label}: no snapshots or history")
+    for f in files:
+        if f in outputs(other):
+            check(read(os.path.join(reference, f), "rb") == read(os.path.join(other, f), "rb"),
+                  f"{label}: {f} differs from one process's")
+
+
+def same(mpiexec, rkpm_run, work, name, args):
+    label = os.path.splitext(os.path.basename(name))[0]
+    folders = {}
+    for p in (1, 2, 3):
+        out = os.path.join(work, f"{label}-{p}")
+        shutil.rmtree(out, ignore_errors=True)
+        r = launch(mpiexec, p, rkpm_run, [name] + args + ["--no-plots", "--quiet", "--threads", "1", "--out", out])
+        check(r.returncode == 0, f"{label} on {p} processes failed: {r.stdout[-2000:]} {r.stderr[-2000:]}")
+        if r.returncode != 0:
+            return
+        check(summary(out).get("processes") == p, f"{label}: summary.json records {summary(out).get('processes')} "
+                                                  f"processes, not {p}")
+        folders[p] = out
+    rows = read(os.path.join(folders[1], "history.csv")).count("\n") - 1
+    check(rows >= 10, f"{label}: only {rows} history rows: too short a run to compare")
+    for p in (2, 3):
+        same_outputs(folders[1], folders[p], f"{label} on {p} processes")
+    print(f"ok  {label}: {summary(folders[1])['steps']} steps, {rows} history rows, the same files on 1, 2 and 3 "
+          f"processes")
+
+
+def checkpoints(folder):
+    return sorted(f for f in os.listdir(folder) if f.startswith("checkpoint_") and f.endswith(".rkpmcp"))
+
+
+def state_bytes(path):
+    """A checkpoint's sections: the bytes between its header (which ends with the description, the
+    run's folder, wall time and processes) and its table. The layout is io/checkpoint_format.hpp's:
+    a 32-byte prefix (magic, version, size, the table's offset at bytes 20-27, CRC), then the header:
+    the configuration's length and text, four counts, the description's length and text."""
+    import struct
+    data = read(path, "rb")
+    table = struct.unpack_from("<Q", data, 20)[0]
+    at = 32
+    at += 8 + struct.unpack_from("<Q", data, at)[0]  # configuration
+    at += 4 * 8  # particles, points, slaves, tools
+    at += 8 + struct.unpack_from("<Q", data, at)[0]  # description
+    check(0 < at < table <= len(data), f"{path}: not the checkpoint layout this check reads")
+    return data[at:table]
+
+
+def restart(mpiexec, rkpm_run, work):
+    case, end = "block_forging", 3e-4
+    base = [case, "--set", "particles_per_side=9", "--set", "friction=0.3", "--end-time", repr(end), "--no-plots",
+            "--quiet", "--threads", "1"]
+    full1, full2 = os.path.join(work, "restart-full-1"), os.path.join(work, "restart-full-2")
+    for d in (full1, full2):
+        shutil.rmtree(d, ignore_errors=True)
+    for p, out in ((1, full1), (2, full2)):
+        r = launch(mpiexec, p, rkpm_run, base + ["--checkpoint-interval", repr(end / 2), "--out", out])
+        check(r.returncode == 0, f"the run on {p} processes failed: {r.stderr[-2000:]}")
+        if r.returncode != 0:
+            return
+    ck = checkpoints(full2)
+    check(len(ck) == 2 and ck == checkpoints(full1), f"checkpoints {ck} on 2 processes, {checkpoints(full1)} on 1")
+    for f in ck:
+        check(state_bytes(os.path.join(full1, f)) == state_bytes(os.path.join(full2, f)),
+              f"{f}: the state written on 2 processes differs from one process's")
+    same_outputs(full1, full2, "the run with checkpoints on 2 processes")
+    for p in (1, 3):
+        cont = os.path.join(work, f"restart-cont-{p}")
+        shutil.rmtree(cont, ignore_errors=True)
+        r = launch(mpiexec, p, rkpm_run, [case, "--restart", os.path.join(full2, ck[0]), "--out", cont, "--no-plots",
+                                          "--quiet", "--threads", "1"])
+        check(r.returncode == 0, f"the restart on {p} processes failed: {r.stderr[-2000:]}")
+        if r.returncode != 0:
+            continue
+        label = f"2 processes' checkpoint {ck[0]} continued on {p}"
+        a, b = summary(full1), summary(cont)
+        for key in ["results", "energy", "steps", "end_time_s"]:
+            check(a[key] == b[key], f"{label}: summary '{key}' differs: {a[key]} vs {b[key]}")
+        check(read(os.path.join(full1, "history.csv")) == read(os.path.join(cont, "history.csv")),
+              f"{label}: history.csv differs from the uninterrupted run's")
+        last = sorted(f for f in os.listdir(full1) if f.endswith(".vtu"))[-1]
+        check(read(os.path.join(full1, last), "rb") == read(os.path.join(cont, last), "rb"),
+              f"{label}: the last snapshot {last} differs")
+        print(f"ok  {label}: the uninterrupted run's results, history and last snapshot")
+
+
+def errors(mpiexec, rkpm_run, work):
+    bar = ["taylor_bar", "--set", "radial_particles=6", "--set", "axial_particles=16", "--end-time", "2e-6",
+           "--no-plots", "--quiet", "--threads", "1"]
+    # An impact at 30 km/s inverts the bar in its first step.
+    fast = bar + ["--set", "velocity_m_s=3e4"]
+    one, two = os.path.join(work, "inverted-1"), os.path.join(work, "inverted-2")
+    r1 = launch(mpiexec, 1, rkpm_run, fast + ["--out", one])
+    r2 = launch(mpiexec, 2, rkpm_run, fast + ["--out", two])
+    check(r1.returncode != 0 and r2.returncode != 0, "the inverted bar did not fail")
+    lines = [l for l in r2.stderr.splitlines() if l.startswith("rkpm_run")]
+    check(len(lines) == 1, f"2 processes said {len(lines)} rkpm_run lines, not one: {lines}")
+    # The same message as one process's, but for the rank and the run's folder.
+    expected = r1.stderr.strip().splitlines()[0].replace("rkpm_run: ", "").split(" (what was written")[0]
+    check(len(lines) == 1 and lines[0].startswith("rkpm_run: rank ") and " of 2: " in lines[0] and
+          lines[0].split(" of 2: ", 1)[1].split(" (what was written")[0] == expected,
+          f"the line on 2 processes {lines} is not one process's '{expected}' with the rank")
+    check("det F" in expected and "quadrature point" in expected, f"the failure does not name the point: {expected}")
+    s = summary(two)
+    check(s["status"] == "failed" and "rank " in s.get("error", ""), f"summary.json: {s['status']} {s.get('error')}")
+    print(f"ok  an inverted body on 2 processes: {lines[0][:90]}...")
+
+    r = launch(mpiexec, 2, rkpm_run, bar + ["--ranks", "3", "--out", os.path.join(work, "ranks")])
+    check(r.returncode != 0 and "--ranks 3: this is 2 processes" in r.stderr, f"--ranks 3 on 2: {r.stderr[-500:]}")
+    r = launch(mpiexec, 1, rkpm_run, bar + ["--ranks", "2", "--out", os.path.join(work, "ranks")])
+    check(r.returncode != 0 and "start it with mpiexec -np 2" in r.stderr, f"--ranks 2 alone: {r.stderr[-500:]}")
+    tiny = ["taylor_bar", "--set", "radial_particles=2", "--set", "axial_particles=2", "--end-time", "1e-7",
+            "--no-plots", "--quiet", "--threads", "1", "--out", os.path.join(work, "tiny")]
+    r = launch(mpiexec, 5, rkpm_run, tiny)
+    check(r.returncode != 0 and "5 processes for 4 particles" in r.stderr, f"5 processes for 4 particles: "
+                                                                           f"{r.stderr[-500:]}")
+    print("ok  --ranks other than the processes started, and more processes than particles, are refused")
+
+
+def main():
+    mode, mpiexec, rkpm_run, work = sys.argv[1:5]
+    os.makedirs(work, exist_ok=True)
+    if mode == "same":
+        same(mpiexec, rkpm_run, work, sys.argv[5], sys.argv[6:])
+    elif mode == "restart":
+        restart(mpiexec, rkpm_run, work)
+    elif mode == "errors":
+        errors(mpiexec, rkpm_run, work)
+    else:
+        sys.exit(f"unknown mode {mode}")
+    sys.exit(exit_status())
+
+
+if __name__ == "__main__":
+    main()
