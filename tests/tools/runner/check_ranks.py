@@ -3,7 +3,8 @@
 (tests/tools/runner.cmake) at one thread per process, where runs are reproducible to the bit.
 
     check_ranks.py same MPIEXEC RKPM_RUN WORK NAME ARGS...
-        the case NAME (a built-in case, or a case file) with ARGS on 1, 2 and 3 processes: the same
+        the case NAME (a built-in case, or a case file) with ARGS on 1, 2 and 3 processes of one
+        thread, and on 2 processes of 2 threads: the same
         history.csv, snapshots (.pvd and every .vtu), figure shapes, results, energies and steps,
         byte for byte; summary.json records the processes
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
@@ -55,22 +56,24 @@ def same_outputs(reference, other, label):
 def same(mpiexec, rkpm_run, work, name, args):
     label = os.path.splitext(os.path.basename(name))[0]
     folders = {}
-    for p in (1, 2, 3):
-        out = os.path.join(work, f"{label}-{p}")
+    # (processes, threads per process): one thread each, and 2 processes of 2 threads.
+    for p, threads in ((1, 1), (2, 1), (3, 1), (2, 2)):
+        out = os.path.join(work, f"{label}-{p}x{threads}")
         shutil.rmtree(out, ignore_errors=True)
-        r = launch(mpiexec, p, rkpm_run, [name] + args + ["--no-plots", "--quiet", "--threads", "1", "--out", out])
+        r = launch(mpiexec, p, rkpm_run,
+                   [name] + args + ["--no-plots", "--quiet", "--threads", str(threads), "--out", out])
         check(r.returncode == 0, f"{label} on {p} processes failed: {r.stdout[-2000:]} {r.stderr[-2000:]}")
         if r.returncode != 0:
             return
         check(summary(out).get("processes") == p, f"{label}: summary.json records {summary(out).get('processes')} "
                                                   f"processes, not {p}")
-        folders[p] = out
-    rows = read(os.path.join(folders[1], "history.csv")).count("\n") - 1
+        folders[p, threads] = out
+    rows = read(os.path.join(folders[1, 1], "history.csv")).count("\n") - 1
     check(rows >= 10, f"{label}: only {rows} history rows: too short a run to compare")
-    for p in (2, 3):
-        same_outputs(folders[1], folders[p], f"{label} on {p} processes")
-    print(f"ok  {label}: {summary(folders[1])['steps']} steps, {rows} history rows, the same files on 1, 2 and 3 "
-          f"processes")
+    for p, threads in ((2, 1), (3, 1), (2, 2)):
+        same_outputs(folders[1, 1], folders[p, threads], f"{label} on {p} processes of {threads} thread(s)")
+    print(f"ok  {label}: {summary(folders[1, 1])['steps']} steps, {rows} history rows, the same files on 1, 2 and 3 "
+          f"processes of one thread and 2 of two threads")
 
 
 def checkpoints(folder):
