@@ -67,8 +67,8 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
 #ifdef RKPM_RUNNER_MPI
     return run_on_ranks<Case, Solver>(r, p, policies, make_problem, method, options, restart);
 #else
-    fail("rkpm_run runs on {} processes, but it was built without MPI: apt-get install libopenmpi-dev openmpi-bin "
-         "libmetis-dev, then build it again",
+    fail("mpiexec started {} processes, but this rkpm_run was built without MPI, so each would run the whole case "
+         "alone: apt-get install libopenmpi-dev openmpi-bin libmetis-dev, then build it again",
          r.processes);
 #endif
   }

@@ -49,16 +49,19 @@ class checkpoint_reader {
     bytes_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     check_all();
   }
-  // A checkpoint's bytes held in memory (checkpoint_writer::close), called `name` in messages.
-  checkpoint_reader(std::string bytes, std::string name) : name_(std::move(name)), bytes_(std::move(bytes)) {
+  // A checkpoint's bytes held in memory (checkpoint_writer::close), called `name` in messages;
+  // `section_checksums` false for bytes written without them (skip_section_checksums).
+  checkpoint_reader(std::string bytes, std::string name, bool section_checksums = true)
+      : name_(std::move(name)), bytes_(std::move(bytes)), section_checksums_(section_checksums) {
     check_all();
   }
   // ... and checks its identity against `expected`.
   checkpoint_reader(const std::filesystem::path& path, const checkpoint_identity& expected) : checkpoint_reader(path) {
     check_identity(expected);
   }
-  checkpoint_reader(std::string bytes, std::string name, const checkpoint_identity& expected)
-      : checkpoint_reader(std::move(bytes), std::move(name)) {
+  checkpoint_reader(std::string bytes, std::string name, const checkpoint_identity& expected,
+                    bool section_checksums = true)
+      : checkpoint_reader(std::move(bytes), std::move(name), section_checksums) {
     check_identity(expected);
   }
 
@@ -236,6 +239,7 @@ class checkpoint_reader {
   // The header's and every section's checksum, before anything of them is used.
   void check_parts() const {
     if (crc(checkpoint_prefix_bytes, header_bytes_) != header_crc_) damaged("the header fails its checksum");
+    if (!section_checksums_) return;
     for (const section& s : sections_)
       if (crc(s.offset, s.count * s.value_bytes) != s.crc) damaged(fmt::format("section '{}' fails its checksum", s.name));
   }
@@ -273,6 +277,7 @@ class checkpoint_reader {
 
   std::string name_;
   std::string bytes_;
+  bool section_checksums_ = true;
   checkpoint_header header_;
   std::uint64_t header_bytes_ = 0;
   std::uint32_t header_crc_ = 0;

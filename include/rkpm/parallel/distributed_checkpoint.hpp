@@ -151,6 +151,7 @@ template <class Solver>
 void mirror_state(distributed_solver<Solver>& run, Solver* whole, std::string_view configuration) {
   mpi_checkpoint_layout layout(run.group(), run.solver().model());
   io::checkpoint_writer w({}, whole_identity(run, configuration), {}, &layout);
+  w.skip_section_checksums();  // bytes in memory, read at once
   w.array("solver.mass", run.solver().mass());
   w.part(run.solver());
   run.group().guarded([&] {
@@ -158,7 +159,7 @@ void mirror_state(distributed_solver<Solver>& run, Solver* whole, std::string_vi
     if (run.group().rank() != 0) return;
     if (!whole) fail("mirror_state: rank 0 has no whole solver to put the run's state into");
     io::checkpoint_reader r(std::move(bytes), "the state of the run on several processes",
-                            checkpoint_identity_of(*whole, configuration));
+                            checkpoint_identity_of(*whole, configuration), false);
     std::vector<double> mass(whole->mass().size());
     r.array("solver.mass", mass);
     if (mass != whole->mass())
