@@ -55,15 +55,13 @@ class rank_steps final : public process_steps<Solver> {
     std::optional<Solver> whole;
     comm_.guarded([&] {
       if (comm_.rank() != 0) return;
-      const model_factory factory = [method](particle_set<2> particles, background_mesh mesh, double max_condition) {
-        return make_model<G>(method, std::move(particles), std::move(mesh), max_condition);
-      };
-      whole.emplace(model, *prob, options, factory);
+      whole.emplace(model, *prob, options, model_factory_of<G>(method));
     });
     comm_.agree();
     const parallel::particle_partition partition =
         parallel::partition_particles(model.at_points, model.particle_count(), comm_.size());
     run_.emplace(comm_, std::move(model), std::move(*prob), options, partition);
+    layout_.emplace(run_->group(), run_->solver().model());
     return whole;
   }
 
@@ -71,7 +69,7 @@ class rank_steps final : public process_steps<Solver> {
 
   void read_checkpoint(const std::filesystem::path& file, Solver* whole) override {
     parallel::read_checkpoint(*run_, file, configuration_);
-    parallel::mirror_state(*run_, whole, configuration_);
+    parallel::mirror_state(*run_, *layout_, whole, configuration_);
   }
 
   void abandon(const std::string& message) override {
@@ -95,7 +93,7 @@ class rank_steps final : public process_steps<Solver> {
             if (root) pass(at.time(), end, static_cast<long>(at.steps()));
             return;
           }
-          parallel::mirror_state(*run_, whole, configuration_);
+          parallel::mirror_state(*run_, *layout_, whole, configuration_);
           comm_.guarded([&] {
             if (root) observe(*whole);
           });
@@ -107,13 +105,14 @@ class rank_steps final : public process_steps<Solver> {
   bool started() const { return started_; }
   bool between_steps() const override { return run_->solver().between_steps(); }
   void settle(Solver* whole) override {
-    if (between_steps()) parallel::mirror_state(*run_, whole, configuration_);
+    if (between_steps()) parallel::mirror_state(*run_, *layout_, whole, configuration_);
   }
 
  private:
   parallel::communicator& comm_;
   std::string configuration_;
   std::optional<parallel::distributed_solver<Solver>> run_;
+  std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers, built once
   bool started_ = false;
 };
 

@@ -5,7 +5,7 @@
 //   write_checkpoint(run, path, configuration)   collective; rank 0 writes the file
 //   read_checkpoint(run, path, configuration)    collective; every rank reads the file and
 //                                                takes its particles' and points' values
-//   mirror_state(run, whole, configuration)      collective; rank 0's one-process solver of the
+//   mirror_state(run, layout, whole, configuration)  collective; rank 0's one-process solver of the
 //                                                whole model takes the run's state
 // The sections of the whole model's particles and points are named below (mpi_checkpoint_layout):
 // each rank gives its owned particles' and owned points' values (point owners, parallel/
@@ -131,14 +131,7 @@ void read_checkpoint(distributed_solver<Solver>& run, const std::filesystem::pat
   run.group().guarded([&] {
     io::checkpoint_reader r(path, whole_identity(run, configuration));
     r.set_layout(&layout);
-    std::vector<double> mass(run.solver().mass().size());
-    r.array("solver.mass", mass);
-    if (mass != run.solver().mass())
-      fail("checkpoint '{}' is of another problem: its particle masses differ from this one's (another geometry, "
-           "density or particle placement)",
-           r.file());
-    r.part(run.solver());
-    r.finish();
+    load_checkpoint(run.solver(), r);
   });
   run.group().agree();
 }
@@ -147,9 +140,10 @@ void read_checkpoint(distributed_solver<Solver>& run, const std::filesystem::pat
 // on rank 0 (null on the other ranks), through a checkpoint held in memory: afterwards it is the
 // solver one process would have at this step, bit for bit, and reads and writes as one (the
 // runner observes it for its history rows, snapshots and checkpoints, tools/runner/ranks.hpp).
+// `layout`: the run's (built once for a run that mirrors often).
 template <class Solver>
-void mirror_state(distributed_solver<Solver>& run, Solver* whole, std::string_view configuration) {
-  mpi_checkpoint_layout layout(run.group(), run.solver().model());
+void mirror_state(distributed_solver<Solver>& run, mpi_checkpoint_layout& layout, Solver* whole,
+                  std::string_view configuration) {
   io::checkpoint_writer w({}, whole_identity(run, configuration), {}, &layout);
   w.skip_section_checksums();  // bytes in memory, read at once
   w.array("solver.mass", run.solver().mass());
@@ -160,12 +154,7 @@ void mirror_state(distributed_solver<Solver>& run, Solver* whole, std::string_vi
     if (!whole) fail("mirror_state: rank 0 has no whole solver to put the run's state into");
     io::checkpoint_reader r(std::move(bytes), "the state of the run on several processes",
                             checkpoint_identity_of(*whole, configuration), false);
-    std::vector<double> mass(whole->mass().size());
-    r.array("solver.mass", mass);
-    if (mass != whole->mass())
-      fail("mirror_state: the whole solver's particle masses differ from the run's; build it from the same problem");
-    r.part(*whole);
-    r.finish();
+    load_checkpoint(*whole, r);
   });
   run.group().agree();
 }

@@ -46,9 +46,11 @@ void write_checkpoint(const explicit_solver<G, M, Ct>& s, const std::filesystem:
 // configuration and problem, or is truncated or damaged (io::checkpoint_damaged, naming the
 // part whose checksum fails); the solver is unchanged when it is refused for any of these
 // reasons (a section of another build's layout is found only while loading).
-template <Geometry G, Material M, Contact Ct>
-void read_checkpoint(explicit_solver<G, M, Ct>& s, const std::filesystem::path& path, std::string_view configuration) {
-  io::checkpoint_reader r(path, checkpoint_identity_of(s, configuration));
+// The solver's sections from a reader whose identity is checked (a file, or bytes held in
+// memory: parallel::mirror_state; on a rank of several, through the reader's layout): the lumped
+// masses first, which must be this problem's, then the state, then the check that nothing is left.
+template <class Solver>
+void load_checkpoint(Solver& s, io::checkpoint_reader& r) {
   std::vector<double> mass(s.mass().size());
   r.array("solver.mass", mass);
   if (mass != s.mass())
@@ -57,6 +59,12 @@ void read_checkpoint(explicit_solver<G, M, Ct>& s, const std::filesystem::path& 
          r.file());
   r.part(s);
   r.finish();
+}
+
+template <Geometry G, Material M, Contact Ct>
+void read_checkpoint(explicit_solver<G, M, Ct>& s, const std::filesystem::path& path, std::string_view configuration) {
+  io::checkpoint_reader r(path, checkpoint_identity_of(s, configuration));
+  load_checkpoint(s, r);
 }
 
 }  // namespace rkpm

@@ -48,12 +48,18 @@ discrete_model make_model(const method_names& m, particle_set<2> particles, back
   return std::move(*model);
 }
 
+// make_model<G> of the method `m` as a solver's model_factory (explicit_solver::model_builder).
+template <Geometry G>
+model_factory model_factory_of(const method_names& m) {
+  return [m](particle_set<2> particles, background_mesh mesh, double max_condition) {
+    return make_model<G>(m, std::move(particles), std::move(mesh), max_condition);
+  };
+}
+
 // The solver of the method `m` for problem p: make_model, then explicit_solver<G, M, Ct>.
 template <Geometry G, Material M, Contact Ct>
 explicit_solver<G, M, Ct> make_solver(const method_names& m, problem<M, Ct> p, const run_options& options) {
-  const model_factory factory = [m](particle_set<2> particles, background_mesh mesh, double max_condition) {
-    return make_model<G>(m, std::move(particles), std::move(mesh), max_condition);
-  };
+  const model_factory factory = model_factory_of<G>(m);
   discrete_model model = factory(std::move(p.particles), std::move(p.mesh), options.max_moment_condition);
   return explicit_solver<G, M, Ct>(std::move(model), std::move(p), options, factory);
 }
