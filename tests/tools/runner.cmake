@@ -54,7 +54,8 @@ endforeach()
 
 # rkpm_run on several processes (runner/check_ranks.py; tools/runner/ranks.hpp), when rkpm::mpi
 # exists: the paper's three cases, rod_on_rod and the plate_impact case file each on 1, 2 and 3
-# processes give the same files byte for byte; a checkpoint from 2 processes continues on 1 and
+# processes give the same files byte for byte, and the same snapshots in pieces (.pvtu, put
+# together by meshio: runner/pieces.py); a checkpoint from 2 processes continues on 1 and
 # on 3 to the uninterrupted run; a failure stops every rank with one line. One thread per
 # process, oversubscribed and unbound (rkpm_mpiexec_flags, tests/CMakeLists.txt).
 if(TARGET rkpm::mpi)

@@ -15,6 +15,18 @@
 
 namespace rkpm::runner {
 
+// What rank 0's observer (run_observer.hpp) tells the divided run at each observation, at (time,
+// end time): whether `whole` must be brought up to date and observe(whole) called, or pass(time,
+// end time, steps) alone; and the .pvtu index of the snapshot that call writes, if any (empty
+// if none), whose pieces every rank writes before it.
+template <class Solver>
+struct rank0_observation {
+  std::function<bool(double, double)> needs;
+  std::function<std::filesystem::path(double, double)> snapshot;
+  std::function<void(double, double, long)> pass;
+  std::function<void(const Solver&)> observe;
+};
+
 template <class Solver>
 class process_steps {
  public:
@@ -25,11 +37,8 @@ class process_steps {
   virtual void read_checkpoint(const std::filesystem::path& file, Solver* whole) = 0;
   // Rank 0's set-up before the run failed with `message`: every rank throws it.
   virtual void abandon(const std::string& message) = 0;
-  // Steps to the end. At each observation rank 0's needs(time, end time) says whether `whole` is
-  // brought up to date and observe(whole) called, or pass(time, end time, steps) is called alone.
-  virtual void run(Solver* whole, const std::function<bool(double, double)>& needs,
-                   const std::function<void(double, double, long)>& pass,
-                   const std::function<void(const Solver&)>& observe) = 0;
+  // Steps to the end, observed as `observation` says (given on rank 0 only).
+  virtual void run(Solver* whole, const rank0_observation<Solver>& observation) = 0;
   // After the run, ended or failed: whether the parts stopped between steps (their state whole),
   // and, when they did, `whole` brought up to date.
   virtual bool between_steps() const = 0;

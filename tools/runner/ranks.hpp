@@ -5,8 +5,10 @@
 // (parallel::distributed_solver). Rank 0 runs simulate() as one process does, on a whole solver
 // that never steps itself: rank_steps puts the parts' state into it (parallel::mirror_state)
 // at each call where the observer reads more than the time, so summary.json, history.csv, the
-// snapshots, the figures and the checkpoints are the files one process writes, bit for bit.
-// The other ranks follow the same collective calls (follow_run) and write nothing.
+// figures and the checkpoints are the files one process writes, bit for bit. The snapshots are
+// written in pieces, each rank its own at the same time (parallel/snapshot_pieces.hpp), and
+// rank 0 adds their .pvtu index to the .pvd. The other ranks follow the same collective calls
+// (follow_run) and write nothing else.
 // Costs of this first form: rank 0 holds the whole model beside its part, and a history row,
 // snapshot or checkpoint gathers the whole state there.
 
@@ -21,6 +23,7 @@
 #include <rkpm/parallel/distributed_checkpoint.hpp>
 #include <rkpm/parallel/distributed_solver.hpp>
 #include <rkpm/parallel/partition.hpp>
+#include <rkpm/parallel/snapshot_pieces.hpp>
 #include <rkpm/solver/make_model.hpp>
 
 #include "process_steps.hpp"
@@ -34,8 +37,9 @@ class rank_steps final : public process_steps<Solver> {
  public:
   using problem_type = problem<typename Solver::material_type, typename Solver::contact_type>;
 
-  rank_steps(parallel::communicator& comm, std::string configuration)
-      : comm_(comm), configuration_(std::move(configuration)) {}
+  // snapshot_format: the snapshots' (alike on every rank: simulate.hpp's snapshot_format).
+  rank_steps(parallel::communicator& comm, std::string configuration, io::vtu_format snapshot_format)
+      : comm_(comm), configuration_(std::move(configuration)), snapshot_format_(snapshot_format) {}
 
   // Collective: builds the problem and the whole model on every rank, divides the particles, and
   // returns on rank 0 the whole solver it observes (empty elsewhere).
@@ -60,8 +64,10 @@ class rank_steps final : public process_steps<Solver> {
     comm_.agree();
     const parallel::particle_partition partition =
         parallel::partition_particles(model.at_points, model.particle_count(), comm_.size());
+    const io::vtu_cells cells = io::snapshot_cells(model);
     run_.emplace(comm_, std::move(model), std::move(*prob), options, partition);
     layout_.emplace(run_->group(), run_->solver().model());
+    pieces_.emplace(comm_, partition, cells);
     return whole;
   }
 
@@ -77,25 +83,34 @@ class rank_steps final : public process_steps<Solver> {
     comm_.agree();
   }
 
-  void run(Solver* whole, const std::function<bool(double, double)>& needs,
-           const std::function<void(double, double, long)>& pass,
-           const std::function<void(const Solver&)>& observe) override {
+  // Each observation: rank 0 says in one byte whether the whole solver is brought up to date
+  // and whether a snapshot is due, then the snapshot's index, whose pieces every rank writes.
+  void run(Solver* whole, const rank0_observation<Solver>& o) override {
     comm_.agree();  // rank 0's set-up (abandon)
     started_ = true;
     const bool root = comm_.rank() == 0;
     Solver& part = run_->solver();
     const double end = part.options().end_time;
+    constexpr char observe_whole = 1, snapshot = 2;
     part.run(
         [&](const Solver& at) {
-          char wanted = root && needs(at.time(), end) ? 1 : 0;
+          std::string index = root ? o.snapshot(at.time(), end).string() : std::string();
+          char wanted = !root ? 0 : (o.needs(at.time(), end) ? observe_whole : 0) | (index.empty() ? 0 : snapshot);
           MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
-          if (!wanted) {
-            if (root) pass(at.time(), end, static_cast<long>(at.steps()));
+          if (wanted & snapshot) {
+            unsigned long size = index.size();
+            MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm_.get());
+            index.resize(size);
+            MPI_Bcast(index.data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
+            pieces_->write(part, index, snapshot_format_);
+          }
+          if (!(wanted & observe_whole)) {
+            if (root) o.pass(at.time(), end, static_cast<long>(at.steps()));
             return;
           }
           parallel::mirror_state(*run_, *layout_, whole, configuration_);
           comm_.guarded([&] {
-            if (root) observe(*whole);
+            if (root) o.observe(*whole);
           });
           comm_.agree();
         },
@@ -112,7 +127,9 @@ class rank_steps final : public process_steps<Solver> {
   parallel::communicator& comm_;
   std::string configuration_;
   std::optional<parallel::distributed_solver<Solver>> run_;
+  io::vtu_format snapshot_format_;
   std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers, built once
+  std::optional<parallel::snapshot_pieces> pieces_;
   bool started_ = false;
 };
 
@@ -122,7 +139,7 @@ void follow_run(rank_steps<Solver>& steps, const std::optional<restart_point>& r
   if (restart) steps.read_checkpoint(restart->file, nullptr);
   bool settled = false;
   try {
-    steps.run(nullptr, {}, {}, {});
+    steps.run(nullptr, {});
     settled = true;
     steps.settle(nullptr);
   } catch (...) {
@@ -138,7 +155,7 @@ run_outcome run_on_ranks(const run_request& r, const typename Case::parameters& 
                          const method_names& method, const run_options& options,
                          const std::optional<restart_point>& restart) {
   parallel::communicator world;
-  rank_steps<Solver> steps(world, policies.configuration);
+  rank_steps<Solver> steps(world, policies.configuration, snapshot_format(r));
   if (world.rank() == 0)
     return simulate<Case, Solver>(
         r, p, policies, [&] { return std::move(*steps.build(make_problem, method, options)); }, restart, &steps);

@@ -68,12 +68,13 @@ class run_observer {
       record_.next_history += record_.history_interval;
     }
     if (t >= record_.next_snapshot || last) {
-      // The cells made anew and the arrays computed one at a time as they are written: at 10^6
-      // particles the cells would hold 41 MB through the run, the raw arrays 200 MB at once.
-      const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_cells(s),
-                                         io::snapshot_fields(s, io::field_arrays::deferred), snapshot_format_,
-                                         io::snapshot_tools(s));
-      record_.snapshots.emplace_back(t, vtu.filename().string());
+      if (pieces_) {  // written by the ranks before this call (ranks.hpp)
+        const std::string index = vtk_.next_file(".pvtu");
+        vtk_.add(t, index);
+        record_.snapshots.emplace_back(t, index);
+      } else {
+        write_snapshot(s, t);
+      }
       record_.next_snapshot += record_.snapshot_interval;
     }
     figures_.observe(s);
@@ -100,6 +101,16 @@ class run_observer {
            (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint) || pending_interrupt().load() != 0 ||
            static_cast<bool>(hooks_.observe);
   }
+  // The snapshot the call at time t writes, if any (empty if none): next to the .pvd, a .vtu, or
+  // the .pvtu index of a snapshot the ranks write in pieces (write_snapshots_in_pieces).
+  std::filesystem::path snapshot_due(double t, double end_time) const {
+    if (skip_next_ || !(t >= record_.next_snapshot || t >= end_time * (1.0 - 1e-12))) return {};
+    return dir_ / vtk_.next_file(pieces_ ? ".pvtu" : ".vtu");
+  }
+  // A run on several processes: each rank writes its piece of every snapshot before the call
+  // that is due to write it (parallel/snapshot_pieces.hpp), which then adds the index to the .pvd.
+  void write_snapshots_in_pieces() { pieces_ = true; }
+
   // The call when needs_state(t, end_time) is false: the progress line only.
   void pass(double t, double end_time, long steps) {
     if (std::exchange(skip_next_, false)) return;
@@ -138,6 +149,15 @@ class run_observer {
   const figure_recorder<Case>& figures() const { return figures_; }
 
  private:
+  // The cells made anew and the arrays computed one at a time as they are written: at 10^6
+  // particles the cells would hold 41 MB through the run, the raw arrays 200 MB at once.
+  void write_snapshot(const Solver& s, double t) {
+    const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_cells(s),
+                                       io::snapshot_fields(s, io::field_arrays::deferred), snapshot_format_,
+                                       io::snapshot_tools(s));
+    record_.snapshots.emplace_back(t, vtu.filename().string());
+  }
+
   // history.csv columns: time, the case's measures, tool forces, energies.
   std::vector<std::string> column_names(const Solver& s) const {
     std::vector<std::string> columns{"time_s"};
@@ -199,6 +219,7 @@ class run_observer {
   std::chrono::steady_clock::time_point segment_start_;
   std::filesystem::path last_checkpoint_;
   bool skip_next_ = false;
+  bool pieces_ = false;
 };
 
 }  // namespace rkpm::runner

@@ -89,6 +89,11 @@ void final_plastic_strain_png(const std::filesystem::path& dir, const std::strin
                  .label = "equivalent plastic strain"});
 }
 
+// The runner's snapshots: appended arrays, compressed as the request says.
+inline io::vtu_format snapshot_format(const run_request& request) {
+  return io::vtu_format(io::vtu_encoding::appended, request.vtu_compression);
+}
+
 // steps: null on one process; on several, rank 0's view of the divided run (process_steps.hpp),
 // whose make() builds the whole solver that rank 0 observes.
 template <class Case, class Solver>
@@ -158,8 +163,9 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
       while (record.next_checkpoint <= s.time()) record.next_checkpoint += record.checkpoint_interval;
     }
     observer.emplace(dir, params, s, std::move(record), identity, method.configuration, request.quiet,
-                     io::vtu_format(io::vtu_encoding::appended, request.vtu_compression), request.hooks);
+                     snapshot_format(request), request.hooks);
     if (restart) observer->resume(fs::absolute(restart->file).parent_path());
+    if (steps) observer->write_snapshots_in_pieces();
     summary["status"] = "running";  // what a killed run's folder says
     write_json(dir / "summary.json", summary);
   } catch (const std::exception& e) {
@@ -175,9 +181,10 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   };
   try {
     if (steps)
-      steps->run(
-          &s, [&](double t, double end) { return observe.needs_state(t, end); },
-          [&](double t, double end, long n) { observe.pass(t, end, n); }, [&](const Solver& at) { observe(at); });
+      steps->run(&s, {.needs = [&](double t, double end) { return observe.needs_state(t, end); },
+                      .snapshot = [&](double t, double end) { return observe.snapshot_due(t, end); },
+                      .pass = [&](double t, double end, long n) { observe.pass(t, end, n); },
+                      .observe = [&](const Solver& at) { observe(at); }});
     else
       s.run(observe, 1);
     settle();

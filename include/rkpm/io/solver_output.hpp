@@ -7,9 +7,10 @@
 //   snapshot_fields(s)   the particle fields of a snapshot: displacement, velocity, Cauchy
 //                        stress, equivalent plastic strain, det F, and every extra double a
 //                        material state lists in `output_fields()` (temperature, damage, ...)
-//                        that is not NaN at every point (a state a material leaves unused);
+//                        that is not NaN at every point (a state a material leaves unused; on
+//                        a part of a run on several processes, at every point of the run);
 //                        with field_arrays::deferred, each computed only when a writer asks;
-//   snapshot_cells(s)    the cells of a snapshot: the model's background cells as quads when the
+//   snapshot_cells(s)    (or of a model) the cells of a snapshot: the model's background cells as quads when the
 //                        particles are their nodes (grids, Gmsh bodies), else a vertex per
 //                        particle (io/vtu_cells.hpp); the same for every snapshot of a run;
 //   snapshot_tools(s)    the rigid tools' vertices at the solver's time, one <FieldData> array
@@ -32,6 +33,7 @@
 
 #include <Eigen/Core>
 
+#include <rkpm/core/process_group.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/io/vtk.hpp>
@@ -70,16 +72,27 @@ concept has_output_fields = requires { State::output_fields(); };
 // outlives the write.
 enum class field_arrays { now, deferred };
 
+// The RK coefficients of displacement and velocity that a snapshot's particle values
+// interpolate: the solver's (null), or copies (a part of a run on several processes, its
+// ghosts' values refreshed from their owners: parallel/snapshot_pieces.hpp).
+struct snapshot_coefficients {
+  const std::vector<vec2>* d = nullptr;
+  const std::vector<vec2>* v = nullptr;
+};
+
 template <class Solver>
-point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::now) {
+point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::now,
+                           snapshot_coefficients coefficients = {}) {
   using state_type = typename Solver::state_type;
   point_data data;
   const auto add = [&](std::string name, int components, point_data::producer produce) {
     if (when == field_arrays::deferred) data.add_deferred(std::move(name), components, std::move(produce));
     else data.add_values(std::move(name), components, produce());
   };
-  add("displacement", 3, [&s] { return point_data::flat(s.particle_displacements()); });
-  add("velocity", 3, [&s] { return point_data::flat(s.particle_velocities()); });
+  const std::vector<vec2>& d = coefficients.d ? *coefficients.d : s.coefficients();
+  const std::vector<vec2>& v = coefficients.v ? *coefficients.v : s.coefficient_velocities();
+  add("displacement", 3, [&s, &d] { return point_data::flat(values_at_particles(s.model(), d)); });
+  add("velocity", 3, [&s, &v] { return point_data::flat(values_at_particles(s.model(), v)); });
   add("stress", 9, [&s] {  // row-major, projected straight into the file's layout
     return project_to_particles_flat<9>(s.model(), [&](index_t q) {
       const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> sigma = s.point_cauchy_stress(q);
@@ -97,8 +110,11 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   if constexpr (has_output_fields<state_type>)
     for (const auto& [name, member] : state_type::output_fields()) {
       const auto& states = s.point_states();
-      if (std::all_of(states.begin(), states.end(), [m = member](const state_type& st) { return std::isnan(st.*m); }))
-        continue;
+      const bool unused =
+          std::all_of(states.begin(), states.end(), [m = member](const state_type& st) { return std::isnan(st.*m); });
+      // A part of a run on several processes lists what the whole lists (parallel/snapshot_pieces.hpp).
+      process_group* const group = s.model().own.group;
+      if (group ? group->max(unused ? 0.0 : 1.0) == 0.0 : unused) continue;
       add(std::string(name), 1, [&s, m = member] {
         return s.template project_to_particles<double>(
             [&](index_t q) { return static_cast<double>(s.point_states()[q].*m); });
@@ -107,13 +123,15 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   return data;
 }
 
-template <class Solver>
-vtu_cells snapshot_cells(const Solver& s) {
-  const auto& m = s.model();
+inline vtu_cells snapshot_cells(const discrete_model& m) {
   const bool nodes = m.bodies.found() ? m.bodies.nodes_are_particles()
                                       : rkpm::nodes_are_particles(m.particles.position, m.mesh);
   return nodes ? quad_cells(m.mesh, static_cast<std::size_t>(m.particle_count()))
                : vertex_cells(static_cast<std::size_t>(m.particle_count()));
+}
+template <class Solver>
+vtu_cells snapshot_cells(const Solver& s) {
+  return snapshot_cells(s.model());
 }
 
 template <class Solver>

@@ -215,12 +215,18 @@ class pvd_series {
     write();
   }
 
-  // Writes <pvd stem>_<index, 6 digits>.vtu next to the .pvd and adds it; returns its path.
+  // The next snapshot's file: <pvd stem>_<index, 6 digits><extension>, next to the .pvd (a
+  // snapshot written in pieces is its .pvtu index: io/pvtu.hpp).
+  std::string next_file(std::string_view extension = ".vtu") const {
+    return fmt::format("{}_{:06d}{}", path_.stem().string(), entries_.size(), extension);
+  }
+
+  // Writes next_file() next to the .pvd and adds it; returns its path.
   // Without `cells`, every point is a vertex cell.
   std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const vtu_cells& cells,
                                      const point_data& data, const vtu_format& format = {},
                                      const point_data& field_arrays = {}) {
-    const std::string name = fmt::format("{}_{:06d}.vtu", path_.stem().string(), entries_.size());
+    const std::string name = next_file();
     const auto vtu = path_.parent_path() / name;
     write_vtu(vtu, points, cells, data, format, field_arrays);
     add(time, name);
@@ -230,7 +236,7 @@ class pvd_series {
   std::filesystem::path add_snapshot(double time, std::vector<vec2>&& points, vtu_cells&& cells,
                                      const point_data& data, const vtu_format& format = {},
                                      const point_data& field_arrays = {}) {
-    const std::string name = fmt::format("{}_{:06d}.vtu", path_.stem().string(), entries_.size());
+    const std::string name = next_file();
     const auto vtu = path_.parent_path() / name;
     write_vtu(vtu, std::move(points), std::move(cells), data, format, field_arrays);
     add(time, name);

@@ -89,14 +89,42 @@ class halo_exchange {
   template <class... Fields>
   void forward(std::vector<Fields>&... fields) {
     constexpr int width = (0 + ... + detail::field_width<Fields>());
-    const index_t n = plan_.local_particles();
+    index_t wrong = -1;
+    ((wrong < 0 && static_cast<index_t>(fields.size()) != plan_.local_particles()
+          ? wrong = static_cast<index_t>(fields.size())
+          : 0),
+     ...);
+    exchange(
+        width, wrong, [&](double*& out, stored_index i) { (pack(out, fields[i]), ...); },
+        [&](const double*& in, stored_index i) { (unpack(in, fields[i]), ...); });
+  }
+
+  // The same for a field of `width` doubles per particle, row after row (a snapshot's arrays of
+  // 1, 3 or 9 components: parallel/snapshot_pieces.hpp).
+  void forward_rows(std::vector<double>& rows, int width) {
+    const auto w = static_cast<std::size_t>(width);
+    const index_t values = static_cast<index_t>(rows.size() / w);
+    exchange(
+        width, rows.size() == w * static_cast<std::size_t>(plan_.local_particles()) ? -1 : values,
+        [&](double*& out, stored_index i) {
+          std::memcpy(out, rows.data() + w * static_cast<std::size_t>(i), w * sizeof(double));
+          out += w;
+        },
+        [&](const double*& in, stored_index i) {
+          std::memcpy(rows.data() + w * static_cast<std::size_t>(i), in, w * sizeof(double));
+          in += w;
+        });
+  }
+
+ private:
+  // forward's messages: `wrong` >= 0 is a field's length that is not one value per local particle.
+  template <class Pack, class Unpack>
+  void exchange(int width, index_t wrong, Pack&& pack_particle, Unpack&& unpack_particle) {
     comm_.guarded([&] {
-      index_t wrong = -1;
-      ((wrong < 0 && static_cast<index_t>(fields.size()) != n ? wrong = static_cast<index_t>(fields.size()) : 0), ...);
       if (wrong >= 0)
         fail("forward: a field has {} values but rank {} has {} local particles (owned and ghosts); size "
              "per-particle fields by halo_plan::local_particles()",
-             wrong, plan_.rank, n);
+             wrong, plan_.rank, plan_.local_particles());
     });
     comm_.agree();
     for (std::size_t k = 0; k < plan_.receives.size(); ++k) {
@@ -109,18 +137,17 @@ class halo_exchange {
       std::vector<double>& buffer = send_[k];
       buffer.resize(plan_.sends[k].particles.size() * width);
       double* out = buffer.data();
-      for (const stored_index i : plan_.sends[k].particles) (pack(out, fields[i]), ...);
+      for (const stored_index i : plan_.sends[k].particles) pack_particle(out, i);
       MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan_.sends[k].rank, detail::halo_tag,
                 comm_.get(), &requests_[plan_.receives.size() + k]);
     }
     MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
     for (std::size_t k = 0; k < plan_.receives.size(); ++k) {
       const double* in = receive_[k].data();
-      for (const stored_index i : plan_.receives[k].particles) (unpack(in, fields[i]), ...);
+      for (const stored_index i : plan_.receives[k].particles) unpack_particle(in, i);
     }
   }
 
- private:
   template <class T>
   static void pack(double*& out, const T& v) {
     constexpr int w = detail::field_width<T>();

@@ -4,12 +4,15 @@
 
     check_ranks.py same MPIEXEC RKPM_RUN WORK NAME ARGS...
         the case NAME (a built-in case, or a case file) with ARGS on 1, 2 and 3 processes of one
-        thread, and on 2 processes of 2 threads: the same
-        history.csv, snapshots (.pvd and every .vtu), figure shapes, results, energies and steps,
-        byte for byte; summary.json records the processes
+        thread, and on 2 processes of 2 threads: the same history.csv, .pvd (naming .pvtu indexes),
+        figure shapes, results, energies and steps, byte for byte, and the same snapshots: each
+        one process's .vtu is, on P processes, a .pvtu index of P pieces that together hold its
+        points, arrays and cells bit for bit (pieces.py, read by meshio); summary.json records
+        the processes
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
         block forging (moving tools, friction) checkpointed mid-run on 2 processes and continued on
-        1 and on 3 gives the uninterrupted run's outputs; the checkpoint's state equals the one
+        1 and on 3 gives the uninterrupted run's outputs (snapshots in pieces compared as above);
+        the checkpoint's state equals the one
         process's checkpoint at that step (their sections after the description)
     check_ranks.py errors MPIEXEC RKPM_RUN WORK
         a body that inverts on 2 processes stops both with one line naming the quadrature point
@@ -24,6 +27,7 @@ import os
 import shutil
 import sys
 
+import pieces
 from checks import check, exit_status, read, run, summary
 
 
@@ -33,10 +37,33 @@ def launch(mpiexec, processes, rkpm_run, args):
     return run(mpiexec.split() + ["-np", str(processes), rkpm_run] + args)
 
 
+def snapshot_files(folder):
+    return sorted(f for f in os.listdir(folder) if f.endswith((".vtu", ".pvtu")))
+
+
 def outputs(folder):
-    """Every file of a run's folder that must not depend on the processes (not summary.json,
+    """The other files of a run's folder that must not depend on the processes (not summary.json,
     which records the processes and times)."""
-    return sorted(f for f in os.listdir(folder) if f.endswith((".csv", ".vtu", ".pvd")))
+    return sorted(f for f in os.listdir(folder) if f.endswith((".csv", ".pvd")))
+
+
+def same_snapshot(reference, other, label):
+    """One process's snapshot REFERENCE (.vtu) and OTHER: the same file, or, from several processes,
+    the same data in pieces (pieces.py)."""
+    if other.endswith(".vtu"):
+        check(read(reference, "rb") == read(other, "rb"), f"{label}: {os.path.basename(other)} differs from one "
+                                                          f"process's")
+        return
+    for problem in pieces.same_snapshot(reference, other, summary(os.path.dirname(other))["processes"]):
+        check(False, f"{label}: {problem}")
+
+
+def in_pieces(vtu, processes):
+    """The files of one process's snapshot X.vtu written by `processes`: X.pvtu and its pieces."""
+    if processes == 1:
+        return [vtu]
+    stem = vtu[:-len(".vtu")]
+    return [stem + ".pvtu"] + [f"{stem}_{r}.vtu" for r in range(processes)]
 
 
 def same_outputs(reference, other, label):
@@ -46,11 +73,22 @@ def same_outputs(reference, other, label):
         check(a.get(key) == b.get(key), f"{label}: summary '{key}' differs: {a.get(key)} vs {b.get(key)}")
     files = outputs(reference)
     check(files == outputs(other), f"{label}: other files: {files} vs {outputs(other)}")
-    check(any(f.endswith(".vtu") for f in files) and "history.csv" in files, f"{label}: no snapshots or history")
+    check(any(f.endswith(".pvd") for f in files) and "history.csv" in files, f"{label}: no snapshots or history")
+    processes = b["processes"]
     for f in files:
-        if f in outputs(other):
-            check(read(os.path.join(reference, f), "rb") == read(os.path.join(other, f), "rb"),
-                  f"{label}: {f} differs from one process's")
+        if f in outputs(other):  # a .pvd names the indexes of the snapshots in pieces
+            expected = read(os.path.join(reference, f), "rb")
+            if f.endswith(".pvd") and processes > 1:
+                expected = expected.replace(b'.vtu"/>', b'.pvtu"/>')
+            check(expected == read(os.path.join(other, f), "rb"), f"{label}: {f} differs from one process's")
+    snapshots = snapshot_files(reference)
+    expected = sorted(x for f in snapshots for x in in_pieces(f, processes))
+    check(snapshot_files(other) == expected, f"{label}: snapshot files {snapshot_files(other)[:8]}..., not "
+                                             f"{expected[:8]}...")
+    for f in snapshots:
+        other_file = os.path.join(other, in_pieces(f, processes)[0])
+        if os.path.exists(other_file):
+            same_snapshot(os.path.join(reference, f), other_file, label)
 
 
 def same(mpiexec, rkpm_run, work, name, args):
@@ -128,9 +166,9 @@ def restart(mpiexec, rkpm_run, work):
             check(a[key] == b[key], f"{label}: summary '{key}' differs: {a[key]} vs {b[key]}")
         check(read(os.path.join(full1, "history.csv")) == read(os.path.join(cont, "history.csv")),
               f"{label}: history.csv differs from the uninterrupted run's")
-        last = sorted(f for f in os.listdir(full1) if f.endswith(".vtu"))[-1]
-        check(read(os.path.join(full1, last), "rb") == read(os.path.join(cont, last), "rb"),
-              f"{label}: the last snapshot {last} differs")
+        last = snapshot_files(full1)[-1]
+        same_snapshot(os.path.join(full1, last), os.path.join(cont, in_pieces(last, p)[0]),
+                      f"{label}: the last snapshot")
         print(f"ok  {label}: the uninterrupted run's results, history and last snapshot")
 
 
