@@ -4,7 +4,8 @@
     rkpm_view.py RUN_DIR [--field NAME] [--time T] [--out PNG]
 
 Reads the .pvd series of RUN_DIR (rkpm_run's CASE.pvd) with meshio (Debian python3-meshio), takes
-the snapshot nearest T seconds (default the last) and draws with gnuplot the deformed cells
+the snapshot nearest T seconds (default the last; a .vtu, or on several processes the pieces of a
+.pvtu) and draws with gnuplot the deformed cells
 filled by the field (each quad the mean of its four nodes' values; particles that are vertex
 cells as dots), a colour bar, and the tools if the snapshot lists them (<FieldData> arrays
 "tool:NAME", written by the runner). NAME is a point array of the snapshot
@@ -60,6 +61,31 @@ def snapshots(run_dir):
     return sets
 
 
+def read_snapshot(path):
+    """One snapshot: a .vtu, or the pieces a .pvtu index names (a run on several processes) as one
+    mesh, their points one after the other and each piece's cells on its own points; the tools'
+    <FieldData> of whichever piece holds it. A particle that several pieces hold is drawn once
+    per piece, with the same values."""
+    if not path.endswith(".pvtu"):
+        return meshio.read(path)
+    grid = ET.parse(path).getroot().find("PUnstructuredGrid")
+    sources = [] if grid is None else [p.get("Source") for p in grid.findall("Piece")]
+    if not sources:
+        fail(f"{path} names no pieces")
+    pieces = [meshio.read(os.path.join(os.path.dirname(path), s)) for s in sources]
+    first = [0]
+    for m in pieces:
+        first.append(first[-1] + len(m.points))
+    cells = [(block.type, np.asarray(block.data) + at) for m, at in zip(pieces, first) for block in m.cells]
+    point_data = {name: np.concatenate([np.asarray(m.point_data[name]) for m in pieces])
+                  for name in pieces[0].point_data}
+    field_data = {}
+    for m in pieces:
+        field_data.update(m.field_data)
+    return meshio.Mesh(np.concatenate([m.points for m in pieces]), cells, point_data=point_data,
+                       field_data=field_data)
+
+
 def field_values(mesh, name):
     """The values to draw per point and the colour bar's label."""
     base, _, component = name.partition(":")
@@ -102,7 +128,7 @@ def main(argv):
     sets = snapshots(a.run_dir)
     index = len(sets) - 1 if a.time is None else min(range(len(sets)), key=lambda k: abs(sets[k][0] - a.time))
     t, path = sets[index]
-    mesh = meshio.read(path)
+    mesh = read_snapshot(path)
     values, label = field_values(mesh, a.field)
     xy = mesh.points[:, :2] * 1e3  # mm
     script = ""

@@ -8,7 +8,7 @@
         figure shapes, results, energies and steps, byte for byte, and the same snapshots: each
         one process's .vtu is, on P processes, a .pvtu index of P pieces that together hold its
         points, arrays and cells bit for bit (pieces.py, read by meshio); summary.json records
-        the processes
+        the processes; tools/rkpm view draws the 2 processes' last snapshot with one process's cells
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
         block forging (moving tools, friction) checkpointed mid-run on 2 processes and continued on
         1 and on 3 gives the uninterrupted run's outputs (snapshots in pieces compared as above);
@@ -110,8 +110,31 @@ def same(mpiexec, rkpm_run, work, name, args):
     check(rows >= 10, f"{label}: only {rows} history rows: too short a run to compare")
     for p, threads in ((2, 1), (3, 1), (2, 2)):
         same_outputs(folders[1, 1], folders[p, threads], f"{label} on {p} processes of {threads} thread(s)")
+    view(folders[1, 1], folders[2, 1], label)
     print(f"ok  {label}: {summary(folders[1, 1])['steps']} steps, {rows} history rows, the same files on 1, 2 and 3 "
-          f"processes of one thread and 2 of two threads")
+          f"processes of one thread and 2 of two threads; tools/rkpm view draws the pieces")
+
+
+VIEW = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools", "view", "rkpm_view.py")
+
+
+def view(one, two, label):
+    """tools/rkpm view (tools/view/rkpm_view.py) on the 2-process run: it reads the last snapshot's
+    pieces as one mesh whose cells, drawn at their points, are one process's, and writes a PNG."""
+    import numpy as np
+    sys.path.insert(0, os.path.dirname(VIEW))
+    import rkpm_view
+
+    def drawn(folder):
+        t, path = rkpm_view.snapshots(folder)[-1]
+        mesh = rkpm_view.read_snapshot(path)
+        return sorted((b.type, mesh.points[row].tobytes()) for b in mesh.cells for row in np.asarray(b.data))
+
+    check(drawn(one) == drawn(two), f"{label}: the view of the pieces draws other cells than one process's")
+    out = os.path.join(two, "view.png")
+    r = run(["/usr/bin/python3", VIEW, two, "--field", "stress", "--out", out])
+    check(r.returncode == 0 and read(out, "rb")[:4] == b"\x89PNG", f"{label}: tools/rkpm view on the pieces: "
+                                                                    f"{r.stdout} {r.stderr}")
 
 
 def checkpoints(folder):
