@@ -77,6 +77,8 @@ class point_data {
 
   const std::vector<array>& arrays() const { return arrays_; }
   bool empty() const { return arrays_.empty(); }
+  // The arrays handed over, this left empty (for a caller that remakes them without a copy).
+  std::vector<array> take() && { return std::move(arrays_); }
 
  private:
   void check_name(const std::string& name) const {

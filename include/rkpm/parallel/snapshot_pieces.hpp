@@ -127,7 +127,10 @@ class snapshot_pieces {
     const auto owned = static_cast<index_t>(h.owned.size()), n = h.local_particles();
     process_group* const group = part.model().own.group;
     comm_.guarded([&] {
-      if (!group || part.model().own.particles.end != owned)
+      if (!group)
+        fail("snapshot pieces: the solver is not a rank's part of a run on several processes (its model has no "
+             "process group); give distributed_solver::solver(), or write one process's snapshot with io::write_vtu");
+      if (part.model().own.particles.end != owned)
         fail("snapshot pieces: the part owns {} particles but the pieces were made for {}; make them from the "
              "run's partition",
              part.model().own.particles.end, owned);
@@ -141,14 +144,13 @@ class snapshot_pieces {
     x.resize(static_cast<std::size_t>(owned));
     x.resize(static_cast<std::size_t>(n), vec2::Zero());
     exchange_->forward(x);
-    const io::point_data fields = io::snapshot_fields(part, io::field_arrays::now, {&d, &v});
     io::point_data data;
-    for (const io::point_data::array& a : fields.arrays()) {
+    for (io::point_data::array& a : io::snapshot_fields(part, io::field_arrays::now, {&d, &v}).take()) {
       const auto w = static_cast<std::size_t>(a.components);
-      std::vector<double> rows(a.values.begin(), a.values.begin() + static_cast<std::ptrdiff_t>(w * owned));
-      rows.resize(w * static_cast<std::size_t>(n));
-      exchange_->forward_rows(rows, a.components);
-      data.add_values(a.name, a.components, std::move(rows));
+      a.values.resize(w * static_cast<std::size_t>(owned));  // the owned rows, then the piece's others
+      a.values.resize(w * static_cast<std::size_t>(n));
+      exchange_->forward_rows(a.values, a.components);
+      data.add_values(std::move(a.name), a.components, std::move(a.values));
     }
     std::vector<double> id(static_cast<std::size_t>(n));
     for (index_t i = 0; i < n; ++i) id[i] = static_cast<double>(h.global_particle(i));
