@@ -57,8 +57,10 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   const std::function<problem<M, Ct>()> make_problem = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
     pr.contact.set_enforcement(contact::enforcement::chosen::named(r.contact, penalty_stiffness<Case>(p)));
-    warn_if_too_large(pr.particles.size(), quadrature_point_count(r.quadrature, pr.mesh.cells(),
-                                                                  static_cast<index_t>(pr.mesh.node.size())));
+    if (r.machine_rank == 0)  // one warning per machine
+      warn_if_too_large(pr.particles.size(),
+                        quadrature_point_count(r.quadrature, pr.mesh.cells(), static_cast<index_t>(pr.mesh.node.size())),
+                        {r.processes > 1, r.processes_here, r.with_rank_0});
     return pr;
   };
   const run_policies policies{r.kernel, r.correction, r.quadrature, G::name, r.contact,

@@ -39,13 +39,21 @@ int launched_processes() {
 int main(int argc, char** argv) {
   using namespace rkpm::runner;
   const int processes = launched_processes();
-  int rank = 0;
+  int rank = 0, processes_here = 1, machine_rank = 0, with_rank_0 = 1;
 #ifdef RKPM_RUNNER_MPI
   // MPI only under mpiexec: a run started alone needs none of it.
   std::optional<rkpm::parallel::mpi_session> session;
   if (processes > 1) {
     session.emplace(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    // The processes that share this machine's memory, in the world's order.
+    MPI_Comm machine;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &machine);
+    MPI_Comm_size(machine, &processes_here);
+    MPI_Comm_rank(machine, &machine_rank);
+    with_rank_0 = rank == 0 ? 1 : 0;
+    MPI_Bcast(&with_rank_0, 1, MPI_INT, 0, machine);  // its first process: rank 0 if rank 0 is here
+    MPI_Comm_free(&machine);
   }
 #endif
   bool parsed = false;
@@ -59,6 +67,9 @@ int main(int argc, char** argv) {
     }
     run_request r = cl.run;
     r.processes = processes;
+    r.processes_here = processes_here;
+    r.machine_rank = machine_rank;
+    r.with_rank_0 = with_rank_0 != 0;
     if (r.ranks > 0 && r.ranks != processes)
       rkpm::fail("--ranks {}: this is {} process{}; start it with mpiexec -np {} (tools/rkpm run CASE --ranks {} does)",
                  r.ranks, processes, processes == 1 ? "" : "es", r.ranks, r.ranks);

@@ -38,17 +38,35 @@ inline double estimated_run_bytes(index_t particles, double points_per_particle)
   return static_cast<double>(particles) * (0.6e3 + 0.55e3 * points_per_particle);
 }
 
+// How many whole models a run holds at once on one machine: one on one process; on several
+// (ranks.hpp), every process there builds the whole model before it keeps its part, and rank 0
+// keeps a whole solver besides.
+struct machine_share {
+  bool divided = false;      // the run is on several processes
+  int processes = 1;         // its processes on this machine
+  bool holds_rank_0 = true;  // whether rank 0 is one of them
+  int copies() const { return processes + (divided && holds_rank_0 ? 1 : 0); }
+};
+
 // Prints a warning to stderr when the estimate exceeds what is available.
 // `points`: the quadrature points the rule will make (rkpm::quadrature_point_count).
-inline void warn_if_too_large(index_t particles, double points) {
+inline void warn_if_too_large(index_t particles, double points, machine_share here = {}) {
   const auto available = available_memory_bytes();
   const double points_per_particle = particles > 0 ? points / double(particles) : 0.0;
-  const double needed = estimated_run_bytes(particles, points_per_particle);
-  if (available && needed > *available)
+  const double one = estimated_run_bytes(particles, points_per_particle), needed = here.copies() * one;
+  if (!available || needed <= *available) return;
+  if (!here.divided)
     fmt::print(stderr,
                "rkpm_run: warning: {} particles need about {:.0f} MB (about {:.1f} KB per particle), but only {:.0f} MB "
                "is available: the run may be killed or swap; lower --resolution or free memory\n",
-               particles, needed / 1e6, needed / particles / 1e3, *available / 1e6);
+               particles, needed / 1e6, one / particles / 1e3, *available / 1e6);
+  else
+    fmt::print(stderr,
+               "rkpm_run: warning: the {} processes on this machine each build the whole model of {} particles{}: "
+               "about {:.0f} MB for {} copies (about {:.1f} KB per particle each), but only {:.0f} MB is available: the "
+               "run may be killed or swap; lower --resolution, run fewer processes per machine, or free memory\n",
+               here.processes, particles, here.holds_rank_0 ? ", and rank 0 keeps a whole solver" : "", needed / 1e6,
+               here.copies(), one / particles / 1e3, *available / 1e6);
 }
 
 }  // namespace rkpm::runner

@@ -30,6 +30,11 @@ struct run_request {
   int threads = 0;                 // 0: OpenMP's default (per process)
   int processes = 1;               // the processes mpiexec started (main.cpp), each stepping a part (ranks.hpp)
   int ranks = 0;                   // --ranks: the processes the command line expects (0: any)
+  // Where this process runs among them (main.cpp), for the memory warning (memory_estimate.hpp):
+  // the run's processes on its machine, its place there (0 speaks for the machine), and whether
+  // rank 0 is on it.
+  int processes_here = 1, machine_rank = 0;
+  bool with_rank_0 = true;
   long max_steps = 50'000'000;     // run_options::max_steps: longer runs are refused before they start
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;

@@ -18,13 +18,15 @@
         a body that inverts on 2 processes stops both with one line naming the quadrature point
         and the rank, the same point one process names, and summary.json says so; --ranks that
         differs from the processes started, and more processes than particles, are refused in one
-        line; no rank is left waiting (every run has a timeout)
+        line; no rank is left waiting (every run has a timeout); too little memory for the
+        processes on the machine is one warning that counts the whole models they build
 
 MPIEXEC is the launcher with its flags as one argument ("mpiexec --oversubscribe ..."). The
 reference is always the same program on one process: the division must not change a run.
 """
 import os
 import shutil
+import subprocess
 import sys
 
 import pieces
@@ -226,6 +228,17 @@ def errors(mpiexec, rkpm_run, work):
     check(r.returncode != 0 and "5 processes for 4 particles" in r.stderr, f"5 processes for 4 particles: "
                                                                            f"{r.stderr[-500:]}")
     print("ok  --ranks other than the processes started, and more processes than particles, are refused")
+
+    # Too little memory for the whole models the processes on this machine build, and rank 0's
+    # whole solver: one warning for the machine, not one per process (the memory forced small).
+    r = subprocess.run(mpiexec.split() + ["-np", "2", rkpm_run] + bar + ["--out", os.path.join(work, "memory")],
+                       capture_output=True, text=True, timeout=300,
+                       env=dict(os.environ, RKPM_AVAILABLE_MEMORY_BYTES="1e4"))
+    warnings = [l for l in r.stderr.splitlines() if "warning" in l]
+    check(r.returncode == 0 and len(warnings) == 1 and "the 2 processes on this machine each build the whole model of "
+          "96 particles, and rank 0 keeps a whole solver" in warnings[0] and "for 3 copies" in warnings[0],
+          f"the memory warning on 2 processes: {warnings} {r.stderr[-500:]}")
+    print(f"ok  one memory warning for the machine: {warnings[0][:100]}..." if warnings else "")
 
 
 def main():
