@@ -26,6 +26,7 @@
 #include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/local_model.hpp>
+#include <rkpm/parallel/mpi_block_sums.hpp>
 #include <rkpm/parallel/mpi_exchange.hpp>
 #include <rkpm/parallel/partition.hpp>
 #include <rkpm/solver/body_materials.hpp>

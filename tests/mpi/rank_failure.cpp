@@ -16,6 +16,7 @@
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
+#include <rkpm/parallel/mpi_block_sums.hpp>
 #include <rkpm/parallel/mpi_exchange.hpp>
 #include <rkpm/parallel/partition.hpp>
 

@@ -61,13 +61,13 @@ class run_observer {
   void operator()(const Solver& s) {
     if (std::exchange(skip_next_, false)) return;
     const double t = s.time(), end_time = s.options().end_time;
-    const bool last = t >= end_time * (1.0 - 1e-12);
+    const bool last = is_last(t, end_time);
     if (!quiet_) progress_.update(t, end_time, static_cast<long>(s.steps()));
     if (t >= record_.next_history || last) {
       add_history_row(s, t, last);
       record_.next_history += record_.history_interval;
     }
-    if (t >= record_.next_snapshot || last) {
+    if (snapshot_at(t, last)) {
       if (pieces_) {  // written by the ranks before this call (ranks.hpp)
         const std::string index = vtk_.next_file(".pvtu");
         vtk_.add(t, index);
@@ -96,15 +96,15 @@ class run_observer {
   // others through pass().
   bool needs_state(double t, double end_time) const {
     if (skip_next_) return false;
-    const bool last = t >= end_time * (1.0 - 1e-12);
-    return last || t >= record_.next_history || t >= record_.next_snapshot || figures_.due(t, last) ||
+    const bool last = is_last(t, end_time);
+    return last || t >= record_.next_history || snapshot_at(t, last) || figures_.due(t, last) ||
            (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint) || pending_interrupt().load() != 0 ||
            static_cast<bool>(hooks_.observe);
   }
   // The snapshot the call at time t writes, if any (empty if none): next to the .pvd, a .vtu, or
   // the .pvtu index of a snapshot the ranks write in pieces (write_snapshots_in_pieces).
   std::filesystem::path snapshot_due(double t, double end_time) const {
-    if (skip_next_ || !(t >= record_.next_snapshot || t >= end_time * (1.0 - 1e-12))) return {};
+    if (skip_next_ || !snapshot_at(t, is_last(t, end_time))) return {};
     return dir_ / vtk_.next_file(pieces_ ? ".pvtu" : ".vtu");
   }
   // A run on several processes: each rank writes its piece of every snapshot before the call
@@ -149,6 +149,10 @@ class run_observer {
   const figure_recorder<Case>& figures() const { return figures_; }
 
  private:
+  // The call at the end time (within rounding), and whether a call at t writes a snapshot.
+  static bool is_last(double t, double end_time) { return t >= end_time * (1.0 - 1e-12); }
+  bool snapshot_at(double t, bool last) const { return last || t >= record_.next_snapshot; }
+
   // The cells made anew and the arrays computed one at a time as they are written: at 10^6
   // particles the cells would hold 41 MB through the run, the raw arrays 200 MB at once.
   void write_snapshot(const Solver& s, double t) {

@@ -7,8 +7,8 @@
 // leave the other ranks waiting forever in their next exchange, which this rank never reaches.
 // So the work between two exchanges runs inside communicator::guarded(work): an exception is
 // kept, not thrown, and the rank goes on to the next exchange. Every exchange and reduction
-// (mpi_exchange.hpp) begins with agree(): one MPI_Allreduce of the lowest failing rank; if any
-// rank failed, that rank's message is broadcast and every rank throws the same rank_failure
+// (mpi_exchange.hpp, mpi_block_sums.hpp) begins with agree(): one MPI_Allreduce of the lowest
+// failing rank; if any rank failed, that rank's message is broadcast and every rank throws the same rank_failure
 // ("rank 1: ..."), from the same call, so each can stop cleanly (and MPI_Finalize). An error
 // thrown outside guarded() that escapes to the mpi_session's scope ends the job with MPI_Abort
 // (the session's destructor sees it unwinding), and one that escapes main makes the process

@@ -58,6 +58,31 @@ struct halo_plan {
   }
 };
 
+// The end of every plan (make_halo_plan, parallel/snapshot_pieces.hpp): the particles marked
+// in is_ghost become the ghosts (local ids after the owned ones, in increasing global id), the
+// receives group them by owner, and the sends list, rank by rank, the owned particles of the
+// (rank, global id) pairs in to_send. `local`: global id -> local id, the owned ones filled in.
+inline void link_ghosts(halo_plan& h, const std::vector<stored_index>& part, const std::vector<char>& is_ghost,
+                        std::vector<std::pair<stored_index, stored_index>>& to_send, std::vector<stored_index>& local) {
+  for (index_t I = 0; I < static_cast<index_t>(is_ghost.size()); ++I)
+    if (is_ghost[I]) {
+      local[I] = static_cast<stored_index>(h.owned.size() + h.ghosts.size());
+      h.ghosts.push_back(static_cast<stored_index>(I));
+    }
+  // Receives: the ghosts grouped by owner, each group in increasing global id.
+  std::vector<std::vector<stored_index>> from(h.ranks);
+  for (const stored_index I : h.ghosts) from[part[I]].push_back(local[I]);
+  for (int b = 0; b < h.ranks; ++b)
+    if (!from[b].empty()) h.receives.push_back({b, std::move(from[b])});
+  // Sends: (rank, particle) pairs in rank order, then global id.
+  std::ranges::sort(to_send);
+  to_send.erase(std::ranges::unique(to_send).begin(), to_send.end());
+  for (const auto& [b, I] : to_send) {
+    if (h.sends.empty() || h.sends.back().rank != b) h.sends.push_back({b, {}});
+    h.sends.back().particles.push_back(local[I]);
+  }
+}
+
 // The plan of `rank` for `partition` (as many parts as ranks) and the table at the points
 // (rows: points, columns: the partition's particles). Every rank builds its own from the same
 // global table and partition; nothing is communicated. For the whole step two more sets of
@@ -140,23 +165,7 @@ halo_plan make_halo_plan(const particle_partition& partition, const shape_table<
       for (int b = 0; b < h.ranks; ++b)
         if (b != rank) to_send.emplace_back(b, I);
   }
-  for (index_t I = 0; I < n; ++I)
-    if (is_ghost[I]) {
-      local[I] = static_cast<stored_index>(h.owned.size() + h.ghosts.size());
-      h.ghosts.push_back(static_cast<stored_index>(I));
-    }
-  // Receives: the ghosts grouped by owner, each group in increasing global id.
-  std::vector<std::vector<stored_index>> from(h.ranks);
-  for (const stored_index I : h.ghosts) from[part[I]].push_back(local[I]);
-  for (int b = 0; b < h.ranks; ++b)
-    if (!from[b].empty()) h.receives.push_back({b, std::move(from[b])});
-  // Sends: (rank, particle) pairs in rank order, then global id.
-  std::ranges::sort(to_send);
-  to_send.erase(std::ranges::unique(to_send).begin(), to_send.end());
-  for (const auto& [b, I] : to_send) {
-    if (h.sends.empty() || h.sends.back().rank != b) h.sends.push_back({b, {}});
-    h.sends.back().particles.push_back(local[I]);
-  }
+  link_ghosts(h, part, is_ghost, to_send, local);
   return h;
 }
 

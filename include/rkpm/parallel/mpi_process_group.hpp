@@ -2,8 +2,9 @@
 // mpi_process_group: the process_group of the time step (core/process_group.hpp) on MPI, over one
 // rank's plans (docs/method.md section 9.8):
 //   forward        halo_exchange::forward along the halo plan (parallel/mpi_exchange.hpp)
-//   sum_particles  global_block_sums<K>::combine over the particle partition, blocks of
-//                  block_sums' size (the blocks a rank owns whole summed by the caller)
+//   sum_particles  global_block_sums<K>::combine (parallel/mpi_block_sums.hpp) over the
+//                  particle partition, blocks of block_sums' size (the blocks a rank owns
+//                  whole summed by the caller)
 //   sum_points     global_block_sums<1> over the points' owners (point_owners), blocks of the
 //                  traversal's tiles
 //   max, min, guarded, agree   the communicator's
@@ -22,6 +23,7 @@
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
+#include <rkpm/parallel/mpi_block_sums.hpp>
 #include <rkpm/parallel/mpi_exchange.hpp>
 #include <rkpm/parallel/partition.hpp>
 

@@ -19,7 +19,6 @@
 // into piece 0's <FieldData>.
 // Needs MPI (the opt-in target rkpm::mpi).
 
-#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -80,21 +79,7 @@ inline snapshot_piece snapshot_piece_plan(const particle_partition& partition, c
       if (writer != rank && part[I] == rank) to_send.emplace_back(writer, I);
     }
   }
-  for (index_t I = 0; I < n; ++I)
-    if (is_ghost[I]) {
-      local[I] = static_cast<stored_index>(h.owned.size() + h.ghosts.size());
-      h.ghosts.push_back(static_cast<stored_index>(I));
-    }
-  std::vector<std::vector<stored_index>> from(h.ranks);
-  for (const stored_index I : h.ghosts) from[part[I]].push_back(local[I]);
-  for (int b = 0; b < h.ranks; ++b)
-    if (!from[b].empty()) h.receives.push_back({b, std::move(from[b])});
-  std::ranges::sort(to_send);
-  to_send.erase(std::ranges::unique(to_send).begin(), to_send.end());
-  for (const auto& [b, I] : to_send) {
-    if (h.sends.empty() || h.sends.back().rank != b) h.sends.push_back({b, {}});
-    h.sends.back().particles.push_back(local[I]);
-  }
+  link_ghosts(h, part, is_ghost, to_send, local);
   for (std::size_t c = 0, begin = 0; c < whole.size(); begin = static_cast<std::size_t>(whole.offsets[c++])) {
     if (part[whole.connectivity[begin]] != rank) continue;
     for (auto k = begin; k < static_cast<std::size_t>(whole.offsets[c]); ++k)
