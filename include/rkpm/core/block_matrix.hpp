@@ -13,39 +13,56 @@
 // arithmetic (x + 0 = x); only the sign of an exact zero could differ, which no sum, product
 // or quotient of the material updates turns into a different nonzero value.
 
+#include <concepts>
+
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
 
-struct block_matrix {
-  double xx = 1.0, xy = 0.0, yx = 0.0, yy = 1.0, zz = 1.0;  // the identity by default
+// T: double, or a SIMD vector of doubles holding one entry of several points (core/simd.hpp),
+// which the batched material update (material/j2_batch.hpp) computes with the same formulas.
+template <class T>
+struct basic_block_matrix {
+  T xx = T(1.0), xy = T(0.0), yx = T(0.0), yy = T(1.0), zz = T(1.0);  // the identity by default
 
-  static block_matrix of(const mat3& a) { return {a(0, 0), a(0, 1), a(1, 0), a(1, 1), a(2, 2)}; }
-  mat3 full() const {
+  static basic_block_matrix of(const mat3& a)
+    requires std::same_as<T, double>
+  {
+    return {a(0, 0), a(0, 1), a(1, 0), a(1, 1), a(2, 2)};
+  }
+  mat3 full() const
+    requires std::same_as<T, double>
+  {
     mat3 a;
     a << xx, xy, 0.0,  //
         yx, yy, 0.0,   //
         0.0, 0.0, zz;
     return a;
   }
-  bool operator==(const block_matrix&) const = default;
+  bool operator==(const basic_block_matrix&) const
+    requires std::same_as<T, double>
+  = default;
 
-  block_matrix transpose() const { return {xx, yx, xy, yy, zz}; }
+  basic_block_matrix transpose() const { return {xx, yx, xy, yy, zz}; }
   // Eigen's 3x3 determinant, a00 (a11 a22 - a12 a21) - a01 (a10 a22 - a12 a20) + ..., without
   // its zero terms.
-  double determinant() const { return xx * (yy * zz) - xy * (yx * zz); }
+  T determinant() const { return xx * (yy * zz) - xy * (yx * zz); }
 };
 
+using block_matrix = basic_block_matrix<double>;
+
 // (a b)_ij = sum_k a_ik b_kj, k in order, the zero terms left out.
-inline block_matrix operator*(const block_matrix& a, const block_matrix& b) {
+template <class T>
+basic_block_matrix<T> operator*(const basic_block_matrix<T>& a, const basic_block_matrix<T>& b) {
   return {a.xx * b.xx + a.xy * b.yx, a.xx * b.xy + a.xy * b.yy,  //
           a.yx * b.xx + a.yy * b.yx, a.yx * b.xy + a.yy * b.yy, a.zz * b.zz};
 }
 
 // The inverse, as material/hencky.hpp's block_inverse writes it out for a mat3.
-inline block_matrix inverse(const block_matrix& a) {
-  const double det2 = a.xx * a.yy - a.xy * a.yx;
-  return {a.yy / det2, -a.xy / det2, -a.yx / det2, a.xx / det2, 1.0 / a.zz};
+template <class T>
+basic_block_matrix<T> inverse(const basic_block_matrix<T>& a) {
+  const T det2 = a.xx * a.yy - a.xy * a.yx;
+  return {a.yy / det2, -a.xy / det2, -a.yx / det2, a.xx / det2, T(1.0) / a.zz};
 }
 
 }  // namespace rkpm

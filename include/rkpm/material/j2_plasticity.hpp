@@ -169,6 +169,12 @@ class j2_plasticity {
   double dilatational_wave_speed() const { return constants_.dilatational_wave_speed(); }
   const elastic_constants& constants() const { return constants_; }
   const H& hardening() const { return hardening_; }
+  // What the batched update (j2_batch.hpp) computes with, the values this class uses.
+  double shear_modulus() const { return mu_; }
+  double bulk_modulus() const { return bulk_; }
+  double newton_tolerance() const { return tolerance_; }
+  int max_newton_iterations() const { return max_iterations_; }
+  double lowest_flow_stress() const { return lowest_flow_stress_; }
 
  private:
   // tau = K tr(eps_e) 1 + 2 mu dev(eps_e) in the principal frame of b_e.

@@ -15,6 +15,7 @@
 // an error naming the first such point, its position and the step.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -24,7 +25,9 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/block_matrix.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/io/checkpoint.hpp>
+#include <rkpm/material/j2_batch.hpp>
 #include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_forces.hpp>
@@ -52,6 +55,12 @@ class point_materials {
   static constexpr bool stress_recomputed = requires(const M& m, const mat3& F, const state_type& s) {
     { m.current_kirchhoff_stress(F, s) } -> std::same_as<mat3>;
   };
+  // The material has a batched update (material/j2_batch.hpp): the force loop takes simd_lanes
+  // points at a time.
+  static constexpr bool batched =
+      requires(const M& m, const material::block_lanes& F, state_type* s, const material_step& step) {
+        { material::kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<material::block_lanes>;
+      } && state_records_F && stress_recomputed;
 
   point_materials() = default;
   point_materials(const discrete_model& m, const materials_by_body<M>& material)
@@ -64,18 +73,16 @@ class point_materials {
     support_inverse_ = m.mean_support().cwiseInverse();
   }
 
-  // f_int at coefficients d; advances the material states to the new F.
+  // f_int at coefficients d; advances the material states to the new F. A material with a
+  // batched update (material/j2_batch.hpp) takes simd_lanes points at a time, with the same bits.
   void internal_force(const discrete_model& m, const materials_by_body<M>& material, const std::vector<vec2>& d,
                       std::vector<vec2>& f_int, step_context where) {
     const point_traversal& tr = m.traversal;
     tile_.assign(tr.tiles(), tile_summary{});
     const double log_dt = where.dt > 0.0 ? std::log(where.dt) : std::numeric_limits<double>::quiet_NaN();
-    assemble_point_forces<G>(m, d, f_int, [&](index_t t, index_t q, const point_gradient& g, mat2& S, double& hoop) {
+    const auto point = [&](index_t t, index_t q, const point_gradient& g, mat2& S, double& hoop) {
       tile_summary& tile = tile_[t];  // its points are visited in order by one thread
-      const vec2& X = m.points.position[q];
-      mat3 F = mat3::Identity();
-      F.topLeftCorner<2, 2>() += g.H;
-      F(2, 2) = G::out_of_plane_stretch(g.u, X);
+      const mat3 F = deformation_gradient_at(m, q, g);
       const double J = block_matrix::of(F).determinant();  // F.determinant()'s value, fewer flops
       if (!(J > 0.0) || !std::isfinite(J)) {
         tile.fail(q, failure::inverted, J);
@@ -96,12 +103,17 @@ class point_materials {
         return;
       }
       if constexpr (!stress_recomputed) tau_[q] = block_matrix::of(tau);
-      const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
-      S = tau.topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
-      hoop = G::is_axisymmetric ? tau(2, 2) / F(2, 2) * m.points.weight[q] / X[0] : 0.0;
-      tile.narrowest = std::min(tile.narrowest, std::min(support_stretch(Fi), F(2, 2)));
-      tile.plastic += state_[q].plastic_work * m.points.weight[q];
-    });
+      point_force(m, tile, q, F, tau, S, hoop);
+    };
+    if constexpr (batched) {
+      assemble_point_batches<G, simd_lanes>(
+          m, d, f_int, [&](index_t t, index_t q0, int n, const point_gradient* g, mat2* S, double* hoop) {
+            if (n < simd_lanes || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
+              for (int k = 0; k < n; ++k) point(t, q0 + k, g[k], S[k], hoop[k]);
+          });
+    } else {
+      assemble_point_forces<G>(m, d, f_int, point);
+    }
     // The tiles in order: the same sums and the same first failure whatever the thread count.
     double narrowest = std::numeric_limits<double>::infinity(), plastic = 0.0;
     for (const tile_summary& tile : tile_) {
@@ -166,6 +178,49 @@ class point_materials {
       det = J;
     }
   };
+
+  // F_q = I + H_q in-plane, F33 from the geometry.
+  static mat3 deformation_gradient_at(const discrete_model& m, index_t q, const point_gradient& g) {
+    mat3 F = mat3::Identity();
+    F.topLeftCorner<2, 2>() += g.H;
+    F(2, 2) = G::out_of_plane_stretch(g.u, m.points.position[q]);
+    return F;
+  }
+
+  // S_q and h_q from F_q and tau_q, and what the point adds to its tile's summary.
+  RKPM_HOT_INLINE void point_force(const discrete_model& m, tile_summary& tile, index_t q, const mat3& F,
+                                   const mat3& tau, mat2& S, double& hoop) {
+    const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
+    S = tau.topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
+    hoop = G::is_axisymmetric ? tau(2, 2) / F(2, 2) * m.points.weight[q] / m.points.position[q][0] : 0.0;
+    tile.narrowest = std::min(tile.narrowest, std::min(support_stretch(Fi), F(2, 2)));
+    tile.plastic += state_[q].plastic_work * m.points.weight[q];
+  }
+
+  // The batched update of points q0 .. q0 + simd_lanes - 1 (material/j2_batch.hpp). False, with
+  // nothing changed, where the point-by-point update must decide: a lane with det F <= 0 or
+  // not finite, lanes of bodies with different materials, or a return that failed; the caller
+  // then updates the points one by one, which reports the first failure as always.
+  bool batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t, index_t q0,
+                    const point_gradient* g, mat2* S, double* hoop, step_context where, double log_dt) {
+    std::array<mat3, simd_lanes> F;
+    for (int k = 0; k < simd_lanes; ++k) {
+      F[k] = deformation_gradient_at(m, q0 + k, g[k]);
+      const double J = block_matrix::of(F[k]).determinant();
+      if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
+    }
+    material::block_lanes tau;
+    try {
+      tau = material::kirchhoff_stress_batch(
+          material.at_point(q0), material::detail::gather_block([&](int k) { return block_matrix::of(F[k]); }),
+          &state_[q0], material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
+    } catch (const std::exception&) {
+      return false;
+    }
+    for (int k = 0; k < simd_lanes; ++k)
+      point_force(m, tile_[t], q0 + k, F[k], material::detail::lane_of(tau, k).full(), S[k], hoop[k]);
+    return true;
+  }
 
   const block_matrix& deformation_block(index_t q) const {
     if constexpr (state_records_F) return state_[q].previous_deformation;

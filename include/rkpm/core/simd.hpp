@@ -1,0 +1,34 @@
+#pragma once
+// simd_double: the vector of doubles the batched material update computes with (one point per
+// lane), std::experimental::simd's native width for the flags the user compiles with: 2 lanes
+// with x86-64's baseline SSE2, 4 with AVX2 (-march=x86-64-v3), 8 with AVX-512. Its +, -, *, /
+// and sqrt round as the scalar operations do, so a batched update that writes the scalar
+// formulas in the same order gives the scalar update's bits. The transcendental functions are
+// taken lane by lane from the C library (lanewise), for the same reason: a vectorized log or exp
+// would move results by rounding.
+
+#include <experimental/simd>
+
+#include <rkpm/core/types.hpp>
+
+namespace rkpm {
+
+namespace stdx = std::experimental;
+
+using simd_double = stdx::native_simd<double>;
+using simd_mask = simd_double::mask_type;
+inline constexpr int simd_lanes = static_cast<int>(simd_double::size());
+
+// The lanes of x, each passed through f (a scalar function of a double).
+template <class F>
+simd_double lanewise(const simd_double& x, F&& f) {
+  return simd_double([&](auto lane) { return f(x[lane]); });
+}
+
+// Lane k of the result is get(k): a gather from an array of structures.
+template <class Get>
+simd_double gather_lanes(Get&& get) {
+  return simd_double([&](auto lane) { return get(static_cast<int>(lane)); });
+}
+
+}  // namespace rkpm
