@@ -15,6 +15,7 @@
 
 #include <concepts>
 
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -53,14 +54,14 @@ using block_matrix = basic_block_matrix<double>;
 
 // (a b)_ij = sum_k a_ik b_kj, k in order, the zero terms left out.
 template <class T>
-basic_block_matrix<T> operator*(const basic_block_matrix<T>& a, const basic_block_matrix<T>& b) {
+RKPM_HOT_INLINE basic_block_matrix<T> operator*(const basic_block_matrix<T>& a, const basic_block_matrix<T>& b) {
   return {a.xx * b.xx + a.xy * b.yx, a.xx * b.xy + a.xy * b.yy,  //
           a.yx * b.xx + a.yy * b.yx, a.yx * b.xy + a.yy * b.yy, a.zz * b.zz};
 }
 
 // The inverse, as material/hencky.hpp's block_inverse writes it out for a mat3.
 template <class T>
-basic_block_matrix<T> inverse(const basic_block_matrix<T>& a) {
+RKPM_HOT_INLINE basic_block_matrix<T> inverse(const basic_block_matrix<T>& a) {
   const T det2 = a.xx * a.yy - a.xy * a.yx;
   return {a.yy / det2, -a.xy / det2, -a.yx / det2, a.xx / det2, T(1.0) / a.zz};
 }
