@@ -30,6 +30,7 @@
 #include <rkpm/material/j2_batch.hpp>
 #include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/point_force_lanes.hpp>
 #include <rkpm/solver/point_forces.hpp>
 
 namespace rkpm {
@@ -209,16 +210,24 @@ class point_materials {
       const double J = block_matrix::of(F[k]).determinant();
       if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
     }
+    const material::block_lanes F_lanes = material::detail::gather_block([&](int k) { return block_matrix::of(F[k]); });
     material::block_lanes tau;
     try {
-      tau = material::kirchhoff_stress_batch(
-          material.at_point(q0), material::detail::gather_block([&](int k) { return block_matrix::of(F[k]); }),
-          &state_[q0], material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
+      tau = material::kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
+                                             material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
     } catch (const std::exception&) {
       return false;
     }
-    for (int k = 0; k < simd_lanes; ++k)
-      point_force(m, tile_[t], q0 + k, F[k], material::detail::lane_of(tau, k).full(), S[k], hoop[k]);
+    // point_force of the lanes (solver/point_force_lanes.hpp), the tile's sums in point order.
+    const simd_double weight = gather_lanes([&](int k) { return m.points.weight[q0 + k]; });
+    const simd_double radius = gather_lanes([&](int k) { return m.points.position[q0 + k][0]; });
+    const simd_double stretch =
+        support_stretch_lanes(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
+    tile_summary& tile = tile_[t];
+    for (int k = 0; k < simd_lanes; ++k) {
+      tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
+      tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k];
+    }
     return true;
   }
 

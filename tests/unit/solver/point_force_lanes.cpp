@@ -1,0 +1,121 @@
+// The end of the batched point rule (solver/point_force_lanes.hpp) against the Eigen expressions
+// of the point-by-point rule it stands for (solver/point_materials.hpp: S = tau F^-T w, the
+// hoop term, the support stretch): every lane's bits, on deformation gradients that stretch,
+// shear, turn and compress, in both geometries, and a support stretch of 1 at F = I.
+#include <doctest/doctest.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include <rkpm/geometry/axisymmetric.hpp>
+#include <rkpm/geometry/plane_strain.hpp>
+#include <rkpm/solver/point_force_lanes.hpp>
+
+namespace point_force_lanes_test {
+
+using rkpm::mat2;
+using rkpm::mat3;
+using rkpm::simd_double;
+using rkpm::simd_lanes;
+using rkpm::vec2;
+using lanes = rkpm::basic_block_matrix<simd_double>;
+
+// The same bits, unless Eigen's 2x2 products use fused multiply-adds (a build with -march for a
+// machine with FMA units, RKPM_NATIVE_ARCH), which the lanes' separate products and sums do not:
+// then rounding apart, relative to the size of the terms summed (scale).
+bool agree(double a, double b, double scale) {
+#ifdef EIGEN_VECTORIZE_FMA
+  return std::abs(a - b) <= 1e-14 * scale;
+#else
+  (void)scale;
+  return std::memcmp(&a, &b, sizeof a) == 0;
+#endif
+}
+
+// Lane k of sample n: a block-structured F and a symmetric-in-plane tau of order 1e8 Pa.
+mat3 deformation(int n, int k) {
+  const double t = 0.37 * n + 0.11 * k, c = std::cos(t), s = std::sin(t);
+  mat3 F = mat3::Zero();
+  F.topLeftCorner<2, 2>() << (1.0 + 0.3 * s) * c, -0.4 * s + 0.1 * t, (0.8 - 0.2 * c) * s, (1.0 - 0.25 * s) * c + 0.9;
+  F(2, 2) = 1.0 + 0.2 * std::sin(2.0 * t);
+  return F;
+}
+mat3 stress(int n, int k) {
+  const double t = 0.53 * n + 0.29 * k;
+  mat3 tau = mat3::Zero();
+  tau.topLeftCorner<2, 2>() << 3e8 * std::sin(t), -1e8 * std::cos(3.0 * t), -1e8 * std::cos(3.0 * t), -2e8 * std::cos(t);
+  tau(2, 2) = 1.5e8 * std::sin(2.0 * t);
+  return tau;
+}
+
+// The point-by-point rule's expressions (point_materials::point_force and support_stretch).
+double stretch_of(const mat2& Fi, const vec2& support_inverse) {
+  const mat2 B = Fi.transpose() * support_inverse.asDiagonal();
+  const double s = B.squaredNorm(), det = B.determinant();
+  const double largest = std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
+  return support_inverse.maxCoeff() / largest;
+}
+
+template <class G>
+void check_samples() {
+  const vec2 support_inverse(1.0 / 2.5e-3, 1.0 / 0.8e-3);
+  for (int n = 0; n < 40; ++n) {
+    std::array<mat3, simd_lanes> F, tau;
+    std::array<double, simd_lanes> weight, radius;
+    for (int k = 0; k < simd_lanes; ++k) {
+      F[k] = deformation(n, k);
+      tau[k] = stress(n, k);
+      weight[k] = 1e-7 * (1.0 + 0.1 * k + 0.01 * n);
+      radius[k] = 1e-3 * (0.5 + k + 0.1 * n);
+    }
+    const auto block = [](const std::array<mat3, simd_lanes>& a) {
+      return lanes{rkpm::gather_lanes([&](int k) { return a[k](0, 0); }), rkpm::gather_lanes([&](int k) { return a[k](0, 1); }),
+                   rkpm::gather_lanes([&](int k) { return a[k](1, 0); }), rkpm::gather_lanes([&](int k) { return a[k](1, 1); }),
+                   rkpm::gather_lanes([&](int k) { return a[k](2, 2); })};
+    };
+    std::array<mat2, simd_lanes> S;
+    std::array<double, simd_lanes> hoop;
+    const lanes Fi = rkpm::point_forces_in_lanes<G>(block(F), block(tau), simd_double(weight.data(), rkpm::stdx::element_aligned),
+                                                    simd_double(radius.data(), rkpm::stdx::element_aligned), S.data(), hoop.data());
+    const simd_double stretch = rkpm::support_stretch_lanes(Fi, support_inverse);
+    for (int k = 0; k < simd_lanes; ++k) {
+      CAPTURE(n);
+      CAPTURE(k);
+      const mat2 Fi_k = F[k].topLeftCorner<2, 2>().inverse();
+      const mat2 S_k = tau[k].topLeftCorner<2, 2>() * Fi_k.transpose() * weight[k];
+      const double hoop_k = G::is_axisymmetric ? tau[k](2, 2) / F[k](2, 2) * weight[k] / radius[k] : 0.0;
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+          CHECK(agree(S[k](i, j), S_k(i, j), tau[k].cwiseAbs().maxCoeff() * Fi_k.cwiseAbs().maxCoeff() * weight[k]));
+      CHECK(agree(hoop[k], hoop_k, std::abs(hoop_k)));
+      CHECK(agree(stretch[k], stretch_of(Fi_k, support_inverse), 1.0));
+    }
+  }
+}
+
+TEST_CASE("point_force_lanes: S, the hoop term and the support stretch of every lane as point by point") {
+  check_samples<rkpm::geometry::axisymmetric>();
+  check_samples<rkpm::geometry::plane_strain>();
+}
+
+TEST_CASE("point_force_lanes: at F = I the support stretch is 1 and S = tau w") {
+  const lanes identity{};
+  lanes tau{simd_double(2e8), simd_double(5e7), simd_double(5e7), simd_double(-1e8), simd_double(3e7)};
+  std::array<mat2, simd_lanes> S;
+  std::array<double, simd_lanes> hoop;
+  const lanes Fi = rkpm::point_forces_in_lanes<rkpm::geometry::axisymmetric>(identity, tau, simd_double(2.0), simd_double(4.0),
+                                                                             S.data(), hoop.data());
+  const simd_double stretch = rkpm::support_stretch_lanes(Fi, vec2(1.0 / 3e-3, 1.0 / 1e-3));
+  for (int k = 0; k < simd_lanes; ++k) {
+    CHECK(stretch[k] == doctest::Approx(1.0).epsilon(1e-15));
+    CHECK(S[k](0, 0) == 4e8);
+    CHECK(S[k](0, 1) == 1e8);
+    CHECK(S[k](1, 1) == -2e8);
+    CHECK(hoop[k] == 3e7 * 2.0 / 4.0);
+  }
+}
+
+}  // namespace point_force_lanes_test
