@@ -137,4 +137,10 @@ block_lanes kirchhoff_stress_batch(const j2_plasticity<H>& m, const block_lanes&
   return frame.assemble({mean_stress + two_mu * dev[0], mean_stress + two_mu * dev[1], mean_stress + two_mu * dev[2]});
 }
 
+// J2 always updates its points in lanes (a material that wraps several laws says per body).
+template <Hardening H>
+constexpr bool updates_in_lanes(const j2_plasticity<H>&) {
+  return true;
+}
+
 }  // namespace rkpm::material

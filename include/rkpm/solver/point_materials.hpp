@@ -56,11 +56,13 @@ class point_materials {
   static constexpr bool stress_recomputed = requires(const M& m, const mat3& F, const state_type& s) {
     { m.current_kirchhoff_stress(F, s) } -> std::same_as<mat3>;
   };
-  // The material has a batched update (material/j2_batch.hpp): the force loop takes simd_lanes
-  // points at a time.
+  // The material has a batched update (material/j2_batch.hpp; found by argument-dependent
+  // lookup, so a material of another namespace can offer one, with updates_in_lanes(m) saying
+  // for which of its bodies): the force loop takes simd_lanes points at a time.
   static constexpr bool batched =
       requires(const M& m, const material::block_lanes& F, state_type* s, const material_step& step) {
-        { material::kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<material::block_lanes>;
+        { kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<material::block_lanes>;
+        { updates_in_lanes(m) } -> std::same_as<bool>;
       } && state_records_F && stress_recomputed;
 
   point_materials() = default;
@@ -200,7 +202,8 @@ class point_materials {
 
   // The batched update of points q0 .. q0 + simd_lanes - 1 (material/j2_batch.hpp). False, with
   // nothing changed, where the point-by-point update must decide: a lane with det F <= 0 or
-  // not finite, lanes of bodies with different materials, or a return that failed; the caller
+  // not finite, lanes of bodies with different materials, a material that updates its points one
+  // by one (updates_in_lanes), or a return that failed; the caller
   // then updates the points one by one, which reports the first failure as always.
   bool batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t, index_t q0,
                     const point_gradient* g, mat2* S, double* hoop, step_context where, double log_dt) {
@@ -210,10 +213,11 @@ class point_materials {
       const double J = block_matrix::of(F[k]).determinant();
       if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
     }
+    if (!updates_in_lanes(material.at_point(q0))) return false;
     const material::block_lanes F_lanes = material::detail::gather_block([&](int k) { return block_matrix::of(F[k]); });
     material::block_lanes tau;
     try {
-      tau = material::kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
+      tau = kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
                                              material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
     } catch (const std::exception&) {
       return false;

@@ -25,6 +25,7 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/material/hardening.hpp>
+#include <rkpm/material/j2_batch.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/material/radial_return.hpp>
@@ -133,10 +134,21 @@ class material_type {
   const hardening_law& hardening() const { return j2_.hardening(); }
   // The Johnson-Cook material, nullptr for J2 and elastic.
   const material::johnson_cook* johnson_cook() const { return johnson_cook_ ? &*johnson_cook_ : nullptr; }
+  // The J2 material (with a law that never yields for an elastic body).
+  const j2_type& j2() const { return j2_; }
 
  private:
   j2_type j2_;
   std::optional<material::johnson_cook> johnson_cook_;
 };
+
+// The force loop's batched update (material/j2_batch.hpp, solver/point_materials.hpp): J2 and
+// elastic bodies in lanes, Johnson-Cook's points one by one.
+inline bool updates_in_lanes(const material_type& m) { return m.johnson_cook() == nullptr; }
+template <class State>
+material::block_lanes kirchhoff_stress_batch(const material_type& m, const material::block_lanes& F, State* s,
+                                             const material_step& step) {
+  return material::kirchhoff_stress_batch(m.j2(), F, s, step);
+}
 
 }  // namespace rkpm::runner::case_file
