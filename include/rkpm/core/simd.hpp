@@ -5,10 +5,12 @@
 // and sqrt round as the scalar operations do, so a batched update that writes the scalar
 // formulas in the same order gives the scalar update's bits. The transcendental functions are
 // taken lane by lane from the C library (lanewise), for the same reason: a vectorized log or exp
-// would move results by rounding.
+// would move results by rounding. block_lanes holds a block matrix of every lane
+// (core/block_matrix.hpp), one entry per vector.
 
 #include <experimental/simd>
 
+#include <rkpm/core/block_matrix.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -30,5 +32,18 @@ template <class Get>
 simd_double gather_lanes(Get&& get) {
   return simd_double([&](auto lane) { return get(static_cast<int>(lane)); });
 }
+
+using block_lanes = basic_block_matrix<simd_double>;
+
+// The block matrices item(0), item(1), ... as lanes.
+template <class Item>
+block_lanes gather_block(Item&& item) {
+  return {gather_lanes([&](int k) { return item(k).xx; }), gather_lanes([&](int k) { return item(k).xy; }),
+          gather_lanes([&](int k) { return item(k).yx; }), gather_lanes([&](int k) { return item(k).yy; }),
+          gather_lanes([&](int k) { return item(k).zz; })};
+}
+
+// Lane k's block matrix.
+inline block_matrix lane_of(const block_lanes& a, int k) { return {a.xx[k], a.xy[k], a.yx[k], a.yy[k], a.zz[k]}; }
 
 }  // namespace rkpm

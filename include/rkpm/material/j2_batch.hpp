@@ -3,12 +3,13 @@
 // 4.4) for simd_lanes points at once, one point per lane of simd_double (core/simd.hpp): the
 // force loop's batched path (solver/point_materials.hpp). The elastic predictor, the principal
 // frame, the Hencky stress and the exponential map of the return are vector arithmetic over the
-// lanes; what differs from lane to lane stays scalar: the logs and exps (the C library's, lane by
-// lane, and Eigen's exp as the scalar update takes it), the yield check and the radial return of the lanes that yield (a Newton iteration of
-// its own length per lane, radial_return.hpp). Every formula is the scalar one in the same order,
-// so each lane gets the bits the scalar update gives its point (tests/unit/material/j2_batch.cpp
-// checks this); only a build that contracts multiply-adds differently in vector and scalar code
-// (-ffp-contract=fast with FMA units, GCC's default under -march=native) can differ, by rounding.
+// lanes; what differs from lane to lane stays scalar: the logs (the C library's, lane by lane),
+// the exps (Eigen's array exp of each yielding lane, as the scalar update takes them) and the
+// yield check and radial return (j2_plasticity::plastic_flow_of: a Newton iteration of its own
+// length per lane). Every formula is the scalar one in the same order, so each lane gets the bits
+// the scalar update gives its point (tests/unit/material/j2_batch.cpp checks this); only a build
+// whose vector and scalar code round multiply-adds differently (FMA units under -march=native)
+// can differ, by rounding.
 
 #include <array>
 #include <cmath>
@@ -17,23 +18,10 @@
 #include <rkpm/core/block_matrix.hpp>
 #include <rkpm/core/simd.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
-#include <rkpm/material/radial_return.hpp>
 
 namespace rkpm::material {
 
-using block_lanes = basic_block_matrix<simd_double>;
-
 namespace detail {
-
-// Lane k of the result is the block matrix member `entry` of item(k).
-template <class Item>
-block_lanes gather_block(Item&& item) {
-  return {gather_lanes([&](int k) { return item(k).xx; }), gather_lanes([&](int k) { return item(k).xy; }),
-          gather_lanes([&](int k) { return item(k).yx; }), gather_lanes([&](int k) { return item(k).yy; }),
-          gather_lanes([&](int k) { return item(k).zz; })};
-}
-
-inline block_matrix lane_of(const block_lanes& a, int k) { return {a.xx[k], a.xy[k], a.yx[k], a.yy[k], a.zz[k]}; }
 
 // principal_frame (hencky.hpp) over the lanes: the in-plane eigenvalues and the frame's double
 // angle, and sum v_i n_i n_i^T back from it.
@@ -74,8 +62,8 @@ block_lanes kirchhoff_stress_batch(const j2_plasticity<H>& m, const block_lanes&
                                    const material_step& step) {
   const double mu = m.shear_modulus(), three_mu = 3.0 * mu;
   // The elastic predictor (j2_trial::of).
-  const block_lanes F_n = detail::gather_block([&](int k) -> const block_matrix& { return s[k].previous_deformation; });
-  const block_lanes b_n = detail::gather_block([&](int k) -> const block_matrix& { return s[k].elastic_left_cauchy_green; });
+  const block_lanes F_n = gather_block([&](int k) -> const block_matrix& { return s[k].previous_deformation; });
+  const block_lanes b_n = gather_block([&](int k) -> const block_matrix& { return s[k].elastic_left_cauchy_green; });
   const block_lanes f = F * inverse(F_n);
   const block_lanes b_trial = f * b_n * f.transpose();
   const detail::frame_lanes frame = detail::frame_lanes::of(b_trial);
@@ -86,20 +74,15 @@ block_lanes kirchhoff_stress_batch(const j2_plasticity<H>& m, const block_lanes&
   std::array<simd_double, 3> dev{eps[0] - third, eps[1] - third, eps[2] - third};
   const simd_double q = std::sqrt(1.5) * 2.0 * mu * stdx::sqrt(dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]);
 
-  // The yield check and the return, lane by lane (j2_plasticity::kirchhoff_stress).
+  // The yield check and the return, lane by lane (j2_plasticity::plastic_flow_of).
   std::array<double, simd_lanes> dgamma{}, work{};
   simd_mask yields(false);
   for (int k = 0; k < simd_lanes; ++k) {
-    const double q_k = q[k], eps_p = s[k].equivalent_plastic_strain;
-    if (!(q_k > m.lowest_flow_stress())) continue;
     const material_step at{step.dt, step.time, state_temperature(s[k]), step.log_dt};
-    const double yield = flow_stress_at(m.hardening(), eps_p, flow_point{0.0, at.temperature});
-    if (!(q_k > yield)) continue;
-    const radial_return_result rr = radial_return(m.hardening(), q_k, three_mu, eps_p, m.newton_tolerance(),
-                                                  m.max_newton_iterations(), yield, at);
-    dgamma[k] = rr.increment;
-    work[k] = plastic_work_increment(m.hardening(), eps_p, rr.increment, yield, rr.flow_stress);
-    yields[k] = true;
+    const auto flow = m.plastic_flow_of(q[k], s[k].equivalent_plastic_strain, at);
+    yields[k] = flow.yields;
+    dgamma[k] = flow.increment;
+    work[k] = flow.work;
   }
 
   // The exponential map (j2_trial::return_by) where a lane yields, the trial b_e elsewhere.
@@ -124,12 +107,12 @@ block_lanes kirchhoff_stress_batch(const j2_plasticity<H>& m, const block_lanes&
     stdx::where(yields, b_e.zz) = returned.zz;
   }
   for (int k = 0; k < simd_lanes; ++k) {
-    s[k].elastic_left_cauchy_green = detail::lane_of(b_e, k);
+    s[k].elastic_left_cauchy_green = lane_of(b_e, k);
     if (yields[k]) {
       s[k].plastic_work += work[k];
       s[k].equivalent_plastic_strain += dgamma[k];
     }
-    s[k].previous_deformation = detail::lane_of(F, k);
+    s[k].previous_deformation = lane_of(F, k);
   }
   // tau = K tr(eps_e) 1 + 2 mu dev(eps_e) in the principal frame of b_e (hencky_stress).
   const simd_double mean_stress = m.bulk_modulus() * volumetric;

@@ -30,7 +30,7 @@
 #include <rkpm/material/j2_batch.hpp>
 #include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/discrete_model.hpp>
-#include <rkpm/solver/point_force_lanes.hpp>
+#include <rkpm/solver/point_force_terms.hpp>
 #include <rkpm/solver/point_forces.hpp>
 
 namespace rkpm {
@@ -60,8 +60,8 @@ class point_materials {
   // lookup, so a material of another namespace can offer one, with updates_in_lanes(m) saying
   // for which of its bodies): the force loop takes simd_lanes points at a time.
   static constexpr bool batched =
-      requires(const M& m, const material::block_lanes& F, state_type* s, const material_step& step) {
-        { kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<material::block_lanes>;
+      requires(const M& m, const block_lanes& F, state_type* s, const material_step& step) {
+        { kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<block_lanes>;
         { updates_in_lanes(m) } -> std::same_as<bool>;
       } && state_records_F && stress_recomputed;
 
@@ -190,13 +190,12 @@ class point_materials {
     return F;
   }
 
-  // S_q and h_q from F_q and tau_q, and what the point adds to its tile's summary.
+  // S_q and h_q from F_q and tau_q (solver/point_force_terms.hpp), and what the point adds to its
+  // tile's summary.
   RKPM_HOT_INLINE void point_force(const discrete_model& m, tile_summary& tile, index_t q, const mat3& F,
                                    const mat3& tau, mat2& S, double& hoop) {
-    const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
-    S = tau.topLeftCorner<2, 2>() * Fi.transpose() * m.points.weight[q];
-    hoop = G::is_axisymmetric ? tau(2, 2) / F(2, 2) * m.points.weight[q] / m.points.position[q][0] : 0.0;
-    tile.narrowest = std::min(tile.narrowest, std::min(support_stretch(Fi), F(2, 2)));
+    const mat2 Fi = point_forces_of<G>(F, tau, m.points.weight[q], m.points.position[q][0], S, hoop);
+    tile.narrowest = std::min(tile.narrowest, std::min(support_stretch(Fi, support_inverse_), F(2, 2)));
     tile.plastic += state_[q].plastic_work * m.points.weight[q];
   }
 
@@ -214,19 +213,19 @@ class point_materials {
       if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
     }
     if (!updates_in_lanes(material.at_point(q0))) return false;
-    const material::block_lanes F_lanes = material::detail::gather_block([&](int k) { return block_matrix::of(F[k]); });
-    material::block_lanes tau;
+    const block_lanes F_lanes = gather_block([&](int k) { return block_matrix::of(F[k]); });
+    block_lanes tau;
     try {
       tau = kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
                                              material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
     } catch (const std::exception&) {
       return false;
     }
-    // point_force of the lanes (solver/point_force_lanes.hpp), the tile's sums in point order.
+    // point_force of the lanes (solver/point_force_terms.hpp), the tile's sums in point order.
     const simd_double weight = gather_lanes([&](int k) { return m.points.weight[q0 + k]; });
     const simd_double radius = gather_lanes([&](int k) { return m.points.position[q0 + k][0]; });
     const simd_double stretch =
-        support_stretch_lanes(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
+        support_stretch(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
     tile_summary& tile = tile_[t];
     for (int k = 0; k < simd_lanes; ++k) {
       tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
@@ -265,18 +264,6 @@ class point_materials {
          "has inverted or the solution has blown up; reduce the time step fraction, refine the "
          "particles or check the boundary conditions. Output written so far is kept",
          where.step, where.time, tile.det, m.global_point(q), X[0], X[1]);
-  }
-
-  // How much the support has narrowed, as the highest frequency sees it: current gradients
-  // are grad_x N = F^-T grad_X N with |grad_X N| ~ 1/a_k per direction, so the largest
-  // current gradient scale is the largest singular value of F^-T diag(1/a). Relative to the
-  // reference (1/min a_k) this is 1 at F = I and follows the thinnest direction of the
-  // deformed support, not merely the smallest stretch (the Taylor bar's supports are 4:1).
-  double support_stretch(const mat2& F_inverse) const {
-    const mat2 B = F_inverse.transpose() * support_inverse_.asDiagonal();
-    const double s = B.squaredNorm(), det = B.determinant();
-    const double largest = std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
-    return support_inverse_.maxCoeff() / largest;
   }
 
   std::vector<state_type> state_;

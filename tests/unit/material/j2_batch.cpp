@@ -67,8 +67,8 @@ void check_lanes(const j2_plasticity<H>& m, const std::array<int, simd_lanes>& k
     std::array<mat3, simd_lanes> F;
     for (int k = 0; k < simd_lanes; ++k) F[k] = deformation(kinds[k], k, n);
     const material_step step{1e-7, 1e-7 * n, std::numeric_limits<double>::quiet_NaN(), std::log(1e-7)};
-    const rkpm::material::block_lanes tau = rkpm::material::kirchhoff_stress_batch(
-        m, rkpm::material::detail::gather_block([&](int k) { return block_matrix::of(F[k]); }), batch.data(), step);
+    const rkpm::block_lanes tau = rkpm::material::kirchhoff_stress_batch(
+        m, rkpm::gather_block([&](int k) { return block_matrix::of(F[k]); }), batch.data(), step);
     for (int k = 0; k < simd_lanes; ++k) {
       CAPTURE(kinds[k]);
       CAPTURE(k);
@@ -76,7 +76,7 @@ void check_lanes(const j2_plasticity<H>& m, const std::array<int, simd_lanes>& k
       const double before = scalar[k].equivalent_plastic_strain;
       const block_matrix expected = block_matrix::of(m.kirchhoff_stress(F[k], scalar[k], step));
       yielded += scalar[k].equivalent_plastic_strain > before;
-      CHECK(same_bits(rkpm::material::detail::lane_of(tau, k), expected));
+      CHECK(same_bits(rkpm::lane_of(tau, k), expected));
       CHECK(same_bits(batch[k].elastic_left_cauchy_green, scalar[k].elastic_left_cauchy_green));
       CHECK(same_bits(batch[k].previous_deformation, scalar[k].previous_deformation));
       CHECK(same_bits(batch[k].equivalent_plastic_strain, scalar[k].equivalent_plastic_strain));
@@ -114,7 +114,7 @@ TEST_CASE("j2_batch: a return that fails leaves every state as it was") {
   const std::vector<j2_state> before = states;
   const mat3 F = deformation(1, 0, 10);
   CHECK_THROWS_WITH(rkpm::material::kirchhoff_stress_batch(
-                        m, rkpm::material::detail::gather_block([&](int) { return block_matrix::of(F); }),
+                        m, rkpm::gather_block([&](int) { return block_matrix::of(F); }),
                         states.data(), material_step{}),
                     doctest::Contains("did not converge"));
   for (int k = 0; k < simd_lanes; ++k) {

@@ -146,7 +146,7 @@ class material_type {
 // elastic bodies in lanes, Johnson-Cook's points one by one.
 inline bool updates_in_lanes(const material_type& m) { return m.johnson_cook() == nullptr; }
 template <class State>
-material::block_lanes kirchhoff_stress_batch(const material_type& m, const material::block_lanes& F, State* s,
+block_lanes kirchhoff_stress_batch(const material_type& m, const block_lanes& F, State* s,
                                              const material_step& step) {
   return material::kirchhoff_stress_batch(m.j2(), F, s, step);
 }

@@ -1,6 +1,6 @@
-// The end of the batched point rule (solver/point_force_lanes.hpp) against the Eigen expressions
-// of the point-by-point rule it stands for (solver/point_materials.hpp: S = tau F^-T w, the
-// hoop term, the support stretch): every lane's bits, on deformation gradients that stretch,
+// The end of the point rule in lanes (solver/point_force_terms.hpp) against its one-point form
+// (the same header: S = tau F^-T w, the hoop term and the support stretch with Eigen's 2x2
+// arithmetic): every lane's bits, on deformation gradients that stretch,
 // shear, turn and compress, in both geometries, and a support stretch of 1 at F = I.
 #include <doctest/doctest.h>
 
@@ -12,16 +12,16 @@
 
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
-#include <rkpm/solver/point_force_lanes.hpp>
+#include <rkpm/solver/point_force_terms.hpp>
 
-namespace point_force_lanes_test {
+namespace point_force_terms_test {
 
 using rkpm::mat2;
 using rkpm::mat3;
 using rkpm::simd_double;
 using rkpm::simd_lanes;
 using rkpm::vec2;
-using lanes = rkpm::basic_block_matrix<simd_double>;
+using lanes = rkpm::block_lanes;
 
 // The same bits, unless Eigen's 2x2 products use fused multiply-adds (a build with -march for a
 // machine with FMA units, RKPM_NATIVE_ARCH), which the lanes' separate products and sums do not:
@@ -51,14 +51,6 @@ mat3 stress(int n, int k) {
   return tau;
 }
 
-// The point-by-point rule's expressions (point_materials::point_force and support_stretch).
-double stretch_of(const mat2& Fi, const vec2& support_inverse) {
-  const mat2 B = Fi.transpose() * support_inverse.asDiagonal();
-  const double s = B.squaredNorm(), det = B.determinant();
-  const double largest = std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
-  return support_inverse.maxCoeff() / largest;
-}
-
 template <class G>
 void check_samples() {
   const vec2 support_inverse(1.0 / 2.5e-3, 1.0 / 0.8e-3);
@@ -72,43 +64,41 @@ void check_samples() {
       radius[k] = 1e-3 * (0.5 + k + 0.1 * n);
     }
     const auto block = [](const std::array<mat3, simd_lanes>& a) {
-      return lanes{rkpm::gather_lanes([&](int k) { return a[k](0, 0); }), rkpm::gather_lanes([&](int k) { return a[k](0, 1); }),
-                   rkpm::gather_lanes([&](int k) { return a[k](1, 0); }), rkpm::gather_lanes([&](int k) { return a[k](1, 1); }),
-                   rkpm::gather_lanes([&](int k) { return a[k](2, 2); })};
+      return rkpm::gather_block([&](int k) { return rkpm::block_matrix::of(a[k]); });
     };
     std::array<mat2, simd_lanes> S;
     std::array<double, simd_lanes> hoop;
     const lanes Fi = rkpm::point_forces_in_lanes<G>(block(F), block(tau), simd_double(weight.data(), rkpm::stdx::element_aligned),
                                                     simd_double(radius.data(), rkpm::stdx::element_aligned), S.data(), hoop.data());
-    const simd_double stretch = rkpm::support_stretch_lanes(Fi, support_inverse);
+    const simd_double stretch = rkpm::support_stretch(Fi, support_inverse);
     for (int k = 0; k < simd_lanes; ++k) {
       CAPTURE(n);
       CAPTURE(k);
-      const mat2 Fi_k = F[k].topLeftCorner<2, 2>().inverse();
-      const mat2 S_k = tau[k].topLeftCorner<2, 2>() * Fi_k.transpose() * weight[k];
-      const double hoop_k = G::is_axisymmetric ? tau[k](2, 2) / F[k](2, 2) * weight[k] / radius[k] : 0.0;
+      mat2 S_k;
+      double hoop_k;
+      const mat2 Fi_k = rkpm::point_forces_of<G>(F[k], tau[k], weight[k], radius[k], S_k, hoop_k);
       for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j)
           CHECK(agree(S[k](i, j), S_k(i, j), tau[k].cwiseAbs().maxCoeff() * Fi_k.cwiseAbs().maxCoeff() * weight[k]));
       CHECK(agree(hoop[k], hoop_k, std::abs(hoop_k)));
-      CHECK(agree(stretch[k], stretch_of(Fi_k, support_inverse), 1.0));
+      CHECK(agree(stretch[k], rkpm::support_stretch(Fi_k, support_inverse), 1.0));
     }
   }
 }
 
-TEST_CASE("point_force_lanes: S, the hoop term and the support stretch of every lane as point by point") {
+TEST_CASE("point_force_terms: S, the hoop term and the support stretch of every lane as point by point") {
   check_samples<rkpm::geometry::axisymmetric>();
   check_samples<rkpm::geometry::plane_strain>();
 }
 
-TEST_CASE("point_force_lanes: at F = I the support stretch is 1 and S = tau w") {
+TEST_CASE("point_force_terms: at F = I the support stretch is 1 and S = tau w") {
   const lanes identity{};
   lanes tau{simd_double(2e8), simd_double(5e7), simd_double(5e7), simd_double(-1e8), simd_double(3e7)};
   std::array<mat2, simd_lanes> S;
   std::array<double, simd_lanes> hoop;
   const lanes Fi = rkpm::point_forces_in_lanes<rkpm::geometry::axisymmetric>(identity, tau, simd_double(2.0), simd_double(4.0),
                                                                              S.data(), hoop.data());
-  const simd_double stretch = rkpm::support_stretch_lanes(Fi, vec2(1.0 / 3e-3, 1.0 / 1e-3));
+  const simd_double stretch = rkpm::support_stretch(Fi, vec2(1.0 / 3e-3, 1.0 / 1e-3));
   for (int k = 0; k < simd_lanes; ++k) {
     CHECK(stretch[k] == doctest::Approx(1.0).epsilon(1e-15));
     CHECK(S[k](0, 0) == 4e8);
@@ -118,4 +108,4 @@ TEST_CASE("point_force_lanes: at F = I the support stretch is 1 and S = tau w") 
   }
 }
 
-}  // namespace point_force_lanes_test
+}  // namespace point_force_terms_test
