@@ -8,6 +8,10 @@
 //   tile        the tiles grouped by colour; colour c is tile[colour_start[c] .. colour_start[c+1]-1]
 //   serial_from colours from this one on are visited one tile after the other (tiles of such a
 //               colour may share particles); below it, tiles of one colour share no particle
+//   paired_rows every tile's points 0-1, 2-3, ... have the same neighbours in the same order
+//               (the points of a cell under Q2 and Q4 on a grid of particles whose supports
+//               are a whole number of spacings wide), so the force loop gathers and scatters
+//               two points per visit of a neighbour (solver/point_forces.hpp)
 // Two tiles get different colours when a particle is a neighbour of a point of each, so the
 // tiles of one colour can scatter into the particles at the same time. A particle's force is
 // then summed colour by colour, tile by tile, point by point: a fixed order.
@@ -28,6 +32,7 @@ struct point_traversal {
   std::vector<index_t> tile;
   std::vector<index_t> colour_start{0};
   index_t serial_from = 0;
+  bool paired_rows = false;
 
   index_t tiles() const { return static_cast<index_t>(tile_start.size()) - 1; }
   index_t colours() const { return static_cast<index_t>(colour_start.size()) - 1; }
@@ -47,6 +52,19 @@ struct point_traversal {
 // Points per tile: large enough that a tile's particles are mostly its own (few colours), small
 // enough that a 10^4-particle body gives each of two threads a dozen tiles per colour.
 inline constexpr index_t traversal_tile_points = 128;
+
+// Whether the points first, first+1 of every tile (and first+2, first+3, ...) have identical
+// neighbour lists in `table` (a tile's odd last point stands alone).
+template <int Dim>
+bool rows_come_in_pairs(const shape_table<Dim>& table, const std::vector<index_t>& tile_start) {
+  for (std::size_t k = 0; k + 1 < tile_start.size(); ++k)
+    for (index_t q = tile_start[k]; q + 1 < tile_start[k + 1]; q += 2) {
+      const auto a = table.neighbor.begin() + table.offset[q], b = table.neighbor.begin() + table.offset[q + 1],
+                 c = table.neighbor.begin() + table.offset[q + 2];
+      if (b - a != c - b || !std::equal(a, b, b)) return false;
+    }
+  return true;
+}
 
 // Greedy colouring of the tiles of `table` (rows: points, columns: `particles` particles).
 template <int Dim>
@@ -81,6 +99,7 @@ point_traversal make_point_traversal(const shape_table<Dim>& table, index_t part
     t.colour_start.push_back(static_cast<index_t>(t.tile.size()));
   }
   if (count[parallel_colours] == 0) t.serial_from = t.colours();
+  t.paired_rows = rows_come_in_pairs(table, t.tile_start);
   return t;
 }
 

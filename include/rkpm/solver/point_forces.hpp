@@ -25,6 +25,7 @@
 #include <rkpm/concepts/geometry.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/execution.hpp>
+#include <rkpm/core/hot_inline.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm {
@@ -37,44 +38,97 @@ struct point_gradient {
 
 namespace detail {
 
+// The table as the traversal reads it: through local pointers, so that the scatter's stores into
+// f cannot alias it (the compiler would otherwise reload the pointers for every entry).
+struct point_rows {
+  const stored_index* offset;
+  const particle_index* neighbor;
+  const double* N;
+  const vec2* grad;
+  const vec2* test;
+};
+
+// Sets g[0..P) to the gathers of the P points whose rows start at entries b[0..P), all with the
+// neighbours of the first (len entries): each x_I is loaded once for the P points.
+template <int P>
+RKPM_HOT_INLINE void gather_rows(const point_rows& t, const std::array<index_t, P>& b, index_t len, const vec2* xs,
+                                 point_gradient* g) {
+  std::array<point_gradient, P> sum;  // in registers: g could alias the table for all the compiler knows
+  for (index_t j = 0; j < len; ++j) {
+    const vec2 xI = xs[t.neighbor[b[0] + j]];
+    for (int k = 0; k < P; ++k) {
+      sum[k].H.noalias() += xI * t.grad[b[k] + j].transpose();
+      sum[k].u += t.N[b[k] + j] * xI;
+    }
+  }
+  for (int k = 0; k < P; ++k) g[k] = sum[k];
+}
+
+// The scatter of the P points whose rows start at b[0..P), neighbours of the first: each f_I
+// gets the first point's terms, then the second's, as P separate visits would add them.
+template <Geometry G, int P>
+RKPM_HOT_INLINE void scatter_rows(const point_rows& t, const std::array<index_t, P>& b, index_t len, const mat2* S,
+                                  const double* hoop, vec2* fs) {
+  std::array<mat2, P> Sk;  // copies: the stores into f could alias S and hoop for all the compiler knows
+  std::array<double, P> hk;
+  for (int k = 0; k < P; ++k) {
+    Sk[k] = S[k];
+    hk[k] = hoop[k];
+  }
+  for (index_t j = 0; j < len; ++j) {
+    // f_I's components summed in scalars, as the vector additions would sum them: the hoop
+    // term's half-width add would otherwise make the next point's full-width load of f_I wait
+    // (a failed store forwarding, 30% of the loop's time).
+    double* const fI = fs[t.neighbor[b[0] + j]].data();
+    double f0 = fI[0], f1 = fI[1];
+    for (int k = 0; k < P; ++k) {
+      const vec2 term = Sk[k] * t.test[b[k] + j];
+      f0 += term[0];
+      f1 += term[1];
+      if constexpr (G::is_axisymmetric) f0 += hk[k] * t.N[b[k] + j];
+    }
+    fI[0] = f0;
+    fI[1] = f1;
+  }
+}
+
 // Gather, rule and scatter of the points first .. last-1, W consecutive points at a time: the
 // rule(tile, q, n, g, S, h) gets the gathered gradients g[0..n) of points q .. q+n-1 (n = W but
 // at a range's end) and sets their S and h. The scatter adds each point's terms in point order,
-// so f does not depend on W. The table is read through local pointers and the row bounds are
-// held in locals: the scatter's stores into f could otherwise alias the table, and the compiler
-// would reload its pointers for every entry.
+// so f does not depend on W. With `paired` (point_traversal::paired_rows; W even, first the
+// tile's first point) points k, k+1 of a batch share one row and are gathered and scattered
+// together: the same sums in the same order, each neighbour visited once for both.
 template <Geometry G, int W, class BatchRule>
 void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad, index_t tile, index_t first,
-                     index_t last, const std::vector<vec2>& x, std::vector<vec2>& f, BatchRule& rule) {
-  const stored_index* const offset = m.at_points.offset.data();
-  const particle_index* const neighbor = m.at_points.neighbor.data();
-  const double* const N = m.at_points.N.data();
-  const vec2* const grad = m.at_points.grad.data();
-  const vec2* const test = test_grad.data();
+                     index_t last, bool paired, const std::vector<vec2>& x, std::vector<vec2>& f, BatchRule& rule) {
+  const point_rows t{m.at_points.offset.data(), m.at_points.neighbor.data(), m.at_points.N.data(),
+                     m.at_points.grad.data(), test_grad.data()};
   const vec2* const xs = x.data();
   vec2* const fs = f.data();
+  const int step = paired && W % 2 == 0 ? 2 : 1;
   for (index_t q0 = first; q0 < last; q0 += W) {
     const int n = static_cast<int>(std::min<index_t>(W, last - q0));
     std::array<point_gradient, W> g;
     std::array<mat2, W> S;
     std::array<double, W> hoop;
     for (int k = 0; k < n; ++k) {
-      for (index_t e = offset[q0 + k], end = offset[q0 + k + 1]; e < end; ++e) {
-        const vec2 xI = xs[neighbor[e]];
-        g[k].H.noalias() += xI * grad[e].transpose();
-        g[k].u += N[e] * xI;
-      }
       S[k].setZero();
       hoop[k] = 0.0;
     }
-    rule(tile, q0, n, g.data(), S.data(), hoop.data());
-    for (int k = 0; k < n; ++k) {
-      for (index_t e = offset[q0 + k], end = offset[q0 + k + 1]; e < end; ++e) {
-        vec2& fI = fs[neighbor[e]];
-        fI.noalias() += S[k] * test[e];
-        if constexpr (G::is_axisymmetric) fI[0] += hoop[k] * N[e];
-      }
+    int k = 0;
+    for (; step == 2 && k + 1 < n; k += 2) {
+      const index_t b = t.offset[q0 + k], len = t.offset[q0 + k + 1] - b;
+      gather_rows<2>(t, {b, b + len}, len, xs, &g[k]);
     }
+    for (; k < n; ++k) gather_rows<1>(t, {t.offset[q0 + k]}, t.offset[q0 + k + 1] - t.offset[q0 + k], xs, &g[k]);
+    rule(tile, q0, n, g.data(), S.data(), hoop.data());
+    k = 0;
+    for (; step == 2 && k + 1 < n; k += 2) {
+      const index_t b = t.offset[q0 + k], len = t.offset[q0 + k + 1] - b;
+      scatter_rows<G, 2>(t, {b, b + len}, len, &S[k], &hoop[k], fs);
+    }
+    for (; k < n; ++k)
+      scatter_rows<G, 1>(t, {t.offset[q0 + k]}, t.offset[q0 + k + 1] - t.offset[q0 + k], &S[k], &hoop[k], fs);
   }
 }
 
@@ -96,17 +150,18 @@ void assemble_point_batches(const discrete_model& m, const std::vector<vec2>& x,
   const std::vector<vec2>& grad = m.test_gradients();
   exec::parallel_for(m.particle_count(), [&](index_t I) { f[I] = vec2::Zero(); });
   tr.for_each_tile([&](index_t tile, index_t first, index_t last) {
-    detail::traverse_points<G, W>(m, grad, tile, first, last, x, f, rule);
+    detail::traverse_points<G, W>(m, grad, tile, first, last, tr.paired_rows, x, f, rule);
   });
 }
 
-// One point at a time: rule(tile, q, gradient, S_q, h_q) for point q of tile `tile`.
+// One point at a time: rule(tile, q, gradient, S_q, h_q) for point q of tile `tile` (the
+// traversal goes two points at a time, so that paired rows are read once).
 template <Geometry G, class PointRule>
 void assemble_point_forces(const discrete_model& m, const std::vector<vec2>& x, std::vector<vec2>& f,
                            PointRule&& rule) {
-  assemble_point_batches<G, 1>(m, x, f,
-                               [&](index_t tile, index_t q, int /*n*/, const point_gradient* g, mat2* S, double* hoop) {
-                                 rule(tile, q, g[0], S[0], hoop[0]);
+  assemble_point_batches<G, 2>(m, x, f,
+                               [&](index_t tile, index_t q, int n, const point_gradient* g, mat2* S, double* hoop) {
+                                 for (int k = 0; k < n; ++k) rule(tile, q + k, g[k], S[k], hoop[k]);
                                });
 }
 
