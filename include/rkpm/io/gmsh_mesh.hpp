@@ -33,15 +33,9 @@
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/mesh_particles.hpp>
 #include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/io/gmsh_body.hpp>
 
 namespace rkpm::io {
-
-struct gmsh_body {
-  particle_set<2> particles;  // #nodes particles, particles_from_mesh(mesh, support_factor): node i is particle i
-  background_mesh mesh;       // #nodes positions, #cells quadrilaterals counter-clockwise
-  std::map<std::string, std::vector<index_t>> node_groups;                 // curve name -> sorted node indices
-  std::map<std::string, std::vector<std::array<index_t, 2>>> edge_groups;  // curve name -> #segments node pairs
-};
 
 namespace detail {
 

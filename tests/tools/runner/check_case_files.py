@@ -216,6 +216,19 @@ def mesh(rkpm_run, cases, work):
               f"(1/2 rho A v^2 = {expected:.1f}), results {res}")
     check(3.0 < counts[2] / counts[1] < 5.0, f"resolution 2 gives {counts[2]} particles, resolution 1 {counts[1]}")
 
+    # Gmsh is loaded only by runs that mesh (tools/runner/case_file/gmsh_reader.hpp): rkpm_run is
+    # not linked with libgmsh, and a reader that cannot be loaded is reported with what to do.
+    linked = subprocess.run(["ldd", rkpm_run], capture_output=True, text=True).stdout
+    check("libgmsh" not in linked, "rkpm_run is linked with libgmsh, which every run would then load")
+    out = os.path.join(work, "projectile-no-reader")
+    r = subprocess.run([rkpm_run, os.path.join(cases, "projectile", "projectile.json"), "--end-time", "1e-6",
+                        "--out", out, "--quiet"], capture_output=True, text=True, timeout=300,
+                       env={**os.environ, "RKPM_GMSH_READER": os.path.join(work, "no_such_module.so")})
+    check(r.returncode != 0 and "RKPM_GMSH_READER" in r.stderr and "no_such_module.so" in r.stderr
+          and "/bodies/0/shape/mesh/file" in r.stderr,
+          f"a missing Gmsh reader: exit {r.returncode}, {r.stderr.strip()}")
+    print(f"ok  no libgmsh in rkpm_run; a missing reader: {r.stderr.strip()}")
+
 
 def bodies(rkpm_run, cases, work):
     import csv

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
-#include <rkpm/io/gmsh_mesh.hpp>
+#include <rkpm/io/gmsh_body.hpp>
 
 #include "../json.hpp"
 #include "case_material.hpp"

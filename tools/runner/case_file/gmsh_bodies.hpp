@@ -1,5 +1,5 @@
 #pragma once
-// Bodies that Gmsh meshes (rkpm/io/gmsh_mesh.hpp, linked through rkpm::gmsh): a mesh file
+// Bodies that Gmsh meshes (rkpm/io/gmsh_mesh.hpp, loaded when needed: gmsh_reader.hpp): a mesh file
 // (.msh) is read once, when the case file is loaded (its physical curves name the edges, and
 // the tool checks need its cells); a geometry script (.geo) is meshed then too, with sizes / K
 // for resolution K (load_case_file's argument); a polygon is meshed when the problem is built,
@@ -12,10 +12,11 @@
 
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
-#include <rkpm/io/gmsh_mesh.hpp>
+#include <rkpm/io/gmsh_body.hpp>
 
 #include "case_description.hpp"
 #include "diagnostics.hpp"
+#include "gmsh_reader.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -30,10 +31,10 @@ inline void read_meshes(diagnostics& d, case_description& c, int resolution) {
   for (auto& b : c.bodies)
     if (auto* m = std::get_if<mesh_shape>(&b.shape)) try {
         if (m->file.extension() == ".geo") {
-          m->body = io::mesh_geo_file(m->file, 1.0 / resolution, c.support_factor);
+          m->body = load_gmsh_reader().mesh_geo(m->file, 1.0 / resolution, c.support_factor);
           m->meshed_at = resolution;
         } else {
-          m->body = io::read_gmsh_body(m->file, c.support_factor);
+          m->body = load_gmsh_reader().read_msh(m->file, c.support_factor);
         }
       } catch (const error& e) {
         d.error(mesh_file_pointer(b), e.what());
@@ -58,7 +59,7 @@ std::pair<particle_set<2>, background_mesh> gmsh_discretize(const case_descripti
   }
   const auto& p = std::get<polygon_shape>(b.shape);
   try {
-    io::gmsh_body body = io::mesh_polygon(p.vertices, p.spacing / resolution, c.support_factor);
+    io::gmsh_body body = load_gmsh_reader().mesh_polygon(p.vertices, p.spacing / resolution, c.support_factor);
     return {std::move(body.particles), std::move(body.mesh)};
   } catch (const error& e) {
     fail_at(child_pointer(child_pointer(b.at, "shape"), "polygon"), e.what());
