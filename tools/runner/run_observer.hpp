@@ -57,9 +57,15 @@ class run_observer {
     for (const auto& row : record_.history_rows) history_.row(row);
   }
 
-  // Called at the start, after every step and at the end of the run.
+  // Called at the start, after every step and at the end of the run; its time is output_s().
   void operator()(const Solver& s) {
     if (std::exchange(skip_next_, false)) return;
+    const auto started = std::chrono::steady_clock::now();
+    const struct timed {
+      std::chrono::steady_clock::time_point from;
+      double& total;
+      ~timed() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count(); }
+    } timer{started, output_s_};
     const double t = s.time(), end_time = s.options().end_time;
     const bool last = is_last(t, end_time);
     if (!quiet_) progress_.update(t, end_time, static_cast<long>(s.steps()));
@@ -142,6 +148,9 @@ class run_observer {
   double wall_s() const {
     return record_.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - segment_start_).count();
   }
+  // Seconds spent in the calls of this process since it started or resumed the run: history
+  // rows, snapshots, figure shapes and checkpoints, the part of wall_s that is not the steps.
+  double output_s() const { return output_s_; }
   const measures& last_measures() const { return measures_; }
   const run_record& record() const { return record_; }
   const std::filesystem::path& last_checkpoint() const { return last_checkpoint_; }
@@ -223,6 +232,7 @@ class run_observer {
   std::chrono::steady_clock::time_point segment_start_;
   std::filesystem::path last_checkpoint_;
   bool skip_next_ = false;
+  double output_s_ = 0.0;
   bool pieces_ = false;
 };
 

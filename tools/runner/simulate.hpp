@@ -217,6 +217,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   summary["threads"] = active_threads();
   summary["processes"] = steps ? steps->processes() : 1;
   summary["wall_s"] = observe.wall_s();
+  summary["output_s"] = observe.output_s();  // of wall_s, this part of the run: not the steps
   summary["setup_s"] = observe.record().setup_s;
   if (!observe.record().restarts.empty()) summary["restarts"] = observe.record().restarts;
   if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();

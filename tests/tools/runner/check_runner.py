@@ -184,7 +184,7 @@ def strict_json(f):
 # summary.json's keys in the order the runner writes them (a completed run).
 SUMMARY_KEYS = ["case", "kernel", "correction", "quadrature", "geometry", "contact", "resolution", "status",
                 "parameters", "particles", "quadrature_points", "steps", "dt_min_s", "dt_max_s", "end_time_s",
-                "threads", "processes", "wall_s", "setup_s", "energy", "results"]
+                "threads", "processes", "wall_s", "output_s", "setup_s", "energy", "results"]
 
 
 # summary.json's energy terms (io/solver_output.hpp, docs/method.md section 7).
@@ -244,7 +244,8 @@ def outputs(out):
           f"{s['dt_min_s']}..{s['dt_max_s']}")
     check(s["steps"] * s["dt_max_s"] >= END_TIME * (1 - 1e-9) and s["steps"] * s["dt_min_s"] <= END_TIME * (1 + 1e-9),
           "steps x dt range does not bracket the end time")
-    check(s["threads"] >= 1 and s["processes"] == 1 and s["wall_s"] >= 0 and s["setup_s"] >= 0, "threads / timings")
+    check(s["threads"] >= 1 and s["processes"] == 1 and s["wall_s"] >= 0 and s["setup_s"] >= 0
+          and 0 < s["output_s"] < s["wall_s"], "threads / timings")
     e = s["energy"]
     check(e["balance_error"] < 0.01, f"energy balance error {e['balance_error']}")
     check(e["external_J"] == 0.0, "no body force: external work must be 0")
