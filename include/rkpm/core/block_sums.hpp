@@ -25,6 +25,7 @@
 #include <vector>
 
 #include <rkpm/core/process_group.hpp>
+#include <rkpm/core/thread_count.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -56,7 +57,7 @@ class block_sums {
                                [](void* b, index_t I, sums& s) { (*static_cast<B*>(b))(I, s); }});
     }
     const index_t blocks = static_cast<index_t>(partial_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (!exec::single_thread())
     for (index_t b = 0; b < blocks; ++b) {
       sums s{};
       const index_t last = std::min(n_, (b + 1) * block_size);
@@ -82,13 +83,13 @@ class block_sums {
     const auto whole = static_cast<index_t>(blocks.whole_first.size());
     const auto partial = static_cast<index_t>(blocks.partial.size());
     whole_sums_.resize(static_cast<std::size_t>(whole * K));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (!exec::single_thread())
     for (index_t w = 0; w < whole; ++w) {
       sums s{};
       for (index_t I = blocks.whole_first[w]; I < blocks.whole_first[w] + blocks.whole_size[w]; ++I) body(I, s);
       for (int k = 0; k < K; ++k) whole_sums_[static_cast<std::size_t>(w * K + k)] = s[k];
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (!exec::single_thread())
     for (index_t j = 0; j < partial; ++j) {
       const index_t I = blocks.partial[j];
       sums s{};

@@ -27,6 +27,7 @@
 #include <rkpm/core/block_sums.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/process_group.hpp>
+#include <rkpm/core/thread_count.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {
@@ -82,6 +83,10 @@ namespace exec {
 
 template <class Body>
 void parallel_for(index_range r, Body&& body) {
+  if (single_thread()) {
+    for (index_t I = r.begin; I < r.end; ++I) body(I);
+    return;
+  }
 #pragma omp parallel for schedule(static)
   for (index_t I = r.begin; I < r.end; ++I) body(I);
 }
@@ -96,7 +101,7 @@ void parallel_for(index_t n, Body&& body) {
 template <class Scratch, class Body>
 void parallel_for_each_row(index_t n, index_t chunk, Body&& body) {
   std::string first_error;
-#pragma omp parallel
+#pragma omp parallel if (!single_thread())
   {
     Scratch scratch;
 #pragma omp for schedule(dynamic, chunk)
@@ -119,6 +124,10 @@ void parallel_for_each_row(index_t n, index_t chunk, Body&& body) {
 template <class Body>
 void for_each_coloured(const std::vector<index_t>& colour_start, index_t serial_from, Body&& body) {
   const index_t colours = static_cast<index_t>(colour_start.size()) - 1;
+  if (single_thread()) {  // colour by colour, each in order: what one thread does below
+    for (index_t k = colour_start[0]; k < colour_start[colours]; ++k) body(k);
+    return;
+  }
 #pragma omp parallel
   for (index_t c = 0; c < colours; ++c) {
     if (c < serial_from) {
@@ -136,14 +145,14 @@ void for_each_coloured(const std::vector<index_t>& colour_start, index_t serial_
 template <class Value>
 double max_over(index_range r, Value&& value, double init = -std::numeric_limits<double>::infinity()) {
   double m = init;
-#pragma omp parallel for schedule(static) reduction(max : m)
+#pragma omp parallel for schedule(static) reduction(max : m) if (!single_thread())
   for (index_t I = r.begin; I < r.end; ++I) m = std::max(m, static_cast<double>(value(I)));
   return m;
 }
 template <class Value>
 double min_over(index_range r, Value&& value, double init = std::numeric_limits<double>::infinity()) {
   double m = init;
-#pragma omp parallel for schedule(static) reduction(min : m)
+#pragma omp parallel for schedule(static) reduction(min : m) if (!single_thread())
   for (index_t I = r.begin; I < r.end; ++I) m = std::min(m, static_cast<double>(value(I)));
   return m;
 }
