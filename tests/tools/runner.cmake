@@ -91,3 +91,10 @@ if(TARGET rkpm::mpi)
   set_tests_properties(${rkpm_ranks_tests} PROPERTIES TIMEOUT 300 LABELS "tools/runner" PROCESSORS 3
                        ENVIRONMENT "${rkpm_mpi_test_environment}")
 endif()
+
+# tools/rkpm help: the usage text with every tutorial that has a main.cpp, and exit status 0
+# (a tutorial without one, tutorials/12_python, once ended the script before it printed a word).
+add_test(NAME tools.rkpm_help
+         COMMAND bash -c "out=$(\"$0\" help) && grep -q 'usage: tools/rkpm' <<<\"$out\" && grep -q '04_taylor_bar' <<<\"$out\" && ! grep -q '12_python' <<<\"$out\""
+                 ${PROJECT_SOURCE_DIR}/tools/rkpm)
+set_tests_properties(tools.rkpm_help PROPERTIES TIMEOUT 60 LABELS "tools")
