@@ -60,12 +60,12 @@ class run_observer {
   // Called at the start, after every step and at the end of the run; its time is output_s().
   void operator()(const Solver& s) {
     if (std::exchange(skip_next_, false)) return;
-    const auto started = std::chrono::steady_clock::now();
+    // Added to output_s_ however the call ends (a write that fails, an interrupt, a stop).
     const struct timed {
       std::chrono::steady_clock::time_point from;
       double& total;
       ~timed() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count(); }
-    } timer{started, output_s_};
+    } timer{std::chrono::steady_clock::now(), output_s_};
     const double t = s.time(), end_time = s.options().end_time;
     const bool last = is_last(t, end_time);
     if (!quiet_) progress_.update(t, end_time, static_cast<long>(s.steps()));

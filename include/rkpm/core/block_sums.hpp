@@ -25,7 +25,7 @@
 #include <vector>
 
 #include <rkpm/core/process_group.hpp>
-#include <rkpm/core/thread_count.hpp>
+#include <rkpm/core/single_thread.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {

@@ -27,7 +27,7 @@
 #include <rkpm/core/block_sums.hpp>
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/process_group.hpp>
-#include <rkpm/core/thread_count.hpp>
+#include <rkpm/core/single_thread.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm {

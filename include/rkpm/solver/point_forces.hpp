@@ -50,28 +50,28 @@ struct point_rows {
 
 // Sets g[0..P) to the gathers of the P points whose rows start at entries b[0..P), all with the
 // neighbours of the first (len entries): each x_I is loaded once for the P points.
-template <int P>
+template <std::size_t P>
 RKPM_HOT_INLINE void gather_rows(const point_rows& t, const std::array<index_t, P>& b, index_t len, const vec2* xs,
                                  point_gradient* g) {
   std::array<point_gradient, P> sum;  // in registers: g could alias the table for all the compiler knows
   for (index_t j = 0; j < len; ++j) {
     const vec2 xI = xs[t.neighbor[b[0] + j]];
-    for (int k = 0; k < P; ++k) {
+    for (std::size_t k = 0; k < P; ++k) {
       sum[k].H.noalias() += xI * t.grad[b[k] + j].transpose();
       sum[k].u += t.N[b[k] + j] * xI;
     }
   }
-  for (int k = 0; k < P; ++k) g[k] = sum[k];
+  for (std::size_t k = 0; k < P; ++k) g[k] = sum[k];
 }
 
 // The scatter of the P points whose rows start at b[0..P), neighbours of the first: each f_I
 // gets the first point's terms, then the second's, as P separate visits would add them.
-template <Geometry G, int P>
+template <Geometry G, std::size_t P>
 RKPM_HOT_INLINE void scatter_rows(const point_rows& t, const std::array<index_t, P>& b, index_t len, const mat2* S,
                                   const double* hoop, vec2* fs) {
   std::array<mat2, P> Sk;  // copies: the stores into f could alias S and hoop for all the compiler knows
   std::array<double, P> hk;
-  for (int k = 0; k < P; ++k) {
+  for (std::size_t k = 0; k < P; ++k) {
     Sk[k] = S[k];
     hk[k] = hoop[k];
   }
@@ -81,7 +81,7 @@ RKPM_HOT_INLINE void scatter_rows(const point_rows& t, const std::array<index_t,
     // (a failed store forwarding, 30% of the loop's time).
     double* const fI = fs[t.neighbor[b[0] + j]].data();
     double f0 = fI[0], f1 = fI[1];
-    for (int k = 0; k < P; ++k) {
+    for (std::size_t k = 0; k < P; ++k) {
       const vec2 term = Sk[k] * t.test[b[k] + j];
       f0 += term[0];
       f1 += term[1];
@@ -105,9 +105,19 @@ void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad
                      m.at_points.grad.data(), test_grad.data()};
   const vec2* const xs = x.data();
   vec2* const fs = f.data();
-  const int step = paired && W % 2 == 0 ? 2 : 1;
+  const bool pairs = paired && W % 2 == 0;
   for (index_t q0 = first; q0 < last; q0 += W) {
     const int n = static_cast<int>(std::min<index_t>(W, last - q0));
+    // visit(k, b, len) for the batch's points k, k+1 (b: their rows' first entries) where paired,
+    // else for each point k alone (b: its row's first entry).
+    const auto for_each_group = [&](auto&& visit) {
+      int k = 0;
+      for (; pairs && k + 1 < n; k += 2) {
+        const index_t b = t.offset[q0 + k], len = t.offset[q0 + k + 1] - b;
+        visit(k, std::array<index_t, 2>{b, b + len}, len);
+      }
+      for (; k < n; ++k) visit(k, std::array<index_t, 1>{t.offset[q0 + k]}, t.offset[q0 + k + 1] - t.offset[q0 + k]);
+    };
     std::array<point_gradient, W> g;
     std::array<mat2, W> S;
     std::array<double, W> hoop;
@@ -115,20 +125,13 @@ void traverse_points(const discrete_model& m, const std::vector<vec2>& test_grad
       S[k].setZero();
       hoop[k] = 0.0;
     }
-    int k = 0;
-    for (; step == 2 && k + 1 < n; k += 2) {
-      const index_t b = t.offset[q0 + k], len = t.offset[q0 + k + 1] - b;
-      gather_rows<2>(t, {b, b + len}, len, xs, &g[k]);
-    }
-    for (; k < n; ++k) gather_rows<1>(t, {t.offset[q0 + k]}, t.offset[q0 + k + 1] - t.offset[q0 + k], xs, &g[k]);
+    for_each_group([&]<std::size_t P>(int k, const std::array<index_t, P>& b, index_t len) {
+      gather_rows<P>(t, b, len, xs, &g[k]);
+    });
     rule(tile, q0, n, g.data(), S.data(), hoop.data());
-    k = 0;
-    for (; step == 2 && k + 1 < n; k += 2) {
-      const index_t b = t.offset[q0 + k], len = t.offset[q0 + k + 1] - b;
-      scatter_rows<G, 2>(t, {b, b + len}, len, &S[k], &hoop[k], fs);
-    }
-    for (; k < n; ++k)
-      scatter_rows<G, 1>(t, {t.offset[q0 + k]}, t.offset[q0 + k + 1] - t.offset[q0 + k], &S[k], &hoop[k], fs);
+    for_each_group([&]<std::size_t P>(int k, const std::array<index_t, P>& b, index_t len) {
+      scatter_rows<G, P>(t, b, len, &S[k], &hoop[k], fs);
+    });
   }
 }
 
