@@ -2,10 +2,11 @@
 // file_case<Geometry>: a case read from a JSON case file (tools/runner/case_file/README.md) in
 // the shape simulate.hpp runs the typed cases in: its parameters are the checked
 // case_description, its name and end time come from the file, build() and measure() are the
-// case-file layer's. One type per geometry, since the geometry is a compile-time policy; the
-// material is case_file::material_type for every file (J2 with its hardening law chosen at run
-// time, elastic as J2 that never yields), so that a file runs with any of its laws without a
-// solver type per law.
+// case-file layer's. One type per geometry, since the geometry is a compile-time policy, and
+// material state: case_file::j2_material for a file of J2 and elastic bodies,
+// case_file::material_type for one with a Johnson-Cook body (case_file/case_material.hpp; the
+// hardening law is chosen at run time, elastic is J2 that never yields), so that a file runs
+// with any of its laws without a solver type per law.
 
 #include <string>
 #include <utility>
@@ -21,18 +22,18 @@
 
 namespace rkpm::runner {
 
-template <class Geometry>
+template <class Geometry, class Material>
 struct file_case {
   using parameters = case_file::case_description;
   using geometry_type = Geometry;
-  using material_type = case_file::material_type;
+  using material_type = Material;
 
   static std::string name_of(const parameters& c) { return c.name; }
   static double end_time(const parameters& c) { return c.end_time; }
 
   template <class Contact>
   static problem<material_type, Contact> build(const parameters& c, int resolution) {
-    return case_file::build_problem<Contact>(c, resolution);
+    return case_file::build_problem<Contact, material_type>(c, resolution);
   }
 
   template <class Solver>

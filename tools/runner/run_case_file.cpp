@@ -1,6 +1,6 @@
 // run_case_file: reads the case file (or, for --restart, the document the checkpoint kept),
 // applies the command line's --set overrides, policies and end time, and runs it in its
-// geometry (file_case_dispatch.hpp).
+// geometry, with the case-file material whose state its laws need (file_case_dispatch.hpp).
 #include "run_case_file.hpp"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 
+#include "case_file/build_problem.hpp"
 #include "case_file/load_case_file.hpp"
 
 namespace rkpm::runner {
@@ -43,8 +44,13 @@ run_outcome run_case_file(const run_request& request) {
     c.document["end_time_s"] = *r.end_time;
   }
   r.case_name = c.name;
-  if (c.geometry == geometry::axisymmetric::name) return run_file_case<geometry::axisymmetric>(r, c, restart);
-  return run_file_case<geometry::plane_strain>(r, c, restart);
+  // A restart takes the same material as its run: the choice depends on the document alone.
+  const bool johnson_cook = case_file::uses_johnson_cook(c);
+  if (c.geometry == geometry::axisymmetric::name)
+    return johnson_cook ? run_file_case<geometry::axisymmetric, case_file::material_type>(r, c, restart)
+                        : run_file_case<geometry::axisymmetric, case_file::j2_material>(r, c, restart);
+  return johnson_cook ? run_file_case<geometry::plane_strain, case_file::material_type>(r, c, restart)
+                      : run_file_case<geometry::plane_strain, case_file::j2_material>(r, c, restart);
 }
 
 }  // namespace rkpm::runner

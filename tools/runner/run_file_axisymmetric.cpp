@@ -1,8 +1,8 @@
-// The case files in axisymmetric geometry (file_case_dispatch.hpp): their solver instantiated once
-// (grouped with the case-file reader at build time, CMakeLists.txt).
+// The case files in axisymmetric geometry with J2 and elastic bodies (file_case_dispatch.hpp):
+// their solver instantiated once (grouped with the case-file reader at build time, CMakeLists.txt).
 #include "file_case_dispatch.hpp"
 
 namespace rkpm::runner {
-template run_outcome run_file_case<geometry::axisymmetric>(const run_request&, const case_file::case_description&,
-                                                 const std::optional<restart_point>&);
+template run_outcome run_file_case<geometry::axisymmetric, case_file::j2_material>(
+    const run_request&, const case_file::case_description&, const std::optional<restart_point>&);
 }  // namespace rkpm::runner

@@ -1,6 +1,6 @@
-// The case files' material, j2_plasticity<case_file::hardening_law> (case_material.hpp), gives
-// bit for bit the stresses and states of j2_plasticity<law> for every law of
-// material::hardening::laws, along a path that yields, unloads and yields again (the linear law
+// The case files' materials, j2_plasticity<case_file::hardening_law> with J2's state (j2_material)
+// and with Johnson-Cook's (material_type) (case_material.hpp), give bit for bit the stresses and
+// states of j2_plasticity<law> for every law of material::hardening::laws, along a path that yields, unloads and yields again (the linear law
 // keeps its closed-form return); and with no yield it is the Hencky law of material::elastic up
 // to round-off. Each law of the list is also read from a case file's material by its
 // parameters() and comes out with the constants given.
@@ -9,6 +9,7 @@
 #include <boost/hana.hpp>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <rkpm/material/elastic.hpp>
@@ -29,8 +30,8 @@ namespace {
 
 const material::elastic_constants aluminium{71e9, 0.3, 2700.0};
 
-template <class Typed>
-void check_identical(const Typed& typed, const runner::case_file::material_type& file) {
+template <class Typed, class File>
+void check_identical(const Typed& typed, const File& file) {
   auto a = typed.initial_state();
   auto b = file.initial_state();
   for (const mat3& F : test::stretch_shear_path()) {
@@ -62,7 +63,16 @@ TEST_CASE("every hardening law of the list: bit for bit j2_plasticity<law>") {
     const law_type h = example_law<law_type>();
     check_identical(material::j2_plasticity<law_type>(aluminium, h),
                     runner::case_file::material_type(aluminium, hardening_law::of(h)));
+    check_identical(material::j2_plasticity<law_type>(aluminium, h),
+                    runner::case_file::j2_material(aluminium, hardening_law::of(h)));
   });
+}
+
+TEST_CASE("a case file of J2 bodies keeps J2's state per point, Johnson-Cook's only with a Johnson-Cook body") {
+  static_assert(std::is_same_v<runner::case_file::j2_material::state_type, material::j2_state>);
+  static_assert(std::is_same_v<runner::case_file::material_type::state_type, material::johnson_cook_state>);
+  CHECK(sizeof(material::j2_state) == 96);  // what the runner's footprint at 10^6 particles counts on
+  CHECK(sizeof(material::johnson_cook_state) > sizeof(material::j2_state));
 }
 
 TEST_CASE("every hardening law of the list is read from a case file's material with its constants") {

@@ -133,6 +133,24 @@ TEST_CASE("a velocity table: linear velocity, its exact integral, constant after
   CHECK(tool.displacement(0.0) == vec2::Zero());
 }
 
+TEST_CASE("the runner's material: J2's state unless a body is Johnson-Cook") {
+  auto doc = test::paper_case_document("taylor_bar");
+  CHECK(!runner::case_file::uses_johnson_cook(test::load_document(doc)));
+  const auto j2 = runner::case_file::build_problem<contact_t, runner::case_file::j2_material>(test::load_document(doc), 1);
+  CHECK(j2.material.hardening().yields());
+  doc["bodies"][0]["material"] = {{"law", "johnson_cook"}, {"youngs_modulus_Pa", 124e9}, {"poisson_ratio", 0.34},
+                                  {"density_kg_m3", 8960}, {"A_Pa", 90e6}, {"B_Pa", 292e6}, {"n", 0.31},
+                                  {"C", 0.025}, {"reference_strain_rate_1_s", 1.0}, {"m", 1.09},
+                                  {"room_temperature_K", 294}, {"melt_temperature_K", 1356},
+                                  {"specific_heat_J_kgK", 383}};
+  const auto description = test::load_document(doc);
+  CHECK(runner::case_file::uses_johnson_cook(description));
+  CHECK(runner::case_file::build_problem<contact_t>(description, 1).material.johnson_cook() != nullptr);
+  const std::string e = test::error_message(
+      [&] { runner::case_file::build_problem<contact_t, runner::case_file::j2_material>(description, 1); });
+  CHECK(test::contains(e, "a Johnson-Cook body was given a material without room for its state"));
+}
+
 TEST_CASE("elastic maps to J2 that never yields") {
   auto doc = test::paper_case_document("taylor_bar");
   auto& m = doc["bodies"][0]["material"];

@@ -1,6 +1,7 @@
 #pragma once
-// build_problem<Contact>(case, resolution): the rkpm::problem a case file describes, for any
-// contact policy: each body discretized and added with its own material (add_body), its
+// build_problem<Contact, Material>(case, resolution): the rkpm::problem a case file describes,
+// for any contact policy and either case-file material (case_material.hpp; j2_material only for
+// a file that uses_johnson_cook() does not): each body discretized and added with its own material (add_body), its
 // constraints, initial velocity and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do (cases/parameters.hpp): a
 // rectangle of n particles per direction gets (n - 1) K + 1, a polygon's spacing is divided by
 // K (gmsh_bodies.hpp). A rectangle builds exactly the particles and cells of make_grid_particles and
@@ -39,11 +40,21 @@ namespace rkpm::runner::case_file {
   fail_in_file(c.file.string(), at, message);
 }
 
-inline material_type make_material(const material_description& m) {
+// Whether a body of the file is Johnson-Cook, so that its run needs material_type's state.
+inline bool uses_johnson_cook(const case_description& c) {
+  return std::ranges::any_of(c.bodies, [](const body_description& b) { return b.material.johnson_cook.has_value(); });
+}
+
+template <class Material = material_type>
+Material make_material(const material_description& m) {
   const material::elastic_constants constants{m.youngs_modulus, m.poisson_ratio, m.density};
-  if (m.johnson_cook) return material_type(*m.johnson_cook);
-  if (m.law != material::j2_name) return material_type(constants, hardening_law::no_yield());
-  return material_type(constants, m.flow_law);
+  if (m.johnson_cook) {
+    if constexpr (Material::holds_johnson_cook) return Material(*m.johnson_cook);
+    else fail("a Johnson-Cook body was given a material without room for its state; build the problem with "
+              "case_file::material_type (uses_johnson_cook)");
+  }
+  if (m.law != material::j2_name) return Material(constants, hardening_law::no_yield());
+  return Material(constants, m.flow_law);
 }
 
 namespace detail {
@@ -143,8 +154,8 @@ inline void check_apart(const case_description& c, const std::vector<std::pair<p
 
 // Bodies are added in the file's order (add_body), so body k of the problem is the file's
 // /bodies/k; one body gives exactly the problem of a file without bodies (problem::material).
-template <class Contact>
-problem<material_type, Contact> build_problem(const case_description& c, int resolution) {
+template <class Contact, class Material = material_type>
+problem<Material, Contact> build_problem(const case_description& c, int resolution) {
   if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
   if (c.bodies.empty()) fail_at(c, "/bodies", "no body; give the deformable body");
   const body_description& first = c.bodies.front();
@@ -152,10 +163,10 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
     if (std::is_same_v<typename Contact::enforcement_type, contact::enforcement::penalty> && !c.penalty_stiffness)
       fail_at(c, "/contact", "the penalty enforcement needs a stiffness; add \"penalty_stiffness_N_m\": 1e11 to "
                              "\"contact\"");
-  problem<material_type, Contact> pr{
+  problem<Material, Contact> pr{
       .particles = {},
       .mesh = {},
-      .material = make_material(first.material),
+      .material = make_material<Material>(first.material),
       .contact = cases::make_contact<Contact>(make_tools(c), c.friction, c.penalty_stiffness.value_or(0.0),
                                               detail::make_body_pairs(c)),
       .initial_velocity = {},
@@ -181,7 +192,7 @@ problem<material_type, Contact> build_problem(const case_description& c, int res
       pr.constraints.push_back(std::move(vc));
     }
     try {
-      add_body(pr, parts[k].first, parts[k].second, make_material(b.material));
+      add_body(pr, parts[k].first, parts[k].second, make_material<Material>(b.material));
     } catch (const error& e) {
       fail_at(c, child_pointer(b.at, "shape"), e.what());
     }

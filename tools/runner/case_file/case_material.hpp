@@ -1,13 +1,18 @@
 #pragma once
-// The one material type of every case file, case_file::material_type: material::j2_plasticity
-// with its hardening law chosen at run time (hardening_law), or material::johnson_cook, so that
-// the runner compiles one material per geometry and contact enforcement, whatever law the files
-// name. hardening_law holds one law of the library's list (material::hardening::laws) and hands
-// every call to it, so a case file runs bit for bit as the typed case with j2_plasticity<that
-// law> (tests/unit/case_file/hardening_law.cpp); a law added to the list is read and run with no
-// edit here. The state is johnson_cook_state for every law: J2 points leave its temperature and
-// damage NaN (no temperature: the solver passes NaN as before, and the snapshots leave out a
-// field that is NaN everywhere, io/solver_output.hpp).
+// The material types of the case files: material::j2_plasticity with its hardening law chosen at
+// run time (hardening_law), or material::johnson_cook, so that the runner compiles one material
+// per geometry and state, whatever law the files name. hardening_law holds one law of the
+// library's list (material::hardening::laws) and hands every call to it, so a case file runs
+// bit for bit as the typed case with j2_plasticity<that law>
+// (tests/unit/case_file/hardening_law.cpp); a law added to the list is read and run with no edit
+// here. Two states, so that a run keeps per point only what its laws need:
+//   j2_material     J2 and elastic bodies: material::j2_state (96 B per point)
+//   material_type   any law, Johnson-Cook included: material::johnson_cook_state (136 B); its
+//                   J2 points leave temperature and damage NaN (no temperature: the solver
+//                   passes NaN as before, and the snapshots leave out a field that is NaN
+//                   everywhere, io/solver_output.hpp)
+// The runner takes j2_material for a file without a Johnson-Cook body (uses_johnson_cook,
+// build_problem.hpp): at 10^6 particles and two points each, 82 MB less.
 //
 // "elastic" is J2 that never yields (flow stress +infinity). Its elastic part is the Hencky law
 // of material::elastic (tau = K tr(eps) + 2 mu dev(eps) = lambda tr(eps) + 2 mu eps in principal
@@ -19,6 +24,7 @@
 #include <limits>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -103,28 +109,41 @@ inline double plastic_work_increment(const hardening_law& h, double from, double
   return h.plastic_work(from, dgamma, flow_from, flow_to);
 }
 
-// J2 with the file's hardening law, or Johnson-Cook (one branch per point update).
-class material_type {
+// J2 with the file's hardening law or, with State = johnson_cook_state, Johnson-Cook too (one
+// branch per point update).
+template <class State>
+class basic_material_type {
  public:
   using j2_type = material::j2_plasticity<hardening_law>;
   static constexpr std::string_view name = j2_type::name;
-  using state_type = material::johnson_cook_state;
+  using state_type = State;
+  // Whether the state has room for Johnson-Cook (temperature, damage and the rest).
+  static constexpr bool holds_johnson_cook = std::is_same_v<State, material::johnson_cook_state>;
 
-  material_type(const material::elastic_constants& constants, const hardening_law& law) : j2_(constants, law) {}
-  explicit material_type(material::johnson_cook jc)
+  basic_material_type(const material::elastic_constants& constants, const hardening_law& law) : j2_(constants, law) {}
+  explicit basic_material_type(material::johnson_cook jc)
+    requires holds_johnson_cook
       : j2_(jc.constants(), hardening_law::no_yield()), johnson_cook_(std::move(jc)) {}
 
   state_type initial_state() const {
-    if (johnson_cook_) return johnson_cook_->initial_state();
-    state_type s;
-    s.damage = std::numeric_limits<double>::quiet_NaN();  // J2: neither temperature nor damage
-    return s;
+    if constexpr (holds_johnson_cook) {
+      if (johnson_cook_) return johnson_cook_->initial_state();
+      state_type s;
+      s.damage = std::numeric_limits<double>::quiet_NaN();  // J2: neither temperature nor damage
+      return s;
+    } else {
+      return j2_.initial_state();
+    }
   }
   mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
-    return johnson_cook_ ? johnson_cook_->kirchhoff_stress(F, s, step) : j2_.kirchhoff_stress(F, s, step);
+    if constexpr (holds_johnson_cook)
+      if (johnson_cook_) return johnson_cook_->kirchhoff_stress(F, s, step);
+    return j2_.kirchhoff_stress(F, s, step);
   }
   mat3 current_kirchhoff_stress(const mat3& F, const state_type& s) const {
-    return johnson_cook_ ? johnson_cook_->current_kirchhoff_stress(F, s) : j2_.current_kirchhoff_stress(F, s);
+    if constexpr (holds_johnson_cook)
+      if (johnson_cook_) return johnson_cook_->current_kirchhoff_stress(F, s);
+    return j2_.current_kirchhoff_stress(F, s);
   }
 
   double density() const { return j2_.density(); }
@@ -139,15 +158,21 @@ class material_type {
 
  private:
   j2_type j2_;
-  std::optional<material::johnson_cook> johnson_cook_;
+  std::optional<material::johnson_cook> johnson_cook_;  // empty unless holds_johnson_cook
 };
+
+using j2_material = basic_material_type<material::j2_state>;
+using material_type = basic_material_type<material::johnson_cook_state>;
 
 // The force loop's batched update (material/j2_batch.hpp, solver/point_materials.hpp): J2 and
 // elastic bodies in lanes, Johnson-Cook's points one by one.
-inline bool updates_in_lanes(const material_type& m) { return m.johnson_cook() == nullptr; }
 template <class State>
-block_lanes kirchhoff_stress_batch(const material_type& m, const block_lanes& F, State* s,
-                                             const material_step& step) {
+bool updates_in_lanes(const basic_material_type<State>& m) {
+  return m.johnson_cook() == nullptr;
+}
+template <class State>
+block_lanes kirchhoff_stress_batch(const basic_material_type<State>& m, const block_lanes& F, State* s,
+                                   const material_step& step) {
   return material::kirchhoff_stress_batch(m.j2(), F, s, step);
 }
 
