@@ -17,6 +17,7 @@
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/progress.hpp>
 #include <rkpm/io/solver_output.hpp>
+#include <rkpm/io/pvd_series.hpp>
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 
@@ -162,12 +163,13 @@ class run_observer {
   static bool is_last(double t, double end_time) { return t >= end_time * (1.0 - 1e-12); }
   bool snapshot_at(double t, bool last) const { return last || t >= record_.next_snapshot; }
 
-  // The cells made anew and the arrays computed one at a time as they are written: at 10^6
-  // particles the cells would hold 41 MB through the run, the raw arrays 200 MB at once.
+  // The points, the cells, the vectors and the stress made piecewise as they are written, the
+  // other arrays computed one at a time: at 10^6 particles the cells would hold 41 MB through
+  // the run, the raw arrays 200 MB at once.
   void write_snapshot(const Solver& s, double t) {
-    const auto vtu = vtk_.add_snapshot(t, s.particle_positions(), io::snapshot_cells(s),
-                                       io::snapshot_fields(s, io::field_arrays::deferred), snapshot_format_,
-                                       io::snapshot_tools(s));
+    const auto vtu = vtk_.add_snapshot(t, static_cast<std::size_t>(s.model().particle_count()), io::snapshot_points(s),
+                                       io::snapshot_cell_layout(s), io::snapshot_fields(s, io::field_arrays::deferred),
+                                       snapshot_format_, io::snapshot_tools(s));
     record_.snapshots.emplace_back(t, vtu.filename().string());
   }
 

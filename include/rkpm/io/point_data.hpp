@@ -1,7 +1,8 @@
 #pragma once
-// point_data: the named per-particle arrays of a VTK snapshot (io/vtk.hpp writes them), given
-// or deferred (computed when the writer reaches them).
+// point_data: the named per-particle arrays of a VTK snapshot (io/vtk.hpp writes them), given,
+// deferred (computed when the writer reaches them) or filled (made piecewise as they are written).
 
+#include <cstddef>
 #include <functional>
 #include <span>
 #include <string>
@@ -13,6 +14,10 @@
 
 namespace rkpm::io {
 
+// fill(first, n, out): values first .. first + n - 1 of an array made piecewise, into out.
+template <class T>
+using value_filler = std::function<void(std::size_t first, std::size_t n, T* out)>;
+
 // Named per-particle arrays of one snapshot, in the order they were added (ParaView lists them
 // in that order). Values are copied: a snapshot is written once, not every step. A deferred
 // array is computed only when write_vtu reaches it and let go once encoded, so that a writer of
@@ -20,11 +25,13 @@ namespace rkpm::io {
 class point_data {
  public:
   using producer = std::function<std::vector<double>()>;
+  using filler = value_filler<double>;  // fill(first, n, out): values first .. first + n - 1
   struct array {
     std::string name;
     int components;              // 1 scalar, 3 vector (2D + zero z), 9 tensor (row-major)
     std::vector<double> values;  // #points * components, point-major; empty while deferred
-    producer produce = {};       // set for a deferred array: returns its values
+    producer produce = {};       // set for a deferred or filled array: returns its values
+    std::function<filler()> prepare = {};  // set for a filled array: what fills it piecewise
   };
 
   // values  #points scalars
@@ -56,6 +63,21 @@ class point_data {
   point_data& add_deferred(std::string name, int components, producer produce) {
     check_name(name);
     arrays_.push_back(array{std::move(name), components, {}, std::move(produce)});
+    return *this;
+  }
+
+  // values made piecewise, `count` (#points * components) of them: prepare(), run when the writer
+  // reaches the array, returns fill(first, n, out), and the writer asks for a chunk at a time, so
+  // that a large array is never held whole (the runner's snapshots at 10^6 particles). Read
+  // whole, produce() fills all of it.
+  point_data& add_filled(std::string name, int components, std::size_t count, std::function<filler()> prepare) {
+    check_name(name);
+    producer whole = [count, prepare] {
+      std::vector<double> values(count);
+      if (count > 0) prepare()(0, count, values.data());
+      return values;
+    };
+    arrays_.push_back(array{std::move(name), components, {}, std::move(whole), std::move(prepare)});
     return *this;
   }
 

@@ -9,10 +9,13 @@
 //                        material state lists in `output_fields()` (temperature, damage, ...)
 //                        that is not NaN at every point (a state a material leaves unused; on
 //                        a part of a run on several processes, at every point of the run);
-//                        with field_arrays::deferred, each computed only when a writer asks;
+//                        with field_arrays::deferred, each computed only when a writer asks,
+//                        and the vectors and the stress made piecewise as they are written;
 //   snapshot_cells(s)    (or of a model) the cells of a snapshot: the model's background cells as quads when the
 //                        particles are their nodes (grids, Gmsh bodies), else a vertex per
 //                        particle (io/vtu_cells.hpp); the same for every snapshot of a run;
+//                        snapshot_cell_layout(s) the same entry by entry, snapshot_points(s)
+//                        the current positions piecewise (a snapshot that holds neither);
 //   snapshot_tools(s)    the rigid tools' vertices at the solver's time, one <FieldData> array
 //                        "tool:NAME" each, for a viewer to draw them with the body;
 //   largest_state_field(s, name, in), failed_fraction(s, in)
@@ -25,6 +28,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <limits>
 #include <string>
 #include <utility>
@@ -80,6 +85,65 @@ struct snapshot_coefficients {
   const std::vector<vec2>* v = nullptr;
 };
 
+namespace detail {
+
+// Particle values of the RK coefficients c, u(X_I) = sum_J N_J(X_I) c_J (plus X_I: the current
+// positions), as rows (x, y, 0) made piecewise: the arithmetic of values_at_particles and
+// positions_at_particles (solver/fields.hpp) and point_data::flat, particle by particle.
+inline std::function<point_data::filler()> particle_vectors(const discrete_model& m, const std::vector<vec2>& c,
+                                                           bool plus_position) {
+  return [&m, &c, plus_position] {
+    return point_data::filler([&m, &c, plus_position](std::size_t first, std::size_t n, double* out) {
+      index_t particle = -1;
+      vec2 u = vec2::Zero();
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto I = static_cast<index_t>((first + k) / 3);
+        if (I != particle) {
+          u = m.at_particles.interpolate(I, c);
+          if (plus_position) u += m.particles.position[I];
+          particle = I;
+        }
+        const std::size_t component = (first + k) % 3;
+        out[k] = component < 2 ? u[static_cast<index_t>(component)] : 0.0;
+      }
+    });
+  };
+}
+
+// The Cauchy stress at the particles (the lumped projection of solver/fields.hpp) as row-major
+// 3 x 3 rows, made piecewise. A 2D body's stress has no out-of-plane shear, so only xx, xy, yx,
+// yy and zz are projected and held (41 MB at 10^6 particles instead of 74); the others are the
+// projection of zeros, 0 / V_I, as the 9-component projection gives them. A material that
+// gives an out-of-plane shear anyway gets the 9-component projection.
+template <class Solver>
+point_data::filler stress_rows(const Solver& s) {
+  static constexpr std::array<int, 9> compact{0, 1, -1, 2, 3, -1, -1, -1, 4};  // row-major entry -> held column
+  using tensor = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+  const discrete_model& m = s.model();
+  bool in_plane = true;
+  auto held = std::make_shared<std::vector<double>>(project_to_particles_flat<5>(m, [&](index_t q) {
+    const tensor sigma = s.point_cauchy_stress(q);
+    in_plane = in_plane && sigma(0, 2) == 0.0 && sigma(1, 2) == 0.0 && sigma(2, 0) == 0.0 && sigma(2, 1) == 0.0;
+    return Eigen::Matrix<double, 5, 1>(sigma(0, 0), sigma(0, 1), sigma(1, 0), sigma(1, 1), sigma(2, 2));
+  }));
+  if (!in_plane) {
+    held = std::make_shared<std::vector<double>>(project_to_particles_flat<9>(m, [&](index_t q) {
+      const tensor sigma = s.point_cauchy_stress(q);
+      return Eigen::Matrix<double, 9, 1>(Eigen::Map<const Eigen::Matrix<double, 9, 1>>(sigma.data()));
+    }));
+    return [held](std::size_t first, std::size_t n, double* out) { std::copy_n(held->data() + first, n, out); };
+  }
+  return [held, &m](std::size_t first, std::size_t n, double* out) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t I = (first + k) / 9;
+      const int column = compact[(first + k) % 9];
+      out[k] = column >= 0 ? (*held)[5 * I + static_cast<std::size_t>(column)] : 0.0 / m.lumped_volume[I];
+    }
+  };
+}
+
+}  // namespace detail
+
 template <class Solver>
 point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::now,
                            snapshot_coefficients coefficients = {}) {
@@ -91,14 +155,19 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   };
   const std::vector<vec2>& d = coefficients.d ? *coefficients.d : s.coefficients();
   const std::vector<vec2>& v = coefficients.v ? *coefficients.v : s.coefficient_velocities();
-  add("displacement", 3, [&s, &d] { return point_data::flat(values_at_particles(s.model(), d)); });
-  add("velocity", 3, [&s, &v] { return point_data::flat(values_at_particles(s.model(), v)); });
-  add("stress", 9, [&s] {  // row-major, projected straight into the file's layout
-    return project_to_particles_flat<9>(s.model(), [&](index_t q) {
-      const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> sigma = s.point_cauchy_stress(q);
-      return Eigen::Matrix<double, 9, 1>(Eigen::Map<const Eigen::Matrix<double, 9, 1>>(sigma.data()));
-    });
-  });
+  const auto add_filled = [&](std::string name, int components, std::function<point_data::filler()> prepare) {
+    const auto count = static_cast<std::size_t>(components) * static_cast<std::size_t>(s.model().particle_count());
+    if (when == field_arrays::deferred) {
+      data.add_filled(std::move(name), components, count, std::move(prepare));
+      return;
+    }
+    std::vector<double> values(count);
+    if (count > 0) prepare()(0, count, values.data());
+    data.add_values(std::move(name), components, std::move(values));
+  };
+  add_filled("displacement", 3, detail::particle_vectors(s.model(), d, false));
+  add_filled("velocity", 3, detail::particle_vectors(s.model(), v, false));
+  add_filled("stress", 9, [&s] { return detail::stress_rows(s); });
   add("equivalent_plastic_strain", 1, [&s] {
     return s.template project_to_particles<double>([&](index_t q) {
       return static_cast<double>(s.point_states()[q].equivalent_plastic_strain);
@@ -123,15 +192,34 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   return data;
 }
 
+namespace detail {
+// Whether the snapshot's cells are the background cells (the particles are their nodes).
+inline bool snapshot_quads(const discrete_model& m) {
+  return m.bodies.found() ? m.bodies.nodes_are_particles() : rkpm::nodes_are_particles(m.particles.position, m.mesh);
+}
+}  // namespace detail
+
 inline vtu_cells snapshot_cells(const discrete_model& m) {
-  const bool nodes = m.bodies.found() ? m.bodies.nodes_are_particles()
-                                      : rkpm::nodes_are_particles(m.particles.position, m.mesh);
-  return nodes ? quad_cells(m.mesh, static_cast<std::size_t>(m.particle_count()))
-               : vertex_cells(static_cast<std::size_t>(m.particle_count()));
+  const auto n = static_cast<std::size_t>(m.particle_count());
+  return detail::snapshot_quads(m) ? quad_cells(m.mesh, n) : vertex_cells(n);
 }
 template <class Solver>
 vtu_cells snapshot_cells(const Solver& s) {
   return snapshot_cells(s.model());
+}
+// snapshot_cells entry by entry (io/vtu_cells.hpp), and the current positions as the rows
+// (x, y, 0) of the snapshot's points, made piecewise (write_vtu's form that holds neither).
+inline cell_layout snapshot_cell_layout(const discrete_model& m) {
+  const auto n = static_cast<std::size_t>(m.particle_count());
+  return detail::snapshot_quads(m) ? cell_layout::quads(m.mesh, n) : cell_layout::vertices(n);
+}
+template <class Solver>
+cell_layout snapshot_cell_layout(const Solver& s) {
+  return snapshot_cell_layout(s.model());
+}
+template <class Solver>
+std::function<point_data::filler()> snapshot_points(const Solver& s) {
+  return detail::particle_vectors(s.model(), s.coefficients(), true);
 }
 
 template <class Solver>

@@ -5,7 +5,7 @@
 // the background cells as VTK_QUADs when the particles are their nodes, so ParaView draws the
 // deformed body as a surface coloured by any array, else a VTK_VERTEX per particle
 // (io/vtu_cells.hpp); pvd_series keeps the .pvd index of a time series valid after every added
-// snapshot.
+// snapshot (io/pvd_series.hpp).
 //
 // Arrays are Float64 so nothing is lost against the solver's doubles. Encodings, as VTK's own
 // vtkXMLWriter writes them (header_type UInt64, native byte order):
@@ -70,8 +70,9 @@ inline void check_cells(const std::filesystem::path& path, const vtu_cells& cell
 
 namespace detail {
 // write_vtu's body: add_points(arrays) adds the "Points" array, add_cells(arrays) the <Cells>.
+// `cells`: how many there are (checked by the caller).
 template <class AddPoints, class AddCells>
-void write_vtu_with(const std::filesystem::path& path, std::size_t n, const vtu_cells& cells, const point_data& data,
+void write_vtu_with(const std::filesystem::path& path, std::size_t n, std::size_t cells, const point_data& data,
                     const vtu_format& format, const point_data& field_arrays, AddPoints add_points,
                     AddCells add_cells) {
   const auto check_size = [&](const point_data::array& a, std::size_t size) {
@@ -81,7 +82,6 @@ void write_vtu_with(const std::filesystem::path& path, std::size_t n, const vtu_
   };
   for (const auto& a : data.arrays())
     if (!a.produce) check_size(a, a.values.size());
-  check_cells(path, cells, n);
   std::string out;
   vtu_arrays arrays(out, format);
   if (arrays.format().compression == vtu_compression::zlib) {
@@ -113,13 +113,18 @@ void write_vtu_with(const std::filesystem::path& path, std::size_t n, const vtu_
                    a.values.size() / static_cast<std::size_t>(a.components));
     out += "    </FieldData>\n";
   }
-  fmt::format_to(std::back_inserter(out), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, cells.size());
+  fmt::format_to(std::back_inserter(out), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, cells);
 
   out += "      <PointData>\n";
   // A deferred array is made when its block is written (appended) or now, and let go once encoded.
   for (const auto& a : data.arrays()) {
     if (!a.produce) {
       arrays.add("Float64", a.name, a.components, std::span<const double>(a.values));
+      continue;
+    }
+    if (a.prepare) {
+      arrays.add_filled<double>("Float64", a.name, a.components, n * static_cast<std::size_t>(a.components),
+                                a.prepare);
       continue;
     }
     arrays.add_produced(a.name, a.components, [&a, &check_size] {
@@ -160,8 +165,9 @@ inline std::vector<double> points_xyz(const std::vector<vec2>& points) {
 // atomically.
 inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points, const vtu_cells& cells,
                       const point_data& data, const vtu_format& format = {}, const point_data& field_arrays = {}) {
+  detail::check_cells(path, cells, points.size());
   detail::write_vtu_with(
-      path, points.size(), cells, data, format, field_arrays,
+      path, points.size(), cells.size(), data, format, field_arrays,
       [&points](detail::vtu_arrays& a) { a.add_produced("Points", 3, [&points] { return detail::points_xyz(points); }); },
       [&cells](detail::vtu_arrays& a) {
         a.add("Int64", "connectivity", 1, std::span<const std::int64_t>(cells.connectivity));
@@ -176,8 +182,9 @@ inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>
 // positions; the runner's snapshots).
 inline void write_vtu(const std::filesystem::path& path, std::vector<vec2>&& points, vtu_cells&& cells,
                       const point_data& data, const vtu_format& format = {}, const point_data& field_arrays = {}) {
+  detail::check_cells(path, cells, points.size());
   detail::write_vtu_with(
-      path, points.size(), cells, data, format, field_arrays,
+      path, points.size(), cells.size(), data, format, field_arrays,
       [&points](detail::vtu_arrays& a) {
         a.add_produced("Points", 3, [p = std::move(points)]() mutable {
           std::vector<double> xyz = detail::points_xyz(p);
@@ -192,80 +199,34 @@ inline void write_vtu(const std::filesystem::path& path, std::vector<vec2>&& poi
       });
 }
 
+// The same with the points and cells made piecewise as they are written, so that a large
+// snapshot holds neither (the runner's: 57 MB at 10^6 particles): xyz() returns fill(first, n,
+// out) of the 3 * points coordinates (x, y, 0 per point), `cells` gives the cells entry by entry.
+inline void write_vtu(const std::filesystem::path& path, std::size_t points, std::function<point_data::filler()> xyz,
+                      const cell_layout& cells, const point_data& data, const vtu_format& format = {},
+                      const point_data& field_arrays = {}) {
+  // Each of the cells' arrays from its entry function.
+  const auto entries = [&cells]<class T>(T (cell_layout::*entry)(std::size_t) const) {
+    return [&cells, entry] {
+      return value_filler<T>([&cells, entry](std::size_t first, std::size_t n, T* out) {
+        for (std::size_t k = 0; k < n; ++k) out[k] = (cells.*entry)(first + k);
+      });
+    };
+  };
+  detail::write_vtu_with(
+      path, points, cells.size(), data, format, field_arrays,
+      [&](detail::vtu_arrays& a) { a.add_filled<double>("Float64", "Points", 3, 3 * points, std::move(xyz)); },
+      [&](detail::vtu_arrays& a) {
+        a.add_filled<std::int64_t>("Int64", "connectivity", 1, cells.connectivity_size(), entries(&cell_layout::connectivity));
+        a.add_filled<std::int64_t>("Int64", "offsets", 1, cells.size(), entries(&cell_layout::offset));
+        a.add_filled<std::uint8_t>("UInt8", "types", 1, cells.size(), entries(&cell_layout::type));
+      });
+}
+
 // The same with every point a VTK_VERTEX cell.
 inline void write_vtu(const std::filesystem::path& path, const std::vector<vec2>& points,
                       const point_data& data = {}, const vtu_format& format = {}) {
   write_vtu(path, points, vertex_cells(points.size()), data, format);
 }
-
-// A .pvd collection: one DataSet per snapshot with its time, files given relative to the
-// .pvd's directory. Every add() rewrites the whole index atomically, so a run that dies after
-// any number of snapshots leaves a valid .pvd listing exactly those snapshots.
-class pvd_series {
- public:
-  // `entries`: snapshots already in the series (time, file relative to the .pvd), e.g. those of
-  // the run a restart continues.
-  explicit pvd_series(std::filesystem::path pvd_path, std::vector<std::pair<double, std::string>> entries = {})
-      : path_(std::move(pvd_path)), entries_(std::move(entries)) {
-    write();
-  }
-
-  void add(double time, const std::string& vtu_filename_relative) {
-    entries_.emplace_back(time, vtu_filename_relative);
-    write();
-  }
-
-  // The next snapshot's file: <pvd stem>_<index, 6 digits><extension>, next to the .pvd (a
-  // snapshot written in pieces is its .pvtu index: io/pvtu.hpp).
-  std::string next_file(std::string_view extension = ".vtu") const {
-    return fmt::format("{}_{:06d}{}", path_.stem().string(), entries_.size(), extension);
-  }
-
-  // Writes next_file() next to the .pvd and adds it; returns its path.
-  // Without `cells`, every point is a vertex cell.
-  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const vtu_cells& cells,
-                                     const point_data& data, const vtu_format& format = {},
-                                     const point_data& field_arrays = {}) {
-    const std::string name = next_file();
-    const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, points, cells, data, format, field_arrays);
-    add(time, name);
-    return vtu;
-  }
-  // The same with the positions and cells handed over (write_vtu's form that lets them go early).
-  std::filesystem::path add_snapshot(double time, std::vector<vec2>&& points, vtu_cells&& cells,
-                                     const point_data& data, const vtu_format& format = {},
-                                     const point_data& field_arrays = {}) {
-    const std::string name = next_file();
-    const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, std::move(points), std::move(cells), data, format, field_arrays);
-    add(time, name);
-    return vtu;
-  }
-  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const point_data& data,
-                                     const vtu_format& format = {}) {
-    return add_snapshot(time, points, vertex_cells(points.size()), data, format);
-  }
-
-  const std::filesystem::path& path() const { return path_; }
-  std::size_t size() const { return entries_.size(); }
-
- private:
-  void write() const {
-    std::string out =
-        "<?xml version=\"1.0\"?>\n"
-        "<VTKFile type=\"Collection\" version=\"0.1\">\n"
-        "  <Collection>\n";
-    for (const auto& [t, file] : entries_)
-      fmt::format_to(std::back_inserter(out),
-                     "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t,
-                     detail::xml_escape(file));
-    out += "  </Collection>\n</VTKFile>\n";
-    replace_file(path_, out);
-  }
-
-  std::filesystem::path path_;
-  std::vector<std::pair<double, std::string>> entries_;
-};
 
 }  // namespace rkpm::io

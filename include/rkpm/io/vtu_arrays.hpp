@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include <rkpm/io/point_data.hpp>
 #include <rkpm/io/vtu_encoding.hpp>
 
 namespace rkpm::io::detail {
@@ -104,6 +105,31 @@ class vtu_arrays {
       const std::vector<double> values = produce();
       return write_appended(out, reinterpret_cast<const unsigned char*>(values.data()),
                             values.size() * sizeof(double), format_, name);
+    });
+  }
+
+  // An array of `count` values of T made piecewise: prepare() returns fill(first, n, out), which
+  // writes values first .. first + n - 1 to out. Appended, prepare() runs when the file reaches
+  // the array's block and fill() a chunk at a time (write_appended_chunks), so that neither the
+  // raw array nor its compressed bytes are held whole; otherwise the array is made now.
+  template <class T>
+  void add_filled(std::string_view type, std::string_view name, int components, std::size_t count,
+                  std::function<value_filler<T>()> prepare) {
+    if (format_.encoding != vtu_encoding::appended) {
+      std::vector<T> values(count);
+      if (count > 0) prepare()(0, count, values.data());
+      add(type, name, components, std::span<const T>(values));
+      return;
+    }
+    open_element(type, name, components, 0);
+    add_appended([this, count, prepare = std::move(prepare), name = std::string(name)](std::ostream& out) {
+      const value_filler<T> fill = prepare();
+      std::vector<T> chunk;
+      return write_appended_chunks(out, count * sizeof(T), format_, name, [&](std::size_t first, std::size_t n) {
+        chunk.resize(n / sizeof(T));  // chunks start and end on whole values (blocks of 32 KiB)
+        fill(first / sizeof(T), chunk.size(), chunk.data());
+        return reinterpret_cast<const unsigned char*>(chunk.data());
+      });
     });
   }
 

@@ -159,22 +159,29 @@ inline binary_block encode_binary(const unsigned char* bytes, std::size_t size, 
 }
 
 // Blocks compressed and written at a time by write_appended: 4 MiB of raw bytes, so that an
-// array's compressed bytes are never all held at once (35 MB for the stress of 10^6 particles).
+// array's compressed bytes are never all held at once (35 MB for the stress of 10^6 particles),
+// nor, for an array made piecewise (vtu_arrays::add_filled), its raw bytes.
 inline constexpr std::size_t vtu_blocks_per_chunk = 128;
 
-// Writes one appended DataArray's bytes as VTK reads them (the bytes of encode_binary's header
-// and body) to `out` at its position, compressing vtu_blocks_per_chunk blocks at a time and
-// writing each chunk before the next is made; the header, whose sizes are known only then, is
-// written into the space left for it. Returns the bytes written.
-inline std::size_t write_appended(std::ostream& out, const unsigned char* bytes, std::size_t size,
-                                  const vtu_format& format, std::string_view name) {
+// Writes one appended DataArray of `size` bytes as VTK reads them (the bytes of encode_binary's
+// header and body) to `out` at its position, vtu_blocks_per_chunk blocks at a time: chunk(first,
+// n) gives the array's bytes first .. first + n - 1 (valid until the next call), each chunk is
+// compressed and written before the next is asked for, and the header, whose sizes are known
+// only then, is written into the space left for it. Returns the bytes written.
+template <class Chunk>
+std::size_t write_appended_chunks(std::ostream& out, std::size_t size, const vtu_format& format,
+                                  std::string_view name, Chunk&& chunk) {
   const auto put = [&out](const void* p, std::size_t n) {
     out.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
   };
+  constexpr std::size_t chunk_bytes = vtu_blocks_per_chunk * vtu_block_size;
   if (format.compression == vtu_compression::none) {
     const std::uint64_t count = size;
     put(&count, sizeof count);
-    put(bytes, size);
+    for (std::size_t first = 0; first < size; first += chunk_bytes) {
+      const std::size_t n = std::min(chunk_bytes, size - first);
+      put(chunk(first, n), n);
+    }
     return sizeof count + size;
   }
   std::vector<std::uint64_t> h = compression_header(size);
@@ -182,8 +189,10 @@ inline std::size_t write_appended(std::ostream& out, const unsigned char* bytes,
   put(h.data(), h.size() * sizeof(std::uint64_t));  // sizes still 0: rewritten below
   std::size_t written = h.size() * sizeof(std::uint64_t);
   for (std::size_t first = 0; first < h[0]; first += vtu_blocks_per_chunk) {
+    // The chunk's blocks are the array's blocks first .. last - 1: each compressed alone.
     const std::size_t last = std::min<std::size_t>(h[0], first + vtu_blocks_per_chunk);
-    for (const byte_buffer& piece : compress_range(bytes, size, first, last, format, name, h.data() + 3 + first)) {
+    const std::size_t begin = first * vtu_block_size, n = std::min(size, last * vtu_block_size) - begin;
+    for (const byte_buffer& piece : compress_range(chunk(begin, n), n, 0, last - first, format, name, h.data() + 3 + first)) {
       put(piece.data(), piece.size());
       written += piece.size();
     }
@@ -193,6 +202,12 @@ inline std::size_t write_appended(std::ostream& out, const unsigned char* bytes,
   put(h.data(), h.size() * sizeof(std::uint64_t));
   out.seekp(end);
   return written;
+}
+
+// The same from the whole array's bytes.
+inline std::size_t write_appended(std::ostream& out, const unsigned char* bytes, std::size_t size,
+                                  const vtu_format& format, std::string_view name) {
+  return write_appended_chunks(out, size, format, name, [bytes](std::size_t first, std::size_t) { return bytes + first; });
 }
 
 }  // namespace detail

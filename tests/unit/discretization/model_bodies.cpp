@@ -69,6 +69,7 @@ TEST_CASE("model bodies: one body keeps no table; the axis of a section is no su
   const model_bodies b(particles.position, mesh, /*axisymmetric=*/true);
   CHECK(b.count() == 1);
   CHECK(b.particle_body().empty());
+  CHECK(b.particle_body().capacity() == 0);  // let go, not only cleared
   CHECK(b.of_particle(5) == 0);
   CHECK(b.particles_of(0).size() == static_cast<std::size_t>(particles.size()));
   const auto& chains = b.surface("test");

@@ -8,6 +8,7 @@
 // libdeflate or zlib), and fails on a header that lies.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -29,6 +30,7 @@
 #endif
 
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/io/pvd_series.hpp>
 #include <rkpm/io/vtk.hpp>
 
 #include "support/run_capture.hpp"
@@ -398,6 +400,54 @@ TEST_CASE("vtu: positions and cells handed over write the same bytes and are let
   auto k = cells;
   const auto vtu = pvd.add_snapshot(0.0, std::move(p), std::move(k), data);
   CHECK(file_bytes(vtu) == file_bytes(dir / "kept.vtu"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vtu: points, cells and arrays made piecewise write the bytes of the whole arrays") {
+  // write_vtu(path, n, xyz, cell_layout, ...) and point_data::add_filled make their arrays a
+  // chunk of 4 MiB at a time (the runner's snapshots); the file is the one the whole arrays give,
+  // in every encoding and compression. 420 x 420 nodes: the points' and the connectivity's bytes
+  // span two chunks, which end inside a point's row; two points no quad uses are vertex cells.
+  const auto dir = vtk_scratch() / "filled";
+  for (const int nx : {420, 9}) {
+    const int ny = nx;
+    auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(1.0, 1.0), Eigen::Vector2i(nx, ny));
+    const auto points = vtk_grid_points(nx, ny, 2);
+    mesh.node.assign(points.begin(), points.begin() + nx * ny);
+    const std::size_t n = points.size();
+    std::vector<double> eps;
+    for (std::size_t k = 0; k < n; ++k) eps.push_back(static_cast<double>(k) / 7.0 - 2.5);
+    rkpm::io::point_data whole, filled;
+    whole.add("eps_p", eps);
+    filled.add_filled("eps_p", 1, n, [&eps] {
+      return rkpm::io::point_data::filler(
+          [&eps](std::size_t first, std::size_t count, double* out) { std::copy_n(eps.data() + first, count, out); });
+    });
+    CHECK(filled.arrays()[0].produce() == eps);  // read whole
+    const auto xyz = [&points] {
+      return rkpm::io::point_data::filler([&points](std::size_t first, std::size_t count, double* out) {
+        for (std::size_t k = first; k < first + count; ++k) out[k - first] = k % 3 < 2 ? points[k / 3][k % 3] : 0.0;
+      });
+    };
+    for (const bool quads : {true, false}) {
+      const auto cells = quads ? rkpm::io::quad_cells(mesh, n) : rkpm::io::vertex_cells(n);
+      const auto layout = quads ? rkpm::io::cell_layout::quads(mesh, n) : rkpm::io::cell_layout::vertices(n);
+      CHECK(layout.size() == cells.size());
+      for (auto e : {vtu_encoding::appended, vtu_encoding::binary, vtu_encoding::ascii}) {
+        if (e == vtu_encoding::ascii && nx > 9) continue;  // text of the small grid only
+        for (auto c : built_compressions()) {
+          CAPTURE(nx);
+          CAPTURE(quads);
+          CAPTURE(name(e));
+          CAPTURE(name(c));
+          const vtu_format f{e, c};
+          rkpm::io::write_vtu(dir / "whole.vtu", points, cells, whole, f);
+          rkpm::io::write_vtu(dir / "filled.vtu", n, xyz, layout, filled, f);
+          CHECK(file_bytes(dir / "whole.vtu") == file_bytes(dir / "filled.vtu"));
+        }
+      }
+    }
+  }
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <array>
 #include <cmath>
 #include <string_view>
@@ -110,8 +111,35 @@ TEST_CASE("every material update is told the step's dt, its end time and the poi
   }
   const auto stress = std::find_if(arrays.begin(), arrays.end(), [](const auto& a) { return a.name == "stress"; });
   REQUIRE(stress != arrays.end());
-  CHECK(stress->values ==
-        io::point_data::flat(s.project_to_particles<mat3>([&](index_t q) { return s.point_cauchy_stress(q); })));
+  // Byte for byte (the signs of the zeros too): the stress is projected from its in-plane
+  // entries and zz only, its out-of-plane shears are the projection of zeros.
+  const auto same_bytes = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+  };
+  CHECK(same_bytes(stress->values, io::point_data::flat(s.project_to_particles<mat3>(
+                                       [&](index_t q) { return s.point_cauchy_stress(q); }))));
+  // A material that gives an out-of-plane shear gets the whole projection.
+  struct with_shear {
+    const decltype(s)& solver;
+    const discrete_model& model() const { return solver.model(); }
+    mat3 point_cauchy_stress(index_t q) const {
+      mat3 sigma = solver.point_cauchy_stress(q);
+      sigma(0, 2) = sigma(2, 0) = 1e6 * static_cast<double>(q + 1);
+      return sigma;
+    }
+  } sheared{s};
+  std::vector<double> rows(9 * static_cast<std::size_t>(s.model().particle_count()));
+  io::detail::stress_rows(sheared)(0, rows.size(), rows.data());
+  CHECK(rows[2] != 0.0);
+  CHECK(same_bytes(rows, io::point_data::flat(project_to_particles<mat3>(
+                             s.model(), [&](index_t q) { return sheared.point_cauchy_stress(q); }))));
+  // The vectors, made particle by particle, are those of the whole-array functions.
+  const auto displacement = std::find_if(arrays.begin(), arrays.end(), [](const auto& a) { return a.name == "displacement"; });
+  REQUIRE(displacement != arrays.end());
+  CHECK(same_bytes(displacement->values, io::point_data::flat(s.particle_displacements())));
+  std::vector<double> xyz(3 * static_cast<std::size_t>(s.model().particle_count()));
+  io::snapshot_points(s)()(0, xyz.size(), xyz.data());
+  CHECK(same_bytes(xyz, io::point_data::flat(s.particle_positions())));
 }
 
 TEST_CASE("a law that needs nothing of the step keeps its two-argument form") {
