@@ -44,24 +44,26 @@ inline std::string field_figure_preamble(const std::string& title, const std::st
       gnuplot_quote(title), gnuplot_quote(label));
 }
 
-// points  #points positions (m); cells on them; values  #points; tools  polylines (m).
+// points  #points positions (m); cells on them (vtu_cells, or a cell_layout, which holds no
+// arrays: io/vtu_cells.hpp); values  #points; tools  polylines (m).
 // The cells go to gnuplot as text one polygon at a time, never held as rows: at 10^6 cells the
 // rows would take 140 MB, a tenth of the solver's footprint.
-inline void field_png(const std::filesystem::path& png, const std::vector<vec2>& points, const vtu_cells& cells,
-                      const std::vector<double>& values, const std::vector<std::vector<vec2>>& tools,
-                      const field_figure_options& options) {
+template <class Cells>
+void field_png(const std::filesystem::path& png, const std::vector<vec2>& points, const Cells& cells,
+               const std::vector<double>& values, const std::vector<std::vector<vec2>>& tools,
+               const field_figure_options& options) {
   if (values.size() != points.size())
     fail("field_png '{}': {} values for {} points", png.string(), values.size(), points.size());
-  const auto begin_of = [&](std::size_t c) { return c == 0 ? std::int64_t{0} : cells.offsets[c - 1]; };
+  const auto begin_of = [&](std::size_t c) { return c == 0 ? std::int64_t{0} : cell_end(cells, c - 1); };
   // The axes: the cells' points with a margin; tools are clipped to it.
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
   bool polygons = false, dots = false;
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    (cells.types[c] == vtk_vertex ? dots : polygons) = true;
-    for (std::int64_t k = begin_of(c); k < cells.offsets[c]; ++k)
+    (cell_type(cells, c) == vtk_vertex ? dots : polygons) = true;
+    for (std::int64_t k = begin_of(c); k < cell_end(cells, c); ++k)
       for (int d = 0; d < 2; ++d) {
-        const double x = points[cells.connectivity[k]][d] * options.scale;
+        const double x = points[cell_point(cells, k)][d] * options.scale;
         lo[d] = std::min(lo[d], x), hi[d] = std::max(hi[d], x);
       }
   }
@@ -88,18 +90,18 @@ inline void field_png(const std::filesystem::path& png, const std::vector<vec2>&
   };
   if (polygons) {  // each filled with the mean of the field at its nodes
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (cells.types[c] == vtk_vertex) continue;
+      if (cell_type(cells, c) == vtk_vertex) continue;
       double mean = 0.0;
-      for (std::int64_t k = begin_of(c); k < cells.offsets[c]; ++k) mean += values[cells.connectivity[k]];
-      mean /= static_cast<double>(cells.offsets[c] - begin_of(c));
-      for (std::int64_t k = begin_of(c); k < cells.offsets[c]; ++k) row(cells.connectivity[k], mean);
+      for (std::int64_t k = begin_of(c); k < cell_end(cells, c); ++k) mean += values[cell_point(cells, k)];
+      mean /= static_cast<double>(cell_end(cells, c) - begin_of(c));
+      for (std::int64_t k = begin_of(c); k < cell_end(cells, c); ++k) row(cell_point(cells, k), mean);
       rows += "\n";
     }
     rows += "e\n";
   }
   if (dots) {
     for (std::size_t c = 0; c < cells.size(); ++c)
-      if (cells.types[c] == vtk_vertex) row(cells.connectivity[begin_of(c)], values[cells.connectivity[begin_of(c)]]);
+      if (cell_type(cells, c) == vtk_vertex) row(cell_point(cells, begin_of(c)), values[cell_point(cells, begin_of(c))]);
     rows += "e\n";
   }
   fig << rows;

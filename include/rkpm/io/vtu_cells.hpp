@@ -121,4 +121,13 @@ class cell_layout {
   std::vector<std::int64_t> loose_;  // quads: the points no quad uses, a vertex cell each after them
 };
 
+// Cell i's type, the end of its points in the connectivity and the connectivity's entry k, of
+// either form of the cells (what io/field_figure.hpp reads).
+inline std::uint8_t cell_type(const vtu_cells& c, std::size_t i) { return c.types[i]; }
+inline std::int64_t cell_end(const vtu_cells& c, std::size_t i) { return c.offsets[i]; }
+inline std::int64_t cell_point(const vtu_cells& c, std::size_t k) { return c.connectivity[k]; }
+inline std::uint8_t cell_type(const cell_layout& c, std::size_t i) { return c.type(i); }
+inline std::int64_t cell_end(const cell_layout& c, std::size_t i) { return c.offset(i); }
+inline std::int64_t cell_point(const cell_layout& c, std::size_t k) { return c.connectivity(k); }
+
 }  // namespace rkpm::io
