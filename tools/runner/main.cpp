@@ -42,14 +42,18 @@ int launched_processes() {
 int main(int argc, char** argv) {
   using namespace rkpm::runner;
 #ifdef __GLIBC__
-  // Arrays above 256 KiB straight from the system and back to it when freed. By default glibc
+  // Arrays above 6 MiB straight from the system and back to it when freed. By default glibc
   // raises this threshold to the size of each large block freed (up to 32 MB), after which
   // blocks below it come from the heap, which keeps their pages: at 10^6 particles the arrays
   // of the first snapshot stayed in the process, 61 MB, and a later array found no room in
-  // them (issue 23: the peak 1,703 MB, 1,647 MB with this). The step allocates nothing, so
-  // the step's time is unchanged; the output's fresh pages fault in anew (on this project's
-  // virtual machine two snapshots of 257,121 particles took 1.24 s instead of 0.86-0.92 s).
-  mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+  // them (issue 23: the peak 1,703 MB, 1,647 MB with a fixed threshold). Below it, the
+  // snapshot's 4 MiB chunk buffers stay in the heap, and so does up to 32 MiB of free space at
+  // its top (the trim threshold, which a fixed mmap threshold would otherwise leave at 128 KiB):
+  // given back, every snapshot faulted its buffers in anew, which on this project's virtual
+  // machine made two snapshots of 257,121 particles take 1.27 s instead of 0.90 s. The step
+  // allocates nothing, so its time does not move.
+  mallopt(M_MMAP_THRESHOLD, 6 * 1024 * 1024);
+  mallopt(M_TRIM_THRESHOLD, 32 * 1024 * 1024);
 #endif
   const int processes = launched_processes();
   int rank = 0, processes_here = 1, machine_rank = 0, with_rank_0 = 1;
