@@ -9,7 +9,6 @@
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 
-#include "case_file/build_problem.hpp"
 #include "case_file/load_case_file.hpp"
 
 namespace rkpm::runner {

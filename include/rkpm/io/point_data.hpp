@@ -18,6 +18,14 @@ namespace rkpm::io {
 template <class T>
 using value_filler = std::function<void(std::size_t first, std::size_t n, T* out)>;
 
+// All `count` values of an array made piecewise (prepare() returns its filler), at once.
+template <class T>
+std::vector<T> filled_values(std::size_t count, const std::function<value_filler<T>()>& prepare) {
+  std::vector<T> values(count);
+  if (count > 0) prepare()(0, count, values.data());
+  return values;
+}
+
 // Named per-particle arrays of one snapshot, in the order they were added (ParaView lists them
 // in that order). Values are copied: a snapshot is written once, not every step. A deferred
 // array is computed only when write_vtu reaches it and let go once encoded, so that a writer of
@@ -72,11 +80,7 @@ class point_data {
   // whole, produce() fills all of it.
   point_data& add_filled(std::string name, int components, std::size_t count, std::function<filler()> prepare) {
     check_name(name);
-    producer whole = [count, prepare] {
-      std::vector<double> values(count);
-      if (count > 0) prepare()(0, count, values.data());
-      return values;
-    };
+    producer whole = [count, prepare] { return filled_values(count, prepare); };
     arrays_.push_back(array{std::move(name), components, {}, std::move(whole), std::move(prepare)});
     return *this;
   }

@@ -3,7 +3,6 @@
 // after every added snapshot.
 
 #include <filesystem>
-#include <functional>
 #include <iterator>
 #include <string>
 #include <string_view>
@@ -40,41 +39,16 @@ class pvd_series {
     return fmt::format("{}_{:06d}{}", path_.stem().string(), entries_.size(), extension);
   }
 
-  // Writes next_file() next to the .pvd and adds it; returns its path.
-  // Without `cells`, every point is a vertex cell.
-  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const vtu_cells& cells,
-                                     const point_data& data, const vtu_format& format = {},
-                                     const point_data& field_arrays = {}) {
+  // Writes next_file() next to the .pvd by write_vtu(file, args...), any of its forms (io/vtk.hpp:
+  // points and cells given, handed over, or made piecewise; points alone, each a vertex cell),
+  // and adds it; returns its path.
+  template <class... WriteArgs>
+  std::filesystem::path add_snapshot(double time, WriteArgs&&... args) {
     const std::string name = next_file();
     const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, points, cells, data, format, field_arrays);
+    write_vtu(vtu, std::forward<WriteArgs>(args)...);
     add(time, name);
     return vtu;
-  }
-  // The same with the positions and cells handed over (write_vtu's form that lets them go early).
-  std::filesystem::path add_snapshot(double time, std::vector<vec2>&& points, vtu_cells&& cells,
-                                     const point_data& data, const vtu_format& format = {},
-                                     const point_data& field_arrays = {}) {
-    const std::string name = next_file();
-    const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, std::move(points), std::move(cells), data, format, field_arrays);
-    add(time, name);
-    return vtu;
-  }
-  // The same with the points and cells made piecewise as they are written (write_vtu's form
-  // that holds neither).
-  std::filesystem::path add_snapshot(double time, std::size_t points, std::function<point_data::filler()> xyz,
-                                     const cell_layout& cells, const point_data& data, const vtu_format& format = {},
-                                     const point_data& field_arrays = {}) {
-    const std::string name = next_file();
-    const auto vtu = path_.parent_path() / name;
-    write_vtu(vtu, points, std::move(xyz), cells, data, format, field_arrays);
-    add(time, name);
-    return vtu;
-  }
-  std::filesystem::path add_snapshot(double time, const std::vector<vec2>& points, const point_data& data,
-                                     const vtu_format& format = {}) {
-    return add_snapshot(time, points, vertex_cells(points.size()), data, format);
   }
 
   const std::filesystem::path& path() const { return path_; }

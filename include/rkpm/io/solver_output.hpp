@@ -157,13 +157,8 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   const std::vector<vec2>& v = coefficients.v ? *coefficients.v : s.coefficient_velocities();
   const auto add_filled = [&](std::string name, int components, std::function<point_data::filler()> prepare) {
     const auto count = static_cast<std::size_t>(components) * static_cast<std::size_t>(s.model().particle_count());
-    if (when == field_arrays::deferred) {
-      data.add_filled(std::move(name), components, count, std::move(prepare));
-      return;
-    }
-    std::vector<double> values(count);
-    if (count > 0) prepare()(0, count, values.data());
-    data.add_values(std::move(name), components, std::move(values));
+    if (when == field_arrays::deferred) data.add_filled(std::move(name), components, count, std::move(prepare));
+    else data.add_values(std::move(name), components, filled_values(count, prepare));
   };
   add_filled("displacement", 3, detail::particle_vectors(s.model(), d, false));
   add_filled("velocity", 3, detail::particle_vectors(s.model(), v, false));
@@ -192,31 +187,25 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   return data;
 }
 
-namespace detail {
-// Whether the snapshot's cells are the background cells (the particles are their nodes).
-inline bool snapshot_quads(const discrete_model& m) {
-  return m.bodies.found() ? m.bodies.nodes_are_particles() : rkpm::nodes_are_particles(m.particles.position, m.mesh);
-}
-}  // namespace detail
-
-inline vtu_cells snapshot_cells(const discrete_model& m) {
-  const auto n = static_cast<std::size_t>(m.particle_count());
-  return detail::snapshot_quads(m) ? quad_cells(m.mesh, n) : vertex_cells(n);
-}
-template <class Solver>
-vtu_cells snapshot_cells(const Solver& s) {
-  return snapshot_cells(s.model());
-}
-// snapshot_cells entry by entry (io/vtu_cells.hpp), and the current positions as the rows
-// (x, y, 0) of the snapshot's points, made piecewise (write_vtu's form that holds neither).
+// The snapshot's cells entry by entry (io/vtu_cells.hpp), and as arrays: the model's background
+// cells as quads when the particles are their nodes, else a vertex per particle.
 inline cell_layout snapshot_cell_layout(const discrete_model& m) {
   const auto n = static_cast<std::size_t>(m.particle_count());
-  return detail::snapshot_quads(m) ? cell_layout::quads(m.mesh, n) : cell_layout::vertices(n);
+  const bool nodes = m.bodies.found() ? m.bodies.nodes_are_particles()
+                                      : rkpm::nodes_are_particles(m.particles.position, m.mesh);
+  return nodes ? cell_layout::quads(m.mesh, n) : cell_layout::vertices(n);
 }
 template <class Solver>
 cell_layout snapshot_cell_layout(const Solver& s) {
   return snapshot_cell_layout(s.model());
 }
+inline vtu_cells snapshot_cells(const discrete_model& m) { return cells_of(snapshot_cell_layout(m)); }
+template <class Solver>
+vtu_cells snapshot_cells(const Solver& s) {
+  return snapshot_cells(s.model());
+}
+// The current positions as the rows (x, y, 0) of the snapshot's points, made piecewise
+// (write_vtu's form that holds neither them nor the cells).
 template <class Solver>
 std::function<point_data::filler()> snapshot_points(const Solver& s) {
   return detail::particle_vectors(s.model(), s.coefficients(), true);

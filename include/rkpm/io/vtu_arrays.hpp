@@ -116,8 +116,7 @@ class vtu_arrays {
   void add_filled(std::string_view type, std::string_view name, int components, std::size_t count,
                   std::function<value_filler<T>()> prepare) {
     if (format_.encoding != vtu_encoding::appended) {
-      std::vector<T> values(count);
-      if (count > 0) prepare()(0, count, values.data());
+      const std::vector<T> values = filled_values(count, prepare);
       add(type, name, components, std::span<const T>(values));
       return;
     }

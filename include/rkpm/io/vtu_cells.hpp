@@ -35,50 +35,12 @@ struct vtu_cells {
   bool empty() const { return types.empty(); }
 };
 
-namespace detail {
-inline void add_vertex(vtu_cells& c, std::size_t point) {
-  c.connectivity.push_back(static_cast<std::int64_t>(point));
-  c.offsets.push_back(static_cast<std::int64_t>(c.connectivity.size()));
-  c.types.push_back(vtk_vertex);
-}
-}  // namespace detail
-
-// Cell i is the single point i.
-inline vtu_cells vertex_cells(std::size_t points) {
-  vtu_cells c;
-  c.connectivity.reserve(points);
-  c.offsets.reserve(points);
-  c.types.reserve(points);
-  for (std::size_t i = 0; i < points; ++i) detail::add_vertex(c, i);
-  return c;
-}
-
-// The mesh's cells as quads on `points` points whose first mesh.node.size() are the mesh's
-// nodes in order; every point no cell uses (a node left out of the cells, or a point beyond the
-// nodes) becomes a vertex cell after the quads.
-inline vtu_cells quad_cells(const background_mesh& mesh, std::size_t points) {
-  if (mesh.node.size() > points)
-    fail("quad_cells: the mesh has {} nodes for {} points; the points must include the nodes", mesh.node.size(),
-         points);
-  vtu_cells c;
-  std::vector<bool> used(points, false);
-  c.connectivity.reserve(4 * mesh.cell.size() + points);
-  c.offsets.reserve(mesh.cell.size() + points);
-  c.types.reserve(mesh.cell.size() + points);
-  for (const auto& cell : mesh.cell) {
-    for (const auto n : cell) {
-      c.connectivity.push_back(static_cast<std::int64_t>(n));
-      used[static_cast<std::size_t>(n)] = true;
-    }
-    c.offsets.push_back(static_cast<std::int64_t>(c.connectivity.size()));
-    c.types.push_back(vtk_quad);
-  }
-  for (std::size_t i = 0; i < points; ++i)
-    if (!used[i]) detail::add_vertex(c, i);
-  return c;
-}
-
-// The cells of quad_cells(mesh, points) or vertex_cells(points), entry by entry.
+// The cells entry by entry:
+//   cell_layout::vertices(n)       cell i is the single point i
+//   cell_layout::quads(mesh, n)    the mesh's cells as quads on n points whose first
+//                                  mesh.node.size() are the mesh's nodes in order; every point no
+//                                  cell uses (a node left out of the cells, or a point beyond the
+//                                  nodes) a vertex cell after the quads
 class cell_layout {
  public:
   static cell_layout vertices(std::size_t points) {
@@ -104,7 +66,7 @@ class cell_layout {
 
   std::size_t size() const { return quads_ + vertices_; }
   std::size_t connectivity_size() const { return 4 * quads_ + vertices_; }
-  // Entry k of the connectivity, cell c's end in it and its type, as quad_cells or vertex_cells has them.
+  // Entry k of the connectivity, cell c's end in it and its type.
   std::int64_t connectivity(std::size_t k) const {
     if (k < 4 * quads_) return mesh_->cell[k / 4][k % 4];
     k -= 4 * quads_;
@@ -120,6 +82,24 @@ class cell_layout {
   std::size_t quads_ = 0, vertices_ = 0;
   std::vector<std::int64_t> loose_;  // quads: the points no quad uses, a vertex cell each after them
 };
+
+// The same as arrays.
+inline vtu_cells cells_of(const cell_layout& layout) {
+  vtu_cells c;
+  c.connectivity.resize(layout.connectivity_size());
+  c.offsets.resize(layout.size());
+  c.types.resize(layout.size());
+  for (std::size_t k = 0; k < c.connectivity.size(); ++k) c.connectivity[k] = layout.connectivity(k);
+  for (std::size_t i = 0; i < c.types.size(); ++i) {
+    c.offsets[i] = layout.offset(i);
+    c.types[i] = layout.type(i);
+  }
+  return c;
+}
+inline vtu_cells vertex_cells(std::size_t points) { return cells_of(cell_layout::vertices(points)); }
+inline vtu_cells quad_cells(const background_mesh& mesh, std::size_t points) {
+  return cells_of(cell_layout::quads(mesh, points));
+}
 
 // Cell i's type, the end of its points in the connectivity and the connectivity's entry k, of
 // either form of the cells (what io/field_figure.hpp reads).

@@ -1,12 +1,13 @@
 #pragma once
 // build_problem<Contact, Material>(case, resolution): the rkpm::problem a case file describes,
 // for any contact policy and either case-file material (case_material.hpp; j2_material only for
-// a file that uses_johnson_cook() does not): each body discretized and added with its own material (add_body), its
-// constraints, initial velocity and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do (cases/parameters.hpp): a
-// rectangle of n particles per direction gets (n - 1) K + 1, a polygon's spacing is divided by
-// K (gmsh_bodies.hpp). A rectangle builds exactly the particles and cells of make_grid_particles and
-// make_grid_mesh, in the same order, so a paper case file reproduces its typed case bit for
-// bit.
+// a file without a Johnson-Cook body, uses_johnson_cook in case_description.hpp): each body
+// discretized and added with its own material (add_body), its constraints, initial velocity
+// and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do
+// (cases/parameters.hpp): a rectangle of n particles per direction gets (n - 1) K + 1, a
+// polygon's spacing is divided by K (gmsh_bodies.hpp). A rectangle builds exactly the
+// particles and cells of make_grid_particles and make_grid_mesh, in the same order, so a paper
+// case file reproduces its typed case bit for bit.
 
 #include <algorithm>
 #include <map>
@@ -38,11 +39,6 @@ namespace rkpm::runner::case_file {
 // One line "FILE: POINTER: message", as load_case_file reports.
 [[noreturn]] inline void fail_at(const case_description& c, const std::string& at, const std::string& message) {
   fail_in_file(c.file.string(), at, message);
-}
-
-// Whether a body of the file is Johnson-Cook, so that its run needs material_type's state.
-inline bool uses_johnson_cook(const case_description& c) {
-  return std::ranges::any_of(c.bodies, [](const body_description& b) { return b.material.johnson_cook.has_value(); });
 }
 
 template <class Material = material_type>

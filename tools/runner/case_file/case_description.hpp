@@ -4,6 +4,7 @@
 // gives them. Every struct keeps the JSON pointer it was read from (`at`), so that a check
 // made later (building at a resolution, naming a tool) still points at the line to fix.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -181,5 +182,11 @@ struct case_description {
   int snapshots = 20, history_rows = 400;
   std::vector<history_description> histories;
 };
+
+// Whether a body of the file is Johnson-Cook, so that its run needs material_type's state
+// (case_material.hpp).
+inline bool uses_johnson_cook(const case_description& c) {
+  return std::ranges::any_of(c.bodies, [](const body_description& b) { return b.material.johnson_cook.has_value(); });
+}
 
 }  // namespace rkpm::runner::case_file

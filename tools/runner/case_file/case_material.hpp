@@ -12,7 +12,7 @@
 //                   passes NaN as before, and the snapshots leave out a field that is NaN
 //                   everywhere, io/solver_output.hpp)
 // The runner takes j2_material for a file without a Johnson-Cook body (uses_johnson_cook,
-// build_problem.hpp): at 10^6 particles and two points each, 82 MB less.
+// case_description.hpp): at 10^6 particles and two points each, 82 MB less.
 //
 // "elastic" is J2 that never yields (flow stress +infinity). Its elastic part is the Hencky law
 // of material::elastic (tau = K tr(eps) + 2 mu dev(eps) = lambda tr(eps) + 2 mu eps in principal
