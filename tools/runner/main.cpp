@@ -42,16 +42,16 @@ int launched_processes() {
 int main(int argc, char** argv) {
   using namespace rkpm::runner;
 #ifdef __GLIBC__
-  // Arrays above 6 MiB straight from the system and back to it when freed. By default glibc
-  // raises this threshold to the size of each large block freed (up to 32 MB), after which
-  // blocks below it come from the heap, which keeps their pages: at 10^6 particles the arrays
-  // of the first snapshot stayed in the process, 61 MB, and a later array found no room in
-  // them (issue 23: the peak 1,703 MB, 1,647 MB with a fixed threshold). Below it, the
-  // snapshot's 4 MiB chunk buffers stay in the heap, and so does up to 32 MiB of free space at
-  // its top (the trim threshold, which a fixed mmap threshold would otherwise leave at 128 KiB):
-  // given back, every snapshot faulted its buffers in anew, which on this project's virtual
-  // machine made two snapshots of 257,121 particles take 1.27 s instead of 0.90 s. The step
-  // allocates nothing, so its time does not move.
+  // Arrays above 6 MiB come straight from the system and go back to it when freed. By default
+  // glibc raises this threshold to the size of each large block freed (up to 32 MB), after which
+  // blocks below it come from the heap, which keeps their pages: the arrays of a large run's
+  // first snapshot would stay in the process, and a later array might not fit in them, so the
+  // peak would grow by their size. Below 6 MiB the snapshot's 4 MiB chunk buffers stay in the
+  // heap, and so does up to 32 MiB of free space at its top (the trim threshold, which a fixed
+  // mmap threshold would otherwise leave at 128 KiB): given back, the buffers would be faulted
+  // in anew by every snapshot, and page faults make the output slower. The step allocates
+  // nothing, so these settings do not touch its time. They are the program's, not the library's:
+  // they apply to the whole process (docs/performance.md, the runner's memory).
   mallopt(M_MMAP_THRESHOLD, 6 * 1024 * 1024);
   mallopt(M_TRIM_THRESHOLD, 32 * 1024 * 1024);
 #endif
