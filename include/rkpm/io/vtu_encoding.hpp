@@ -26,8 +26,9 @@
 namespace rkpm::io {
 
 enum class vtu_encoding { appended, binary, ascii };
-// zlib: the smallest files, read by every VTK reader (meshio too). lz4: about 8 times as fast
-// to write and 15% larger, read by VTK 8.1 and later (ParaView 5.5 and later), not by meshio.
+// zlib: the smallest files, read by every VTK reader (meshio too), hence the default. lz4: much
+// faster to write, larger files, read by VTK 8.1 and later (ParaView 5.5 and later), not by
+// meshio (tools/rkpm bench --vtu compares them).
 enum class vtu_compression { none, zlib, lz4 };
 
 inline constexpr std::string_view vtu_compression_name(vtu_compression c) {
@@ -48,9 +49,8 @@ struct vtu_format {
   vtu_encoding encoding = vtu_encoding::appended;
   vtu_compression compression = default_vtu_compression;
   // 1 (fastest) .. 9 (smallest). 1, not zlib's default 6: a solver's doubles have
-  // full-precision mantissas that no level finds matches in, so a higher level only spends time
-  // (a snapshot of 10^6 particles, 201 MB of arrays: zlib 86.2 MB at 1, 85.4 MB at 6 in twice
-  // the time; libdeflate 85.4 MB at 1, 85.6 MB at 6 in 2.3 times the time; tools/bench/vtu.cpp).
+  // full-precision mantissas in which no level finds matches, so a higher level spends about
+  // twice the time for a file hardly smaller (tools/rkpm bench --vtu shows both levels).
   int zlib_level = 1;
   vtu_deflater deflater = default_vtu_deflater;  // who writes the streams at that level
 
