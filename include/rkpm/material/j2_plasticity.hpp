@@ -175,8 +175,9 @@ class j2_plasticity {
   plastic_flow plastic_flow_of(double q_trial, double eps_p, const material_step& step) const {
     // The yield check at the static curve (rate 0) and the step's temperature; a trial stress at
     // or below the lowest flow stress of a law that only hardens is elastic without evaluating
-    // the curve (the power law's pow: 16% of the wheel's first 4 mm of stroke, where most points
-    // are still below it; the whole run 2.5% faster, the same bits).
+    // the curve: a costly law (the power law's pow) is then evaluated only at points that may
+    // yield, and most points of a forging are below yield for most of the run. The result is
+    // the same bits either way.
     if (!(q_trial > lowest_flow_stress_)) return {};
     const double yield = flow_stress_at(hardening_, eps_p, flow_point{0.0, step.temperature});
     if (!(q_trial > yield)) return {};
