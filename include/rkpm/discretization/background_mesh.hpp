@@ -60,8 +60,8 @@ struct background_mesh {
   // its cell traverses it (counter-clockwise cells: the body to the left, the outward normal to
   // the right).
   // The edges are counted in a sorted array of 64-bit keys (8 bytes per cell side), not a
-  // std::map (about 110 bytes per node): built while the solver is set up, with the tables
-  // already in memory, the map was the run's peak.
+  // std::map (about 110 bytes per node): this runs while the solver is set up, with the shape
+  // tables already in memory, so a map would raise the peak memory of the whole run.
   std::vector<std::array<index_t, 2>> boundary_edges() const {
     const auto key = [](index_t a, index_t b) {
       const auto [lo, hi] = std::minmax(a, b);

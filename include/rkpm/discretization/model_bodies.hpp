@@ -35,7 +35,8 @@ class model_bodies {
       : partition_((mesh.validate(), partition_bodies(positions, mesh))) {
     positions_count_ = positions.size();
     if (partition_.bodies == 1) {  // nothing to look up: keep no table per particle and cell
-      // Swapped out, not assigned {}: that would clear them and keep their memory (16 MB at 10^6).
+      // Swapped out, not assigned {}: that would clear them and keep their capacity, a table
+      // per particle and one per cell held for nothing.
       std::vector<index_t>().swap(partition_.particle_body);
       std::vector<index_t>().swap(partition_.cell_body);
     }
