@@ -3,8 +3,9 @@
 // count. The range is cut into blocks of a fixed size; the blocks run in parallel, each summing
 // its indices in order, and then the blocks' sums are added in block order. A plain OpenMP
 // reduction would add the threads' partial sums in an order that depends on the thread count,
-// and a serial loop leaves the second core idle (the solver's energy sums over the particles
-// were 6% of a one-thread step, docs/performance.md).
+// and a serial loop leaves the other cores idle while the solver's sums over the particles
+// (the energy ledger, the kinetic energy) run, a part of every step that would not shrink with
+// the threads (docs/performance.md).
 //
 //   block_sums<2> sums(n);
 //   const auto [a, b] = sums([&](index_t I, std::array<double, 2>& s) { x[I] += ...; s[0] += ...; s[1] += ...; });

@@ -1,7 +1,7 @@
 #pragma once
 // crc32_of: the CRC-32 of zlib, gzip and PNG (reflected polynomial 0xEDB88320) of any number of
-// bytes, continuing `crc` (0 to start). zlib's crc32_z when compiled with RKPM_WITH_ZLIB (about
-// 0.1 s for a checkpoint at 10^6 particles); otherwise a bytewise table, a few times slower, with
+// bytes, continuing `crc` (0 to start). zlib's crc32_z when compiled with RKPM_WITH_ZLIB (it
+// reads several bytes at a time); otherwise a bytewise table, a few times slower, with
 // the same values, so a file checked by one build reads in the other. Checkpoints use it
 // (io/checkpoint_format.hpp): it finds every error of up to 32 consecutive bits in a block.
 

@@ -19,8 +19,8 @@
 // else by zlib (RKPM_WITH_ZLIB, linked with zlib); the rkpm CMake target does either when it
 // finds the library (libdeflate-dev, zlib1g-dev). Without both the writer is the same minus
 // compression, and asking for vtu_compression::zlib is an error saying so. vtu_compression::lz4
-// writes the same blocks with LZ4 (compressor="vtkLZ4DataCompressor", io/vtu_lz4.hpp: about 8
-// times as fast, 15% larger, read by ParaView 5.5 and later but not by meshio) when compiled with
+// writes the same blocks with LZ4 (compressor="vtkLZ4DataCompressor", io/vtu_lz4.hpp: several
+// times as fast, larger, read by ParaView 5.5 and later but not by meshio) when compiled with
 // RKPM_WITH_LZ4 and linked with liblz4 (liblz4-dev).
 
 #include <algorithm>

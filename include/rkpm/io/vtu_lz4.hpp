@@ -6,8 +6,8 @@
 // (LZ4_compress_default, no frame and no size prefix: the reader knows the block's size from
 // the header).
 //
-// LZ4 trades size for time: on a solver's doubles it compresses about 8 times as fast as zlib
-// at level 1 and gives a file about 15% larger (tools/bench/vtu.cpp). It is compiled in with
+// LZ4 trades size for time: on a solver's doubles it compresses several times as fast as zlib
+// at level 1 and gives a larger file (tools/rkpm bench --vtu compares them). It is compiled in with
 // RKPM_WITH_LZ4 and liblz4 (Debian liblz4-dev), which the rkpm CMake target does when it finds
 // them. meshio 1.x does not read it; ParaView and VTK's own readers do.
 

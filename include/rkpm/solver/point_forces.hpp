@@ -78,7 +78,7 @@ RKPM_HOT_INLINE void scatter_rows(const point_rows& t, const std::array<index_t,
   for (index_t j = 0; j < len; ++j) {
     // f_I's components summed in scalars, as the vector additions would sum them: the hoop
     // term's half-width add would otherwise make the next point's full-width load of f_I wait
-    // (a failed store forwarding, 30% of the loop's time).
+    // for both stores to retire (a failed store forwarding, which stalls the whole loop).
     double* const fI = fs[t.neighbor[b[0] + j]].data();
     double f0 = fI[0], f1 = fI[1];
     for (std::size_t k = 0; k < P; ++k) {
