@@ -39,7 +39,7 @@ inline constexpr bool vtu_zlib_library_available = false;
 #endif
 inline constexpr bool vtu_zlib_available = vtu_libdeflate_available || vtu_zlib_library_available;
 // libdeflate when compiled in: the same level takes about half zlib's time for a file a little
-// smaller (README, "Performance notes").
+// smaller (docs/performance.md, "Writing a snapshot"; tools/rkpm bench --vtu).
 inline constexpr vtu_deflater default_vtu_deflater =
     vtu_libdeflate_available ? vtu_deflater::libdeflate : vtu_deflater::zlib;
 inline constexpr bool vtu_deflater_available(vtu_deflater d) {
