@@ -15,6 +15,7 @@ namespace rkpm::contact {
 struct none {
   static constexpr std::string_view name = "none";
   void setup(const contact_body&, const contact_slaves&) {}
+  void rebind(const contact_body&, const contact_slaves&) {}
   contact_result enforce(const contact_body&, double, double, std::vector<vec2>&, std::vector<vec2>&) { return {}; }
   const std::vector<rigid_tool>& tools() const { return tools_; }
   const std::vector<vec2>& reactions() const { return reactions_; }

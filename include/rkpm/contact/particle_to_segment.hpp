@@ -95,6 +95,18 @@ class particle_to_segment {
     ready_ = true;
   }
 
+  // The same slaves on a model rebuilt in the current configuration (the solver's re-reference):
+  // the tools' pass keeps what the last step left, the others are set up on the new surfaces.
+  void rebind(const contact_body& body, const contact_slaves& slaves) {
+    tool_slaves_.rebind(body, slaves);
+    bodies_.setup(body, tool_slaves_.slaves());
+    if (tool_vertex_slaves_) {
+      std::size_t vertices = 0;
+      for (const rigid_tool& tool : tools()) vertices += tool.reference_vertices().size();
+      tool_vertices_.setup(body, vertices);
+    }
+  }
+
   contact_result enforce(const contact_body& body, double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
     if (!ready_) fail("contact: enforce() called before setup(); the solver must call setup(body, slaves) once");
     const std::size_t np = body.reference_position.size();

@@ -101,6 +101,21 @@ class tool_slave_contact {
     reaction_.assign(nt, vec2::Zero());
   }
 
+  // After the solver re-referenced its model (the same slaves, new shape-function rows): the rows
+  // and what is derived from them are taken again; what the last step left (the slaves' and the
+  // tools' positions, the held segments) stays, so the next step continues as it would have.
+  void rebind(const contact_body& body, const contact_slaves& slaves) {
+    if (slaves.particle != slave_) fail("contact: rebind() with other slave particles than setup() had");
+    const index_t np = static_cast<index_t>(body.reference_position.size());
+    table_ = slaves.table;
+    reached_ = compact_columns(table_, np);
+    const auto reached = static_cast<index_t>(reached_.size());
+    reached_mass_.resize(reached);
+    for (index_t r = 0; r < reached; ++r) reached_mass_[r] = body.mass[reached_[r]];
+    shared_mass_.setup(reached);
+    increments_.resize(reached);
+  }
+
   template <ContactEnforcement Enforcement, FrictionLaw Friction>
   void enforce(const contact_body& body, double t, double dt, const Enforcement& enforcement, const Friction& friction,
                std::vector<vec2>& d, std::vector<vec2>& v, contact_result& result) {

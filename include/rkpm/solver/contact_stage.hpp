@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <ranges>
+#include <typeinfo>
 #include <span>
 #include <utility>
 #include <vector>
@@ -42,6 +43,19 @@ struct contact_stage {
     policy.setup(body, s);
     impulse.assign(std::ranges::size(policy.tools()), vec2::Zero());
     impulse_carry = impulse;
+  }
+
+  // The same slaves on a model rebuilt in the current configuration (explicit_solver::rereference):
+  // their rows taken again, the impulses and the policy's state kept.
+  void rebind(const discrete_model& m, const contact_body& body) {
+    if (!active()) return;
+    if constexpr (requires { policy.rebind(body, contact_slaves{}); }) {
+      policy.rebind(body, select_slaves(m, slaves, true));
+    } else {
+      fail("re-referencing: the contact policy {} cannot take a rebuilt model (it has no rebind()); run without "
+           "\"rereference\" or give it one",
+           typeid(Ct).name());
+    }
   }
 
   // Checkpoint sections (io/checkpoint.hpp).

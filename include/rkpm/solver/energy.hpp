@@ -1,9 +1,10 @@
 #pragma once
 // The energy ledger, the health check of an explicit run (docs/method.md section 7):
-//   kinetic + internal = initial kinetic + external + contact + constraint
+//   kinetic + internal = initial kinetic + external + contact + constraint + remap
 // internal is the work of the internal forces (elastic energy plus plastic dissipation),
 // external the work of body forces, contact the work of the contact corrections and
-// constraint that of prescribed physical motions. balance_error is the largest imbalance
+// constraint that of prescribed physical motions, remap the change of kinetic energy when the
+// velocities are carried to a new reference (solver/rereference.hpp). balance_error is the largest imbalance
 // seen over the run relative to the largest energy term seen.
 
 #include <algorithm>
@@ -22,18 +23,19 @@ struct energy_balance {
   double external = 0.0;
   double contact = 0.0;
   double constraint = 0.0;
+  double remap = 0.0;  // kinetic energy changed by carrying the velocities to a new reference (section 5.8)
   double largest_term = 0.0;
   double largest_imbalance = 0.0;
 
   double imbalance() const {
-    return kinetic + internal - initial_kinetic - external - contact - constraint;
+    return kinetic + internal - initial_kinetic - external - contact - constraint - remap;
   }
   double balance_error() const { return largest_term > 0.0 ? largest_imbalance / largest_term : 0.0; }
 
   // Records the current imbalance; call once per step after every term is updated.
   void record() {
     const double terms[] = {initial_kinetic, kinetic, internal, std::abs(external),
-                            std::abs(contact), std::abs(constraint)};
+                            std::abs(contact), std::abs(constraint), std::abs(remap)};
     for (double t : terms) largest_term = std::max(largest_term, t);
     largest_imbalance = std::max(largest_imbalance, std::abs(imbalance()));
   }

@@ -16,6 +16,7 @@
 // exchanges ghost values: after the prediction, after contact and constraints, after the scatter.
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -70,9 +71,22 @@ class explicit_solver {
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) {
     sections(r, *this);
-    f_ext_.restore(timeline_.time, model_.particles.position, mass_);
+    f_ext_.restore(timeline_.time, initial_positions(), mass_);
   }
   bool between_steps() const { return timeline_.between_steps(); }
+
+  // ---- the model's lifecycle (docs/method.md section 5.8) ------------------------------
+  // Rebuilds the model in the current configuration through model_builder() and carries the
+  // state over (solver/rereference_step.hpp): step() calls it when options().rereference says so;
+  // a caller may call it between steps. Refused on several processes and without a builder.
+  void rereference();
+  // The re-references so far and when they happened (s).
+  index_t rereferences() const { return static_cast<index_t>(rereference_times_.size()); }
+  const std::vector<double>& rereference_times() const { return rereference_times_; }
+  // The particles' initial reference positions X_I (the model's until the first re-reference).
+  const std::vector<vec2>& initial_positions() const {
+    return initial_position_.empty() ? model_.particles.position : initial_position_;
+  }
 
   // ---- results -----------------------------------------------------------------------
   double time() const { return timeline_.time; }
@@ -129,6 +143,7 @@ class explicit_solver {
   // Not saved: scratch of step() (d_start_, timeline_.taking) and the set-up.
   template <class Archive, class Self>
   static void sections(Archive& a, Self& s) {
+    reference_sections(a, s);  // first: a re-referenced model is rebuilt before the rest is read
     for (auto [name, field] : {std::pair{"solver.d", &s.d_}, {"solver.v", &s.v_}, {"solver.a", &s.a_},
                                {"solver.f_int", &s.f_int_}, {"solver.v_half_prev", &s.v_half_prev_}})
       a.array(name, *field);
@@ -138,6 +153,15 @@ class explicit_solver {
     a.part(s.clock_);
     a.part(s.contact_);   // what the run reports of contact, then the policy's state
   }
+
+  template <class Archive, class Self>
+  static void reference_sections(Archive& a, Self& s);
+  // What the step derives from the model besides the point states: the constraint rows, the
+  // contact slaves' rows and surfaces and the particle sums. `slaves`: the problem's, on the first
+  // model; none on a rebuilt one, whose contact keeps its slaves and state (contact_stage::rebind).
+  void derive_from_model(std::vector<velocity_constraint> constraints,
+                         std::optional<std::vector<index_t>> slaves = std::nullopt);
+  bool rereference_due() const;
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).
   // On several processes an error of the force loop on one rank (an inverted point) is thrown on
@@ -168,6 +192,9 @@ class explicit_solver {
   constraint_projector constraints_;
   energy_balance energy_;
   step_timeline timeline_;
+  std::vector<double> rereference_times_;
+  index_t last_rereference_step_ = 0;
+  std::vector<vec2> initial_position_;  // empty until the first re-reference
 };
 
 // Set-up and step out of the class: a program may compile them once (solver/solver_instances.hpp).
@@ -185,13 +212,10 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
   d_.assign(model_.particle_count(), vec2::Zero());
   v_ = a_ = v_half_prev_ = f_int_ = d_;
   f_ext_ = body_forces(prob.body_force, std::move(prob.body_force_field), model_.particles.position, mass_);
-  sums_ = block_sums<2>(model_.own.particles.size(), model_.own.group);  // owned particles come first
   points_ = point_materials<G, M>(model_, materials_);
   // A rank's part of a model has them already: the whole model's (parallel/distributed_problem.hpp).
   if (!model_.is_part()) add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
-  constraints_ = constraint_projector(std::move(prob.constraints), model_.at_particles, mass_, model_.particle_id);
-  d_start_.resize(constraints_.touched().size());
-  contact_.setup(model_, body(), std::move(prob.slave_particles));
+  derive_from_model(std::move(prob.constraints), std::move(prob.slave_particles));
   initial_velocities(model_, prob, v_);
   constraints_.apply(0.0, v_);
   v_half_prev_ = v_;
@@ -227,7 +251,7 @@ void explicit_solver<G, M, Ct>::step() {
   exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
   // The ghosts' v(n+1/2) as well, for the constraints' work at the step's end.
   exec::parallel_for(model_.own.ghost_particles, [&](index_t I) { v_half_prev_[I] = v_[I]; });
-  f_ext_.advance(timeline_.time + dt, model_.particles.position, mass_);
+  f_ext_.advance(timeline_.time + dt, initial_positions(), mass_);
   // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
   // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
   const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
@@ -255,9 +279,22 @@ void explicit_solver<G, M, Ct>::step() {
   }
   timeline_.finish_step();
   energy_.record();
-  if (timeline_.steps % options_.time_step_update_interval == 0)
+  if (rereference_due()) rereference();
+  else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);
 }
 
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::derive_from_model(std::vector<velocity_constraint> constraints,
+                                                  std::optional<std::vector<index_t>> slaves) {
+  sums_ = block_sums<2>(model_.own.particles.size(), model_.own.group);  // owned particles come first
+  constraints_ = constraint_projector(std::move(constraints), model_.at_particles, mass_, model_.particle_id);
+  d_start_.resize(constraints_.touched().size());
+  if (slaves) contact_.setup(model_, body(), std::move(*slaves));
+  else contact_.rebind(model_, body());
+}
+
 }  // namespace rkpm
+
+#include <rkpm/solver/rereference_step.hpp>

@@ -13,6 +13,9 @@
 // (current_kirchhoff_stress, concepts/material.hpp). det F and tau are computed from them when
 // asked for (output). A point with det F <= 0 or a failed material update stops the run with
 // an error naming the first such point, its position and the step.
+// After a re-reference (rereference()) the gradients are those of the current reference: the
+// material gets F = F_rel F_r and the force terms F_rel with tau / det F_r (docs/method.md
+// (69)-(70), solver/point_reference.hpp); points are then updated one by one.
 
 #include <algorithm>
 #include <array>
@@ -32,6 +35,7 @@
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_force_terms.hpp>
 #include <rkpm/solver/point_forces.hpp>
+#include <rkpm/solver/point_reference.hpp>
 
 namespace rkpm {
 
@@ -85,7 +89,8 @@ class point_materials {
     const double log_dt = where.dt > 0.0 ? std::log(where.dt) : std::numeric_limits<double>::quiet_NaN();
     const auto point = [&](index_t t, index_t q, const point_gradient& g, mat2& S, double& hoop) {
       tile_summary& tile = tile_[t];  // its points are visited in order by one thread
-      const mat3 F = deformation_gradient_at(m, q, g);
+      const mat3 F_rel = deformation_gradient_at(m, q, g);
+      const mat3 F = reference_.active() ? reference_.total(q, block_matrix::of(F_rel)).full() : F_rel;
       const double J = block_matrix::of(F).determinant();  // F.determinant()'s value, fewer flops
       if (!(J > 0.0) || !std::isfinite(J)) {
         tile.fail(q, failure::inverted, J);
@@ -106,12 +111,13 @@ class point_materials {
         return;
       }
       if constexpr (!stress_recomputed) tau_[q] = block_matrix::of(tau);
-      point_force(m, tile, q, F, tau, S, hoop);
+      if (reference_.active()) point_force_rereferenced(m, tile, q, F_rel, tau, S, hoop);
+      else point_force(m, tile, q, F, tau, S, hoop);
     };
     if constexpr (batched) {
       assemble_point_batches<G, simd_lanes>(
           m, d, f_int, [&](index_t t, index_t q0, int n, const point_gradient* g, mat2* S, double* hoop) {
-            if (n < simd_lanes || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
+            if (n < simd_lanes || reference_.active() || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
               for (int k = 0; k < n; ++k) point(t, q0 + k, g[k], S[k], hoop[k]);
           });
     } else {
@@ -156,9 +162,51 @@ class point_materials {
     if constexpr (stress_recomputed) return material.at_point(q).current_kirchhoff_stress(deformation_gradient(q), state_[q]);
     else return tau_[q].full();
   }
-  // F at every point, as the time-step controller reads it (q -> mat3).
+  // F relative to the current reference at every point, as the time-step controller reads it
+  // (q -> mat3): the total F until the first re-reference.
   auto deformation_gradients() const {
-    return [this](index_t q) { return deformation_gradient(q); };
+    return [this](index_t q) { return relative_deformation_gradient(q); };
+  }
+  mat3 relative_deformation_gradient(index_t q) const {
+    return reference_.active() ? reference_.relative(q, deformation_block(q)).full() : deformation_gradient(q);
+  }
+  // The largest principal stretch of F_rel, or of its inverse, over the points (the distortion of
+  // the kernels since the last reference, docs/method.md (71)), in point order.
+  double max_distortion(const discrete_model& m) const {
+    double largest = 1.0;
+    for (index_t q = 0; q < m.point_count(); ++q) {
+      const mat2 C = [&] {
+        const mat2 F = relative_deformation_gradient(q).template topLeftCorner<2, 2>();
+        return mat2(F.transpose() * F);
+      }();
+      const double mean = 0.5 * C.trace(), radius = std::sqrt(std::max(0.0, mean * mean - C.determinant()));
+      const double most = std::sqrt(mean + radius), least = std::sqrt(std::max(mean - radius, 0.0));
+      largest = std::max({largest, most, least > 0.0 ? 1.0 / least : std::numeric_limits<double>::infinity()});
+    }
+    return largest;
+  }
+  const point_reference& reference() const { return reference_; }
+
+  // The current configuration becomes the points' reference: `next` is the model built on it, whose
+  // point q is the same material point as `m`'s (the same cell and rule point). The states stay;
+  // F_r takes each point's total F, the weights their ratio (solver/point_reference.hpp).
+  void rereference(const discrete_model& m, const discrete_model& next) {
+    if (next.point_count() != m.point_count())
+      fail("re-referencing: the rebuilt model has {} quadrature points where the old one had {}; the cells "
+           "and the rule must stay the same",
+           next.point_count(), m.point_count());
+    const std::vector<block_matrix> total = [&] {
+      std::vector<block_matrix> F(m.point_count());
+      for (index_t q = 0; q < m.point_count(); ++q) F[q] = deformation_block(q);
+      return F;
+    }();
+    reference_.advance(m.point_count(), [&](index_t q) { return total[q]; }, m.points.weight, next.points.weight);
+    bind(next);
+  }
+  // What the points read of their model besides the states: its tiles and mean support.
+  void bind(const discrete_model& m) {
+    tile_.assign(m.traversal.tiles(), tile_summary{});
+    support_inverse_ = m.mean_support().cwiseInverse();
   }
 
   // Checkpoint (io/checkpoint.hpp): the states and what the last force evaluation left.
@@ -188,6 +236,16 @@ class point_materials {
     F.topLeftCorner<2, 2>() += g.H;
     F(2, 2) = G::out_of_plane_stretch(g.u, m.points.position[q]);
     return F;
+  }
+
+  // After a re-reference: S_q and h_q from F_rel and the stress per unit current reference volume,
+  // tau / det F_r (70); the plastic work per unit initial volume with the point's initial volume.
+  void point_force_rereferenced(const discrete_model& m, tile_summary& tile, index_t q, const mat3& F_rel,
+                                const mat3& tau, mat2& S, double& hoop) {
+    const mat2 Fi = point_forces_of<G>(F_rel, tau / reference_.volume_change(q), m.points.weight[q],
+                                       m.points.position[q][0], S, hoop);
+    tile.narrowest = std::min(tile.narrowest, std::min(support_stretch(Fi, support_inverse_), F_rel(2, 2)));
+    tile.plastic += state_[q].plastic_work * m.points.weight[q] * reference_.initial_volume_per_weight(q);
   }
 
   // S_q and h_q from F_q and tau_q (solver/point_force_terms.hpp), and what the point adds to its
@@ -249,6 +307,7 @@ class point_materials {
     if constexpr (!state_records_F) a.array("points.F", s.F_);
     a.value("points.min_stretch", s.min_stretch_);
     a.value("points.plastic_work", s.plastic_work_);
+    a.part(s.reference_);
   }
 
   [[noreturn]] void report_failure(const discrete_model& m, const tile_summary& tile, step_context where) {
@@ -272,6 +331,7 @@ class point_materials {
   std::vector<double> point_terms_;    // on several ranks: the owned points' plastic work
   std::string error_;                  // the first material error's message (of point error_point_)
   index_t error_point_ = 0;
+  point_reference reference_;           // empty until the first re-reference
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
   double min_stretch_ = 1.0, plastic_work_ = 0.0;
 };

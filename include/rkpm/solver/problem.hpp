@@ -15,6 +15,7 @@
 #include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/solver/constraints.hpp>
+#include <rkpm/solver/rereference.hpp>
 
 namespace rkpm {
 
@@ -73,6 +74,7 @@ struct run_options {
   double max_moment_condition = 1e10;  // RK moment-matrix conditioning limit
   double axis_tolerance = 1e-9;        // relative to the body size: particles with r below lie on the axis
   index_t max_steps = 50'000'000;      // a run needing more steps is refused (a wrong constant, not a long run)
+  rereference_policy rereference;      // when the kernels are rebuilt in the current configuration (never by default)
 
   void validate() const;
 };
@@ -85,6 +87,7 @@ inline void run_options::validate() const {
   if (!(fixed_time_step >= 0.0)) fail("fixed time step {} must be positive (or 0 for automatic)", fixed_time_step);
   if (time_step_update_interval < 1) fail("time step update interval must be at least 1 step");
   if (max_steps < 1) fail("max_steps {} must be at least 1", max_steps);
+  rereference.validate();
 }
 
 }  // namespace rkpm

@@ -62,6 +62,24 @@ class time_step_controller {
     return step_size(min_stretch, options, time, steps);
   }
 
+  // The step on a model rebuilt in the current configuration (explicit_solver::rereference): the
+  // particles keep their numbers, so the power iteration starts from the last mode (with the start
+  // vector mixed in, as update() does) and measures the new model's spectrum; the supports'
+  // stretch starts again at 1.
+  template <class PointF>
+  double rereference(const discrete_model& m, const point_moduli& c, const std::vector<double>& mass, const PointF& F,
+                     const run_options& options, double time, index_t steps) {
+    workspace_ = stiffness_workspace(m);
+    const double norm = exec::max_over_owned(m.own, [&](index_t I) { return mode_[I].cwiseAbs().maxCoeff(); }, 0.0);
+    exec::parallel_for(m.own.particles, [&](index_t I) {
+      mode_[I] = mode_[I] / norm + 0.3 * power_iteration_start(static_cast<std::size_t>(m.global_particle(I)));
+    });
+    estimate_dt_ = 2.0 / std::sqrt(largest_frequency_squared<G>(m, c, F, mass, mode_, workspace_, 30));
+    estimate_stretch_ = 1.0;
+    estimate_step_ = steps;
+    return step_size(1.0, options, time, steps);
+  }
+
   // dt_crit of the reference configuration, 2 / omega_max.
   double reference_stable_step() const { return reference_dt_; }
 

@@ -1,0 +1,138 @@
+#pragma once
+// explicit_solver::rereference(): the kernels rebuilt in the current configuration
+// (docs/method.md section 5.8), between two steps:
+//   1. the particles' current positions x_I become their reference; the cells are the deformed
+//      cells (their corners are the particles), the supports follow the stretch (72), and the
+//      model's builder (model_builder()) builds the tables, weights, VCI gradients and surfaces;
+//   2. each quadrature point keeps its material state: point q of the new model is point q of the
+//      old one (the same rule point of the same cell), and F_r takes its total F (69), so the
+//      material goes on from the same F. The new point lies where the deformed cell's map puts
+//      the rule point, the old one where the RK displacement put it: they differ by O(h^2 |grad
+//      grad u|) (the bilinear cell against the smooth map);
+//   3. the coefficients: d = 0 (the displacement since the new reference), v solved so that the
+//      new approximation gives every particle its current velocity (73); then shifted by one
+//      uniform velocity per free direction so that sum_I m_I v_I is kept to round-off (the masses
+//      stay); the kinetic energy's change is booked as energy().remap;
+//   4. the constraint rows, the contact slaves' rows and surfaces, the stable step (a short
+//      warm-started power iteration) and f_int, a at the new reference.
+// Included at the end of solver/explicit_solver.hpp.
+
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <rkpm/solver/explicit_solver.hpp>
+#include <rkpm/solver/fields.hpp>
+#include <rkpm/solver/rereference.hpp>
+
+namespace rkpm {
+
+template <Geometry G, Material M, Contact Ct>
+bool explicit_solver<G, M, Ct>::rereference_due() const {
+  const rereference_policy& when = options_.rereference;
+  if (!when.enabled()) return false;
+  if (when.every_steps > 0 && timeline_.steps - last_rereference_step_ >= when.every_steps) return true;
+  return when.max_stretch > 0.0 && points_.max_distortion(model_) > when.max_stretch;
+}
+
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::rereference() {
+  if (model_.is_part())
+    fail("re-referencing on several processes is not available yet: run on one process, or without "
+         "\"rereference\"");
+  if (!factory_)
+    fail("re-referencing needs the solver's model builder: build the solver with make_solver (or pass the "
+         "model_factory to its constructor)");
+  if (!model_.bodies.nodes_are_particles())
+    fail("re-referencing moves the cells with the particles at their corners: give the particles at the mesh "
+         "nodes (make_grid_particles with make_grid_mesh, or particles from the mesh)");
+  if (!timeline_.between_steps()) fail("rereference() between steps only");
+  if (initial_position_.empty()) initial_position_ = model_.particles.position;
+
+  // 1. The model in the current configuration.
+  const std::vector<vec2> x = positions_at_particles(model_, d_);
+  const std::vector<vec2> velocity = values_at_particles(model_, v_);
+  const std::vector<mat2> stretch = project_to_particles<mat2>(
+      [&](index_t q) { return mat2(points_.relative_deformation_gradient(q).template topLeftCorner<2, 2>()); });
+  auto [particles, cells] = deformed_particles(model_.particles, model_.mesh, x, stretch);
+  discrete_model next = with_bodies<G>(factory_(std::move(particles), std::move(cells), options_.max_moment_condition));
+
+  // 2. The points: the same material points, F_r their total F.
+  points_.rereference(model_, next);
+  const double kinetic_before = kinetic_energy();
+  vec2 momentum_before = vec2::Zero();
+  for (index_t I = 0; I < model_.particle_count(); ++I) momentum_before += mass_[I] * v_[I];
+  model_ = std::move(next);
+
+  // 3. The coefficients.
+  std::fill(d_.begin(), d_.end(), vec2::Zero());
+  v_ = solve_coefficients(model_.at_particles, velocity);
+  derive_from_model(constraints_.constraints());
+  // A uniform velocity is reproduced exactly (partition of unity), so shifting every coefficient
+  // by one changes the field by that constant only; in a direction with prescribed velocities
+  // (or the radial one of an axisymmetric body, whose momentum is not conserved) it is not made.
+  vec2 momentum_after = vec2::Zero();
+  double total_mass = 0.0;
+  for (index_t I = 0; I < model_.particle_count(); ++I) {
+    momentum_after += mass_[I] * v_[I];
+    total_mass += mass_[I];
+  }
+  for (int k = 0; k < 2; ++k) {
+    bool free = !(G::is_axisymmetric && k == 0);
+    for (const velocity_constraint& c : constraints_.constraints()) free = free && c.direction != k;
+    if (!free) continue;
+    const double shift = (momentum_before[k] - momentum_after[k]) / total_mass;
+    for (vec2& v : v_) v[k] += shift;
+  }
+  if (constraints_.size() > 0) constraints_.apply(timeline_.time, v_);
+  v_half_prev_ = v_;
+
+  // 4. The step's other ingredients at the new reference.
+  compute_internal_force();
+  for (index_t I = 0; I < model_.particle_count(); ++I) a_[I] = (f_ext_.at(I, mass_) - f_int_[I]) / mass_[I];
+  timeline_.dt = clock_.rereference(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_,
+                                    timeline_.time, timeline_.steps);
+  energy_.kinetic = kinetic_energy();
+  energy_.remap += energy_.kinetic - kinetic_before;
+  energy_.record();
+  rereference_times_.push_back(timeline_.time);
+  last_rereference_step_ = timeline_.steps;
+}
+
+// The re-referenced model in a checkpoint: the particles' current reference (positions,
+// supports, volumes), their initial positions and the re-references so far; a Lagrangian run's
+// sections are empty. Read back, the model is rebuilt through the builder before the state is.
+template <Geometry G, Material M, Contact Ct>
+template <class Archive, class Self>
+void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
+  constexpr bool reading = !std::is_const_v<Self>;
+  std::uint64_t count = s.rereference_times_.size();
+  a.value("reference.count", count);
+  a.value("reference.last_step", s.last_rereference_step_);
+  if constexpr (reading) {
+    s.rereference_times_.resize(count);
+    if (count > 0) s.initial_position_.resize(s.model_.particle_count());
+  }
+  a.array("reference.times", s.rereference_times_);
+  a.array("reference.initial_position", s.initial_position_);
+  if constexpr (reading) {
+    if (count == 0) return;
+    particle_set<2> particles = s.model_.particles;
+    background_mesh cells = s.model_.mesh;
+    a.array("reference.position", particles.position);
+    a.array("reference.support", particles.support);
+    a.array("reference.volume", particles.volume);
+    cells.node = particles.position;
+    if (!s.factory_) fail("reading a re-referenced checkpoint needs the solver's model builder: build it with make_solver");
+    s.model_ = with_bodies<G>(s.factory_(std::move(particles), std::move(cells), s.options_.max_moment_condition));
+    s.points_.bind(s.model_);
+    s.derive_from_model(s.constraints_.constraints());
+  } else if (count > 0) {
+    a.array("reference.position", s.model_.particles.position);
+    a.array("reference.support", s.model_.particles.support);
+    a.array("reference.volume", s.model_.particles.volume);
+  }
+}
+
+}  // namespace rkpm

@@ -1,0 +1,206 @@
+// Re-referencing the kernels (docs/method.md section 5.8), against theory:
+//  - a homogeneous deformation: after a re-reference the new model's particles and quadrature
+//    points are where F puts them, a linear field on the re-referenced (distorted) body gives its
+//    gradient exactly, and F composes (69): driven by prescribed velocities at every particle, a
+//    run re-referenced every few steps ends with the total F and the J2 stress of the Lagrangian
+//    run, to round-off;
+//  - mass exact and linear momentum to round-off at every re-reference, the fields carried over:
+//    the current velocity of every particle reproduced up to one uniform shift;
+//  - a free elastic block set spinning, re-referenced every 10 steps for a quarter turn: angular
+//    momentum within the run's balance tolerance, the energy ledger (with its remap term) balanced.
+
+#include <doctest/doctest.h>
+
+#include <numbers>
+
+#include "support/solver_fixtures.hpp"
+
+namespace test_numeric_rereference {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
+using namespace rkpm;
+
+namespace {
+
+using j2 = material::j2_plasticity<material::hardening::linear>;
+template <class Q, class G = geometry::plane_strain>
+using method = config<kernel::cubic_spline, correction::linear, Q, G, j2, contact::none>;
+
+double largest(const std::vector<vec2>& v) {
+  double m = 0.0;
+  for (const vec2& x : v) m = std::max(m, x.cwiseAbs().maxCoeff());
+  return m;
+}
+
+// A 7 x 6 block, every particle's velocity prescribed as A X (X its initial position): the
+// deformation is homogeneous, F(t) = I + t A.
+template <class Cfg>
+solver_for<Cfg> driven_block(const mat2& A, double dt, double end, rereference_policy when) {
+  const vec2 lo(0.0, 0.0), hi(1.2, 1.0);
+  auto p = test::grid_problem<Cfg>(lo, hi, Eigen::Vector2i(7, 6));
+  if constexpr (Cfg::geometry_type::is_axisymmetric) {
+    // Keep the axis: the radial velocity A(0, 0) r vanishes there (u_r = 0 is added by the solver).
+    for (index_t I = 0; I < p.particles.size(); ++I) {
+      const vec2 X = p.particles.position[I];
+      if (X[0] > 1e-12) p.constraints.push_back({I, 0, [v = (A * X)[0]](double) { return v; }});
+      p.constraints.push_back({I, 1, [v = (A * X)[1]](double) { return v; }});
+    }
+  } else {
+    for (index_t I = 0; I < p.particles.size(); ++I)
+      for (int k = 0; k < 2; ++k) p.constraints.push_back({I, k, [v = (A * p.particles.position[I])[k]](double) { return v; }});
+  }
+  run_options o;
+  o.fixed_time_step = dt;
+  o.end_time = end;
+  o.rereference = when;
+  auto s = make_solver<Cfg>(std::move(p), o);
+  s.run();
+  return s;
+}
+
+template <class Q, class G>
+void check_composition() {
+  using Cfg = method<Q, G>;
+  // A strain rate that stretches, shears and yields the J2 block (yield strain 0.002).
+  mat2 A;
+  if constexpr (G::is_axisymmetric) A << 0.5, 0.0, 0.3, -0.8;
+  else A << 0.6, 0.4, -0.1, -0.5;
+  // A fixed step far below the stable one; F(end) = I + 0.5 A, a large deformation.
+  const double dt = 2e-8, end = 400 * dt;
+  const mat2 L = A * (0.5 / end);
+  auto lagrangian = driven_block<Cfg>(L, dt, end, {});
+  auto rebuilt = driven_block<Cfg>(L, dt, end, {.max_stretch = 0.0, .every_steps = 37});
+  auto by_stretch = driven_block<Cfg>(L, dt, end, {.max_stretch = 1.1, .every_steps = 0});
+  CHECK(by_stretch.rereferences() >= 3);
+  REQUIRE(lagrangian.rereferences() == 0);
+  REQUIRE(rebuilt.rereferences() == 10);
+  mat3 expected = mat3::Identity();
+  expected.topLeftCorner<2, 2>() += end * L;
+  if constexpr (G::is_axisymmetric) expected(2, 2) = 1.0 + end * L(0, 0);
+  double F_error = 0.0, stress_error = 0.0, stress_scale = 0.0;
+  for (index_t q = 0; q < rebuilt.model().point_count(); ++q) {
+    F_error = std::max(F_error, (rebuilt.point_states()[q].previous_deformation.full() - expected).cwiseAbs().maxCoeff());
+    const mat3 s0 = lagrangian.point_cauchy_stress(q), s1 = rebuilt.point_cauchy_stress(q);
+    const mat3 s2 = by_stretch.point_cauchy_stress(q);
+    stress_error = std::max({stress_error, (s1 - s0).cwiseAbs().maxCoeff(), (s2 - s0).cwiseAbs().maxCoeff()});
+    stress_scale = std::max(stress_scale, s0.cwiseAbs().maxCoeff());
+  }
+  CHECK(F_error < 1e-11);
+  CHECK(stress_error < 1e-9 * stress_scale);
+  // Yielded: the path is one a plastic law remembers.
+  CHECK(rebuilt.point_states()[0].equivalent_plastic_strain > 1e-3);
+  // The rebuilt model's particles are where F puts them.
+  double position_error = 0.0;
+  for (index_t I = 0; I < rebuilt.model().particle_count(); ++I) {
+    const vec2 X = rebuilt.initial_positions()[I];
+    position_error = std::max(position_error, (rebuilt.particle_positions()[I] - expected.topLeftCorner<2, 2>() * X).norm());
+  }
+  CHECK(position_error < 1e-12);
+}
+
+}  // namespace
+
+TEST_CASE("re-referencing: a homogeneous deformation composes F exactly and keeps the Lagrangian stress") {
+  test::run_serially();
+  SUBCASE("q2 plane strain") { check_composition<quadrature::q2, geometry::plane_strain>(); }
+  SUBCASE("q4 axisymmetric") { check_composition<quadrature::q4, geometry::axisymmetric>(); }
+  SUBCASE("scni plane strain") { check_composition<quadrature::scni_plain, geometry::plane_strain>(); }
+}
+
+TEST_CASE("re-referencing: a linear field is reproduced on the re-referenced, distorted body") {
+  test::run_serially();
+  using Cfg = method<quadrature::q2>;
+  // A distorted block deformed homogeneously in one step, then re-referenced.
+  const vec2 lo(0.0, 0.0), hi(1.2, 1.0);
+  auto p = test::grid_problem<Cfg>(lo, hi, Eigen::Vector2i(7, 6));
+  test::distort_interior(p.particles, p.mesh, vec2(0.2, 0.2), 0.2);
+  mat2 A;
+  A << 0.3, 0.5, -0.2, 0.1;
+  auto s = test::solver_at<Cfg>(std::move(p), [&](const vec2& X) -> vec2 { return A * X; }, 1e-9);
+  s.rereference();
+  const discrete_model& m = s.model();
+  mat2 B;
+  B << -0.1, 0.2, 0.4, 0.05;
+  std::vector<vec2> d(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I) d[I] = B * m.particles.position[I] + vec2(0.3, -0.7);
+  double worst = 0.0;
+  for (const mat3& F : test::deformation_gradients<geometry::plane_strain>(m, d))
+    worst = std::max(worst, (F.topLeftCorner<2, 2>() - (mat2::Identity() + B)).cwiseAbs().maxCoeff());
+  CHECK(worst < 1e-11);
+  // The new reference is the deformed body: each particle at X + A X.
+  double moved = 0.0;
+  for (index_t I = 0; I < m.particle_count(); ++I) {
+    const vec2 X = s.initial_positions()[I];
+    moved = std::max(moved, (m.particles.position[I] - (X + A * X)).norm());
+  }
+  CHECK(moved < 1e-9);
+}
+
+TEST_CASE("re-referencing: mass exact, momentum to round-off, velocities carried over") {
+  test::run_serially();
+  using Cfg = method<quadrature::q2>;
+  const vec2 lo(0.0, 0.0), hi(0.06, 0.02);
+  auto p = test::grid_problem<Cfg>(lo, hi, Eigen::Vector2i(13, 5));
+  // A non-uniform velocity: the block flies, spins and stretches.
+  p.initial_velocity = [](const vec2& X) -> vec2 {
+    return vec2(30.0 + 2000.0 * X[0] * X[0] - 500.0 * X[1], -10.0 + 800.0 * X[0] + 3000.0 * X[1] * X[1]);
+  };
+  run_options o;
+  o.end_time = 2e-6;
+  auto s = make_solver<Cfg>(std::move(p), o);
+  s.run();
+  const std::vector<double> mass = s.mass();
+  const auto momentum = [&] {
+    vec2 P = vec2::Zero();
+    for (index_t I = 0; I < s.model().particle_count(); ++I) P += s.mass()[I] * s.coefficient_velocities()[I];
+    return P;
+  };
+  for (int k = 0; k < 3; ++k) {
+    const vec2 before = momentum();
+    const std::vector<vec2> velocity = s.particle_velocities();
+    s.rereference();
+    CHECK(s.mass() == mass);
+    CHECK((momentum() - before).norm() < 1e-13 * before.norm());
+    // The current velocities reproduced, up to the one uniform shift that keeps the momentum.
+    const std::vector<vec2> after = s.particle_velocities();
+    const vec2 shift = after[0] - velocity[0];
+    double spread = 0.0;
+    for (std::size_t I = 0; I < after.size(); ++I) spread = std::max(spread, (after[I] - velocity[I] - shift).norm());
+    CHECK(spread < 1e-10 * largest(velocity));
+    CHECK(shift.norm() < 1e-2 * largest(velocity));
+    s.step();
+  }
+  CHECK(s.rereferences() == 3);
+}
+
+TEST_CASE("re-referencing: a spinning block keeps its angular momentum and its energy balance") {
+  test::run_serially();
+  using Cfg = method<quadrature::q2>::with_material<material::elastic>;
+  const double half = 0.01, omega = 2000.0;  // rim speed 28 m/s, about 0.5 % of the wave speed
+  auto p = test::grid_problem<Cfg>(vec2(-half, -half), vec2(half, half), Eigen::Vector2i(9, 9));
+  p.initial_velocity = [omega](const vec2& X) -> vec2 { return omega * vec2(-X[1], X[0]); };
+  run_options o;
+  o.end_time = 0.25 * 2.0 * std::numbers::pi / omega;  // a quarter turn
+  o.rereference.every_steps = 10;
+  auto s = make_solver<Cfg>(std::move(p), o);
+  const auto angular = [&] {
+    const auto x = s.particle_positions();
+    double L = 0.0;
+    for (index_t I = 0; I < s.model().particle_count(); ++I) {
+      const vec2 v = s.coefficient_velocities()[I];
+      L += s.mass()[I] * (x[I][0] * v[1] - x[I][1] * v[0]);
+    }
+    return L;
+  };
+  const double L0 = angular();
+  s.run();
+  CHECK(s.rereferences() >= 10);
+  CHECK(std::abs(angular() - L0) < 1e-3 * std::abs(L0));
+  CHECK(s.energy().balance_error() < 1e-3);
+  CHECK(std::abs(s.energy().remap) < 1e-3 * s.energy().initial_kinetic);
+  // Turned by a quarter: the particle that started at (half, 0) is near (0, half).
+  const vec2 rim = s.particle_positions()[4 * 9 + 8];
+  CHECK(s.initial_positions()[4 * 9 + 8].isApprox(vec2(half, 0.0)));
+  CHECK((rim - vec2(0.0, half)).norm() < 0.02 * half);
+}
+
+}  // namespace test_numeric_rereference
