@@ -1,7 +1,7 @@
 // Re-referencing the kernels (docs/method.md section 5.8), against theory:
 //  - a homogeneous deformation: after a re-reference the new model's particles and quadrature
 //    points are where F puts them, a linear field on the re-referenced (distorted) body gives its
-//    gradient exactly, and F composes (69): driven by prescribed velocities at every particle, a
+//    gradient exactly, and F composes (79): driven by prescribed velocities at every particle, a
 //    run re-referenced every few steps ends with the total F and the J2 stress of the Lagrangian
 //    run, to round-off;
 //  - mass exact and linear momentum to round-off at every re-reference, the fields carried over:

@@ -15,7 +15,7 @@
 // an error naming the first such point, its position and the step.
 // After a re-reference (rereference()) the gradients are those of the current reference: the
 // material gets F = F_rel F_r and the force terms F_rel with tau / det F_r (docs/method.md
-// (69)-(70), solver/point_reference.hpp); points are then updated one by one.
+// (79)-(80), solver/point_reference.hpp); points are then updated one by one.
 
 #include <algorithm>
 #include <array>
@@ -171,7 +171,7 @@ class point_materials {
     return reference_.active() ? reference_.relative(q, deformation_block(q)).full() : deformation_gradient(q);
   }
   // The largest principal stretch of F_rel, or of its inverse, over the points (the distortion of
-  // the kernels since the last reference, docs/method.md (71)), in point order.
+  // the kernels since the last reference, docs/method.md (81)), in point order.
   double max_distortion(const discrete_model& m) const {
     double largest = 1.0;
     for (index_t q = 0; q < m.point_count(); ++q) {
@@ -239,7 +239,7 @@ class point_materials {
   }
 
   // After a re-reference: S_q and h_q from F_rel and the stress per unit current reference volume,
-  // tau / det F_r (70); the plastic work per unit initial volume with the point's initial volume.
+  // tau / det F_r (80); the plastic work per unit initial volume with the point's initial volume.
   void point_force_rereferenced(const discrete_model& m, tile_summary& tile, index_t q, const mat3& F_rel,
                                 const mat3& tau, mat2& S, double& hoop) {
     const mat2 Fi = point_forces_of<G>(F_rel, tau / reference_.volume_change(q), m.points.weight[q],

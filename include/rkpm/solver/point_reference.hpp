@@ -2,7 +2,7 @@
 // point_reference: what each quadrature point keeps of the configurations before its current
 // reference once the solver has re-referenced its kernels (docs/method.md section 5.8):
 //   F_r   the deformation gradient of the current reference relative to the initial one, so
-//         that the material sees the total F = F_rel F_r (69) whatever the reference;
+//         that the material sees the total F = F_rel F_r (79) whatever the reference;
 //   V_0/w the point's initial volume per unit of its current weight, so that quantities per
 //         unit initial volume (the plastic work) are summed with their initial weights.
 // Empty until the first re-reference: a Lagrangian run reads nothing of it and keeps its bits.
@@ -20,7 +20,7 @@ class point_reference {
  public:
   // Whether the points have been re-referenced at least once.
   bool active() const { return !F_.empty(); }
-  // F = F_rel F_r (69).
+  // F = F_rel F_r (79).
   block_matrix total(index_t q, const block_matrix& relative) const { return relative * F_[q]; }
   // F_rel = F F_r^-1.
   block_matrix relative(index_t q, const block_matrix& total) const { return total * inverse(F_[q]); }

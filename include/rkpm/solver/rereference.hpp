@@ -1,13 +1,13 @@
 #pragma once
 // Re-referencing the kernels (docs/method.md section 5.8): what the solver needs to rebuild its
 // model in the current configuration and carry its fields over.
-//   rereference_policy     when: by the distortion of the kernels since the last reference (71),
+//   rereference_policy     when: by the distortion of the kernels since the last reference (81),
 //                          every N steps, or never (the default: a Lagrangian run)
 //   deformed_particles     the particles at their current positions, with supports that follow
-//                          the deformation (72) and volumes from the deformed cells; the cells'
+//                          the deformation (82) and volumes from the deformed cells; the cells'
 //                          corners move with the particles (the mesh nodes are the particles)
 //   solve_coefficients     the coefficients c with sum_J N_J(X_I) c_J = u_I at every particle:
-//                          RK shape functions do not interpolate (73)
+//                          RK shape functions do not interpolate (83)
 
 #include <algorithm>
 #include <array>
@@ -55,7 +55,7 @@ inline mat2 left_stretch(const mat2& F) {
 
 // The particles moved to x (the current positions), each support a_I stretched by the
 // deformation since the last reference, F_I (the in-plane block at the particle), without its
-// rotation: the box that holds the support stretched by V_I, a'_k = sum_j |V_kj| a_j (72), so
+// rotation: the box that holds the support stretched by V_I, a'_k = sum_j |V_kj| a_j (82), so
 // that a particle keeps the neighbours it had, and a spinning body keeps its supports. (A body
 // turned by a large angle keeps axis-aligned supports: an anisotropic support does not turn
 // with it.) Volumes: a quarter of each deformed cell at each of its corners.
@@ -81,7 +81,7 @@ inline std::pair<particle_set<2>, background_mesh> deformed_particles(const part
   return {std::move(next), std::move(cells)};
 }
 
-// c with sum_J N_J(X_I) c_J = u_I at every particle I (73): BiCGSTAB with an incomplete LU
+// c with sum_J N_J(X_I) c_J = u_I at every particle I (83): BiCGSTAB with an incomplete LU
 // preconditioner on the rows of `at_particles`, to a residual of 1e-14 of |u|; a sparse LU if
 // that does not converge. The same bits on any thread count (a row is summed by one thread).
 inline std::vector<vec2> solve_coefficients(const shape_table<2>& at_particles, const std::vector<vec2>& u) {

@@ -2,15 +2,15 @@
 // explicit_solver::rereference(): the kernels rebuilt in the current configuration
 // (docs/method.md section 5.8), between two steps:
 //   1. the particles' current positions x_I become their reference; the cells are the deformed
-//      cells (their corners are the particles), the supports follow the stretch (72), and the
+//      cells (their corners are the particles), the supports follow the stretch (82), and the
 //      model's builder (model_builder()) builds the tables, weights, VCI gradients and surfaces;
 //   2. each quadrature point keeps its material state: point q of the new model is point q of the
-//      old one (the same rule point of the same cell), and F_r takes its total F (69), so the
+//      old one (the same rule point of the same cell), and F_r takes its total F (79), so the
 //      material goes on from the same F. The new point lies where the deformed cell's map puts
 //      the rule point, the old one where the RK displacement put it: they differ by O(h^2 |grad
 //      grad u|) (the bilinear cell against the smooth map);
 //   3. the coefficients: d = 0 (the displacement since the new reference), v solved so that the
-//      new approximation gives every particle its current velocity (73); then shifted by one
+//      new approximation gives every particle its current velocity (83); then shifted by one
 //      uniform velocity per free direction so that sum_I m_I v_I is kept to round-off (the masses
 //      stay); the kinetic energy's change is booked as energy().remap;
 //   4. the constraint rows, the contact slaves' rows and surfaces, the stable step (a short
