@@ -44,12 +44,12 @@ run_outcome run_case_file(const run_request& request) {
   }
   r.case_name = c.name;
   // A restart takes the same material as its run: the choice depends on the document alone.
-  const bool johnson_cook = case_file::uses_johnson_cook(c);
+  const bool temperature = case_file::uses_temperature(c);
   if (c.geometry == geometry::axisymmetric::name)
-    return johnson_cook ? run_file_case<geometry::axisymmetric, case_file::material_type>(r, c, restart)
-                        : run_file_case<geometry::axisymmetric, case_file::j2_material>(r, c, restart);
-  return johnson_cook ? run_file_case<geometry::plane_strain, case_file::material_type>(r, c, restart)
-                      : run_file_case<geometry::plane_strain, case_file::j2_material>(r, c, restart);
+    return temperature ? run_file_case<geometry::axisymmetric, case_file::material_type>(r, c, restart)
+                       : run_file_case<geometry::axisymmetric, case_file::j2_material>(r, c, restart);
+  return temperature ? run_file_case<geometry::plane_strain, case_file::material_type>(r, c, restart)
+                     : run_file_case<geometry::plane_strain, case_file::j2_material>(r, c, restart);
 }
 
 }  // namespace rkpm::runner

@@ -1,7 +1,7 @@
 #pragma once
 // build_problem<Contact, Material>(case, resolution): the rkpm::problem a case file describes,
 // for any contact policy and either case-file material (case_material.hpp; j2_material only for
-// a file without a Johnson-Cook body, uses_johnson_cook in case_description.hpp): each body
+// a file whose bodies carry no temperature, uses_temperature in case_description.hpp): each body
 // discretized and added with its own material (add_body), its constraints, initial velocity
 // and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do
 // (cases/parameters.hpp): a rectangle of n particles per direction gets (n - 1) K + 1, a
@@ -44,10 +44,15 @@ namespace rkpm::runner::case_file {
 template <class Material = material_type>
 Material make_material(const material_description& m) {
   const material::elastic_constants constants{m.youngs_modulus, m.poisson_ratio, m.density};
-  if (m.johnson_cook) {
-    if constexpr (Material::holds_johnson_cook) return Material(*m.johnson_cook);
-    else fail("a Johnson-Cook body was given a material without room for its state; build the problem with "
-              "case_file::material_type (uses_johnson_cook)");
+  if (m.johnson_cook || m.zerilli_armstrong) {
+    if constexpr (Material::holds_johnson_cook) {
+      if (m.johnson_cook) return Material(*m.johnson_cook);
+      return Material(*m.zerilli_armstrong);
+    } else {
+      fail("a body with a temperature ({}) was given a material without room for its state; build the problem with "
+           "case_file::material_type (uses_temperature)",
+           m.law);
+    }
   }
   if (m.law != material::j2_name) return Material(constants, hardening_law::no_yield());
   return Material(constants, m.flow_law);

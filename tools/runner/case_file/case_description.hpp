@@ -60,11 +60,12 @@ struct mesh_shape {  // a Gmsh file, used as given
 using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
 
 struct material_description {
-  std::string law;        // "elastic", "j2" or "johnson_cook"
+  std::string law;        // "elastic", "j2", "johnson_cook" or "zerilli_armstrong"
   std::string hardening;  // for j2: a law's ::name in material::hardening::laws ("linear", ...)
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   hardening_law flow_law;  // for j2: that law with the file's constants (never yields otherwise)
   std::optional<material::johnson_cook> johnson_cook;  // for johnson_cook: the whole material
+  std::optional<material::zerilli_armstrong> zerilli_armstrong;  // for zerilli_armstrong: likewise
 };
 
 // Prescribed velocity components (m/s) of the particles on a named edge; empty = free.
@@ -142,7 +143,7 @@ struct probe_history {  // the particle nearest to a reference point
   int component = 0;
 };
 struct max_plastic_strain_history { std::string body; };
-struct max_temperature_history { std::string body; };  // K, of a "johnson_cook" body
+struct max_temperature_history { std::string body; };  // K, of a "johnson_cook" or "zerilli_armstrong" body
 struct failed_fraction_history { std::string body; };
 struct max_penetration_history {};
 struct volume_change_history { std::string body; };  // sum J w / sum w - 1
@@ -183,10 +184,12 @@ struct case_description {
   std::vector<history_description> histories;
 };
 
-// Whether a body of the file is Johnson-Cook, so that its run needs material_type's state
-// (case_material.hpp).
-inline bool uses_johnson_cook(const case_description& c) {
-  return std::ranges::any_of(c.bodies, [](const body_description& b) { return b.material.johnson_cook.has_value(); });
+// Whether a body of the file carries a temperature (Johnson-Cook or Zerilli-Armstrong), so that
+// its run needs material_type's state (case_material.hpp).
+inline bool uses_temperature(const case_description& c) {
+  return std::ranges::any_of(c.bodies, [](const body_description& b) {
+    return b.material.johnson_cook.has_value() || b.material.zerilli_armstrong.has_value();
+  });
 }
 
 }  // namespace rkpm::runner::case_file

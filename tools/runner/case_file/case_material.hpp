@@ -1,17 +1,18 @@
 #pragma once
 // The material types of the case files: material::j2_plasticity with its hardening law chosen at
-// run time (hardening_law), or material::johnson_cook, so that the runner compiles one material
-// per geometry and state, whatever law the files name. hardening_law holds one law of the
+// run time (hardening_law), material::johnson_cook or material::zerilli_armstrong, so that the
+// runner compiles one material per geometry and state, whatever law the files name. hardening_law holds one law of the
 // library's list (material::hardening::laws) and hands every call to it, so a case file runs
 // bit for bit as the typed case with j2_plasticity<that law>
 // (tests/unit/case_file/hardening_law.cpp); a law added to the list is read and run with no edit
 // here. Two states, so that a run keeps per point only what its laws need:
 //   j2_material     J2 and elastic bodies: material::j2_state (96 B per point)
-//   material_type   any law, Johnson-Cook included: material::johnson_cook_state (136 B); its
-//                   J2 points leave temperature and damage NaN (no temperature: the solver
-//                   passes NaN as before, and the snapshots leave out a field that is NaN
-//                   everywhere, io/solver_output.hpp)
-// The runner takes j2_material for a file without a Johnson-Cook body (uses_johnson_cook,
+//   material_type   any law, Johnson-Cook and Zerilli-Armstrong included:
+//                   material::johnson_cook_state (136 B); its J2 points leave temperature and
+//                   damage NaN (no temperature: the solver passes NaN as before, and the
+//                   snapshots leave out a field that is NaN everywhere, io/solver_output.hpp),
+//                   its Zerilli-Armstrong points damage
+// The runner takes j2_material for a file whose bodies carry no temperature (uses_temperature,
 // case_description.hpp): at 10^6 particles and two points each, 82 MB less.
 //
 // "elastic" is J2 that never yields (flow stress +infinity). Its elastic part is the Hencky law
@@ -35,6 +36,7 @@
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/material/radial_return.hpp>
+#include <rkpm/material/zerilli_armstrong.hpp>
 
 namespace rkpm::runner::case_file {
 
@@ -109,66 +111,80 @@ inline double plastic_work_increment(const hardening_law& h, double from, double
   return h.plastic_work(from, dgamma, flow_from, flow_to);
 }
 
-// J2 with the file's hardening law or, with State = johnson_cook_state, Johnson-Cook too (one
-// branch per point update).
+// J2 with the file's hardening law or, with State = johnson_cook_state, Johnson-Cook or
+// Zerilli-Armstrong too (a branch or two per point update).
 template <class State>
 class basic_material_type {
  public:
   using j2_type = material::j2_plasticity<hardening_law>;
   static constexpr std::string_view name = j2_type::name;
   using state_type = State;
-  // Whether the state has room for Johnson-Cook (temperature, damage and the rest).
+  // Whether the state has room for Johnson-Cook (temperature, damage and the rest) and so for
+  // Zerilli-Armstrong (temperature).
   static constexpr bool holds_johnson_cook = std::is_same_v<State, material::johnson_cook_state>;
 
   basic_material_type(const material::elastic_constants& constants, const hardening_law& law) : j2_(constants, law) {}
   explicit basic_material_type(material::johnson_cook jc)
     requires holds_johnson_cook
       : j2_(jc.constants(), hardening_law::no_yield()), johnson_cook_(std::move(jc)) {}
+  explicit basic_material_type(material::zerilli_armstrong za)
+    requires holds_johnson_cook
+      : j2_(za.constants(), hardening_law::no_yield()), zerilli_armstrong_(std::move(za)) {}
 
   state_type initial_state() const {
     if constexpr (holds_johnson_cook) {
       if (johnson_cook_) return johnson_cook_->initial_state();
       state_type s;
       s.damage = std::numeric_limits<double>::quiet_NaN();  // J2: neither temperature nor damage
+      if (zerilli_armstrong_) s.temperature = zerilli_armstrong_->initial_state().temperature;
       return s;
     } else {
       return j2_.initial_state();
     }
   }
   mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
-    if constexpr (holds_johnson_cook)
+    if constexpr (holds_johnson_cook) {
       if (johnson_cook_) return johnson_cook_->kirchhoff_stress(F, s, step);
+      if (zerilli_armstrong_) return zerilli_armstrong_->kirchhoff_stress(F, s, step);
+    }
     return j2_.kirchhoff_stress(F, s, step);
   }
   mat3 current_kirchhoff_stress(const mat3& F, const state_type& s) const {
-    if constexpr (holds_johnson_cook)
+    if constexpr (holds_johnson_cook) {
       if (johnson_cook_) return johnson_cook_->current_kirchhoff_stress(F, s);
+      if (zerilli_armstrong_) return zerilli_armstrong_->current_kirchhoff_stress(F, s);
+    }
     return j2_.current_kirchhoff_stress(F, s);
   }
 
   double density() const { return j2_.density(); }
   double dilatational_wave_speed() const { return j2_.dilatational_wave_speed(); }
   const material::elastic_constants& constants() const { return j2_.constants(); }
-  // The J2 hardening law (never yields for elastic and Johnson-Cook materials).
+  // The J2 hardening law (never yields for elastic, Johnson-Cook and Zerilli-Armstrong materials).
   const hardening_law& hardening() const { return j2_.hardening(); }
   // The Johnson-Cook material, nullptr for J2 and elastic.
   const material::johnson_cook* johnson_cook() const { return johnson_cook_ ? &*johnson_cook_ : nullptr; }
+  // The Zerilli-Armstrong material, nullptr for the others.
+  const material::zerilli_armstrong* zerilli_armstrong() const {
+    return zerilli_armstrong_ ? &*zerilli_armstrong_ : nullptr;
+  }
   // The J2 material (with a law that never yields for an elastic body).
   const j2_type& j2() const { return j2_; }
 
  private:
   j2_type j2_;
   std::optional<material::johnson_cook> johnson_cook_;  // empty unless holds_johnson_cook
+  std::optional<material::zerilli_armstrong> zerilli_armstrong_;  // likewise
 };
 
 using j2_material = basic_material_type<material::j2_state>;
 using material_type = basic_material_type<material::johnson_cook_state>;
 
 // The force loop's batched update (material/j2_batch.hpp, solver/point_materials.hpp): J2 and
-// elastic bodies in lanes, Johnson-Cook's points one by one.
+// elastic bodies in lanes, Johnson-Cook's and Zerilli-Armstrong's points one by one.
 template <class State>
 bool updates_in_lanes(const basic_material_type<State>& m) {
-  return m.johnson_cook() == nullptr;
+  return m.johnson_cook() == nullptr && m.zerilli_armstrong() == nullptr;
 }
 template <class State>
 block_lanes kirchhoff_stress_batch(const basic_material_type<State>& m, const block_lanes& F, State* s,

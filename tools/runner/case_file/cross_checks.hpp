@@ -131,11 +131,20 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
           using K = std::decay_t<decltype(k)>;
           if constexpr (requires { k.body; }) check_name(d, kind_at("body"), k.body, bodies, "body");
           if constexpr (requires { k.tool; }) check_name(d, kind_at("tool"), k.tool, tools, "tool");
-          if constexpr (std::is_same_v<K, max_temperature_history> || std::is_same_v<K, failed_fraction_history>) {
+          if constexpr (std::is_same_v<K, max_temperature_history>) {
+            for (const body_description& b : c.bodies)
+              if (b.name == k.body && b.material.law != material::johnson_cook::name &&
+                  b.material.law != material::zerilli_armstrong::name)
+                d.error(kind_at("body"), fmt::format("body '{}' has no temperature (its material law is '{}'); give it "
+                                                     "\"law\": \"johnson_cook\" or \"zerilli_armstrong\" or "
+                                                     "measure another body",
+                                                     k.body, b.material.law));
+          }
+          if constexpr (std::is_same_v<K, failed_fraction_history>) {
             for (const body_description& b : c.bodies)
               if (b.name == k.body && b.material.law != material::johnson_cook::name)
-                d.error(kind_at("body"), fmt::format("body '{}' has no temperature or damage (its material law is '{}'); "
-                                                     "give it \"law\": \"johnson_cook\" or measure another body",
+                d.error(kind_at("body"), fmt::format("body '{}' has no damage (its material law is '{}'); give it "
+                                                     "\"law\": \"johnson_cook\" or measure another body",
                                                      k.body, b.material.law));
           }
           if constexpr (std::is_same_v<K, tool_gap_history>) {

@@ -21,6 +21,7 @@
 #include <rkpm/material/hardening.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
+#include <rkpm/material/zerilli_armstrong.hpp>
 
 #include "case_description.hpp"
 #include "json_fields.hpp"
@@ -200,19 +201,98 @@ inline void read_johnson_cook(diagnostics& d, const object_reader& r, material_d
   }
 }
 
+// The keys of "law": "zerilli_armstrong" (docs/method.md section 4.6) besides the elastic three:
+// those of both lattices, and of each (an fcc file may not give bcc's constants, nor the reverse).
+inline constexpr std::array<std::string_view, 8> zerilli_armstrong_keys{
+    "lattice", "C0_Pa", "C3_1_K", "C4_1_K", "reference_strain_rate_1_s", "specific_heat_J_kgK", "taylor_quinney",
+    "initial_temperature_K"};
+inline constexpr std::array<std::string_view, 1> zerilli_armstrong_fcc_keys{"C2_Pa"};
+inline constexpr std::array<std::string_view, 3> zerilli_armstrong_bcc_keys{"C1_Pa", "C5_Pa", "n"};
+
+// A Zerilli-Armstrong material from r (its elastic constants already read into m): every
+// constant checked here with a one-line error, so that the library's own checks never fire.
+inline void read_zerilli_armstrong(diagnostics& d, const object_reader& r, material_description& m) {
+  using flow_type = material::hardening::zerilli_armstrong;
+  static constexpr std::array<std::string_view, 2> lattices{"fcc", "bcc"};
+  const auto lattice = r.choice("lattice", lattices, "lattice");
+  if (!lattice) return;
+  const bool fcc = *lattice == "fcc";
+  bool ok = true;
+  // A required number, >= 0 or > 0, reported with its fix.
+  const auto get = [&](std::string_view key, std::string_view example, bool positive) -> double {
+    const auto x = r.number(key, example);
+    if (!x) {
+      ok = false;
+      return 0.0;
+    }
+    if (!(positive ? check_positive(d, r.at(key), *x, example) : check_non_negative(d, r.at(key), *x, example)))
+      ok = false;
+    return *x;
+  };
+  flow_type flow{fcc ? flow_type::lattice_type::fcc : flow_type::lattice_type::bcc, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  flow.C0 = get("C0_Pa", fcc ? "65e6 (OFHC copper)" : "50e6", false);
+  if (fcc) {
+    flow.C2 = get("C2_Pa", "890e6 (OFHC copper)", false);
+  } else {
+    flow.C1 = get("C1_Pa", "1033e6 (Armco iron)", false);
+    flow.C5 = get("C5_Pa", "266e6 (Armco iron)", false);
+    flow.n = get("n", "0.289 (Armco iron)", true);
+  }
+  flow.C3 = get("C3_1_K", fcc ? "0.0028 (OFHC copper)" : "0.00698 (Armco iron)", false);
+  flow.C4 = get("C4_1_K", fcc ? "0.000115 (OFHC copper)" : "0.000415 (Armco iron)", false);
+  if (ok && !(flow.C0 + (fcc ? flow.C2 : flow.C1 + flow.C5) > 0.0)) {
+    d.error(r.at("C0_Pa"), fcc ? "C0 and C2 are both 0: the flow stress would be 0; give e.g. \"C0_Pa\": 65e6, "
+                                 "\"C2_Pa\": 890e6"
+                               : "C0, C1 and C5 are all 0: the flow stress would be 0; give e.g. \"C1_Pa\": 1033e6, "
+                                 "\"C5_Pa\": 266e6");
+    ok = false;
+  }
+  flow.reference_rate = r.number_or("reference_strain_rate_1_s", 1.0);
+  if (r.find("reference_strain_rate_1_s") && !check_positive(d, r.at("reference_strain_rate_1_s"), flow.reference_rate,
+                                                             "1 (or leave it out: 1 /s)"))
+    ok = false;
+  material::zerilli_armstrong_heating heat{};
+  heat.specific_heat = get("specific_heat_J_kgK", "383 (copper)", true);
+  heat.taylor_quinney = r.number_or("taylor_quinney", 0.9);
+  if (r.find("taylor_quinney") && !(heat.taylor_quinney >= 0.0 && heat.taylor_quinney <= 1.0)) {
+    d.error(r.at("taylor_quinney"), fmt::format("{:g} is outside [0, 1], the fraction of plastic work turned into "
+                                                "heat; give e.g. 0.9 (or leave it out: 0.9)", heat.taylor_quinney));
+    ok = false;
+  }
+  heat.initial_temperature = get("initial_temperature_K", "294", true);
+  if (r.find("melt_temperature_K")) {
+    flow.melt_temperature = r.number_or("melt_temperature_K", flow.melt_temperature);
+    if (ok && !(flow.melt_temperature > heat.initial_temperature)) {
+      d.error(r.at("melt_temperature_K"), fmt::format("{:g} K is not above initial_temperature_K = {:g} K (the body "
+                                                      "would start molten); give the melting point, e.g. 1356 "
+                                                      "(copper), or leave it out (no melt)",
+                                                      flow.melt_temperature, heat.initial_temperature));
+      ok = false;
+    }
+  }
+  if (!ok || !d.empty()) return;
+  try {
+    m.zerilli_armstrong.emplace(material::elastic_constants{m.youngs_modulus, m.poisson_ratio, m.density}, flow, heat);
+  } catch (const rkpm::error& e) {  // not expected: every constant was checked above
+    d.error(r.pointer(), e.what());
+  }
+}
+
 inline material_description read_material(diagnostics& d, const json& value, const std::string& at) {
-  const std::array<std::string_view, 3> laws{material::elastic::name, material::j2_name, material::johnson_cook::name};
+  const std::array<std::string_view, 4> laws{material::elastic::name, material::j2_name, material::johnson_cook::name,
+                                             material::zerilli_armstrong::name};
   const std::vector<std::string_view> hardenings = hardening_names();
   const std::string_view default_hardening = hardenings.front();
   // The fields allowed depend on the law and hardening named, so look at those first.
   const auto peek = [&](const char* key) {
     return value.is_object() && value.contains(key) && value[key].is_string() ? value[key].get<std::string>() : "";
   };
-  const std::string law = peek("law"), hardening = peek("hardening");
+  const std::string law = peek("law"), hardening = peek("hardening"), lattice = peek("lattice");
   // An unknown law may still be J2 misspelt: accept its fields rather than report each; an
   // unknown hardening law likewise accepts every law's fields.
   const bool johnson_cook = law == material::johnson_cook::name;
-  const bool j2 = law != material::elastic::name && !johnson_cook;
+  const bool zerilli_armstrong = law == material::zerilli_armstrong::name;
+  const bool j2 = law != material::elastic::name && !johnson_cook && !zerilli_armstrong;
   const bool unknown_hardening =
       !hardening.empty() && std::find(hardenings.begin(), hardenings.end(), hardening) == hardenings.end();
   std::vector<std::string_view> known{"law", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3"};
@@ -223,6 +303,12 @@ inline material_description read_material(diagnostics& d, const json& value, con
     });
   }
   if (johnson_cook) known.insert(known.end(), johnson_cook_keys.begin(), johnson_cook_keys.end());
+  if (zerilli_armstrong) {  // an unknown lattice accepts both lattices' keys
+    known.insert(known.end(), zerilli_armstrong_keys.begin(), zerilli_armstrong_keys.end());
+    known.push_back("melt_temperature_K");
+    if (lattice != "bcc") known.insert(known.end(), zerilli_armstrong_fcc_keys.begin(), zerilli_armstrong_fcc_keys.end());
+    if (lattice != "fcc") known.insert(known.end(), zerilli_armstrong_bcc_keys.begin(), zerilli_armstrong_bcc_keys.end());
+  }
   object_reader r(d, value, at, known);
   material_description m;
   if (!r.valid()) return m;
@@ -242,6 +328,7 @@ inline material_description read_material(diagnostics& d, const json& value, con
     check_positive(d, r.at("density_kg_m3"), *rho, "8930 (copper)");
   }
   if (m.law == material::johnson_cook::name) read_johnson_cook(d, r, m);
+  if (m.law == material::zerilli_armstrong::name) read_zerilli_armstrong(d, r, m);
   if (m.law != material::j2_name) return m;
   m.hardening = r.choice("hardening", hardenings, "hardening law", default_hardening).value_or("");
   if (unknown_hardening) return m;
