@@ -117,7 +117,7 @@ struct rod_on_rod {
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
                                                              const std::vector<vec2>& /*tool_force*/) {
     const auto x = s.particle_positions();
-    const auto& X = s.model().particles.position;
+    const auto& X = s.initial_positions();
     std::array<double, 2> zmin{1e300, 1e300}, zmax{-1e300, -1e300}, radius{0.0, 0.0};
     double P = 0.0, P0 = 0.0, scale = 0.0;
     for (std::size_t I = 0; I < x.size(); ++I) {

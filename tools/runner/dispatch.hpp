@@ -53,6 +53,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   run_options options;
   options.end_time = Case::end_time(p);
   options.max_steps = r.max_steps;
+  options.rereference = r.rereference;
   const rkpm::method_names method{r.kernel, r.correction, r.quadrature};
   const std::function<problem<M, Ct>()> make_problem = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);

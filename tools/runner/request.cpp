@@ -82,6 +82,13 @@ void add_run_options(CLI::App* sub, run_request& r) {
                   "refuse a run estimated to need more steps (a wrong constant, not a long run)")
       ->check(CLI::Range(1L, 1'000'000'000'000L))
       ->capture_default_str();
+  sub->add_option("--rereference-stretch", r.rereference.max_stretch,
+                  "rebuild the kernels in the current configuration when a point's principal stretch since the "
+                  "last rebuild (or its inverse) exceeds this, e.g. 1.8 (docs/method.md section 5.8)")
+      ->check(CLI::Range(1.0, 1e6));
+  sub->add_option("--rereference-every", r.rereference.every_steps,
+                  "rebuild the kernels in the current configuration every N steps (1: updated Lagrangian)")
+      ->check(CLI::Range(index_t{1}, index_t{1'000'000'000}));
   sub->add_option("--out", r.out_dir, "output directory (default results/CASE-QUADRATURE)");
   sub->add_option_function<std::string>(
          "--checkpoint-interval", [&r](const std::string& t) { r.checkpoint_interval = std::stod(t); },
@@ -204,6 +211,18 @@ void adopt_checkpoint_run(run_request& r, const nlohmann::ordered_json& descript
          "(drop --resolution)",
          r.resolution, resolution);
   r.resolution = resolution;
+  // The re-referencing the run had (none when the description names none).
+  rereference_policy theirs;
+  if (const auto k = description.find("rereference"); k != description.end()) {
+    theirs.max_stretch = k->at("max_stretch").get<double>();
+    theirs.every_steps = k->at("every_steps").get<index_t>();
+  }
+  const bool given = std::ranges::find(r.given, "--rereference-stretch") != r.given.end() ||
+                     std::ranges::find(r.given, "--rereference-every") != r.given.end();
+  if (given && (r.rereference.max_stretch != theirs.max_stretch || r.rereference.every_steps != theirs.every_steps))
+    fail("--rereference-*: the checkpoint was run with other re-referencing, and a restart continues the same "
+         "run (drop them)");
+  r.rereference = theirs;
   if (!r.sets.empty())
     fail("--set {}={}: a restart continues the checkpoint's problem with the parameters it was started with "
          "(only --end-time may change)",

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <rkpm/solver/rereference.hpp>
 #include <rkpm/io/vtu_encoding.hpp>
 
 #include "methods.hpp"
@@ -36,6 +37,7 @@ struct run_request {
   int processes_here = 1, machine_rank = 0;
   bool with_rank_0 = true;
   long max_steps = 50'000'000;     // run_options::max_steps: longer runs are refused before they start
+  rereference_policy rereference;  // run_options::rereference (--rereference-stretch, --rereference-every)
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;
   bool quiet = false;              // no progress line

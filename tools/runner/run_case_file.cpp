@@ -37,6 +37,7 @@ run_outcome run_case_file(const run_request& request) {
     if (!given("--correction")) r.correction = c.method.correction;
     if (!given("--quadrature")) r.quadrature = c.method.quadrature;
     if (!given("--enforcement")) r.contact = c.method.contact;
+    if (!given("--rereference-stretch") && !given("--rereference-every")) r.rereference = c.rereference;
   }
   if (r.end_time) {
     c.end_time = *r.end_time;

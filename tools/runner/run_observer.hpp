@@ -181,7 +181,8 @@ class run_observer {
       columns.push_back(tool.name() + "_force_x_N");
       columns.push_back(tool.name() + "_force_y_N");
     }
-    for (const auto& [name, value] : io::energy_terms(s.energy())) columns.emplace_back(name);
+    for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+      columns.emplace_back(name);
     return columns;
   }
 
@@ -211,7 +212,8 @@ class run_observer {
       row.push_back(f[0]);
       row.push_back(f[1]);
     }
-    for (const auto& [name, value] : io::energy_terms(s.energy())) row.push_back(value);
+    for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+      row.push_back(value);
     history_.row(row);
     record_.history_rows.push_back(std::move(row));
   }

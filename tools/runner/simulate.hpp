@@ -70,6 +70,9 @@ json run_identity(const run_request& request, const typename Case::parameters& p
   id["geometry"] = method.geometry;
   id["contact"] = method.contact;
   id["resolution"] = request.resolution;
+  if (request.rereference.enabled())
+    id["rereference"] = {{"max_stretch", request.rereference.max_stretch},
+                         {"every_steps", request.rereference.every_steps}};
   if constexpr (is_file_case<Case>) id["case_file"] = std::filesystem::absolute(params.file).string();
   id["parameters"] = case_parameters<Case>(params);
   return id;
@@ -224,7 +227,12 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();
   json& energy = summary["energy"];
   energy = json::object();
-  for (const auto& [name, value] : io::energy_terms(s.energy())) energy[std::string(name)] = value;
+  for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+    energy[std::string(name)] = value;
+  if (s.options().rereference.enabled()) {
+    summary["rereferences"] = s.rereferences();
+    summary["rereference_times_s"] = s.rereference_times();
+  }
   // The material state's extremes (io/solver_output.hpp): the largest temperature, damage, the
   // failed fraction of the points, when the material has them.
   if (const auto points = io::state_summary(s); !points.empty()) {

@@ -55,16 +55,19 @@ struct named_value {
 // The ledger by output name (J per unit thickness in plane strain, J per radian in
 // axisymmetric geometry): kinetic + internal - initial_kinetic - external - contact - constraint
 // is the imbalance, and balance_error times largest_term_J bounds its largest value over the run.
-inline std::array<named_value, 9> energy_terms(const energy_balance& e) {
-  return {{{"kinetic_J", e.kinetic},
-           {"internal_J", e.internal},
-           {"plastic_J", e.plastic},
-           {"contact_J", e.contact},
-           {"external_J", e.external},
-           {"constraint_J", e.constraint},
-           {"initial_kinetic_J", e.initial_kinetic},
-           {"largest_term_J", e.largest_term},
-           {"balance_error", e.balance_error()}}};
+// `remap`: with the remap term of a re-referenced run (docs/method.md section 5.8) after the constraints'.
+inline std::vector<named_value> energy_terms(const energy_balance& e, bool remap = false) {
+  std::vector<named_value> terms{{"kinetic_J", e.kinetic},
+                                 {"internal_J", e.internal},
+                                 {"plastic_J", e.plastic},
+                                 {"contact_J", e.contact},
+                                 {"external_J", e.external},
+                                 {"constraint_J", e.constraint}};
+  if (remap) terms.push_back({"remap_J", e.remap});
+  terms.insert(terms.end(), {{"initial_kinetic_J", e.initial_kinetic},
+                             {"largest_term_J", e.largest_term},
+                             {"balance_error", e.balance_error()}});
+  return terms;
 }
 
 // Extra per-point scalars a material state lists for output: `static constexpr auto
@@ -88,12 +91,14 @@ struct snapshot_coefficients {
 namespace detail {
 
 // Particle values of the RK coefficients c, u(X_I) = sum_J N_J(X_I) c_J (plus X_I: the current
-// positions), as rows (x, y, 0) made piecewise: the arithmetic of values_at_particles and
+// positions; `initial`, a re-referenced run's initial positions: plus X_I - X_I^0, the displacement
+// since the start), as rows (x, y, 0) made piecewise: the arithmetic of values_at_particles and
 // positions_at_particles (solver/fields.hpp) and point_data::flat, particle by particle.
 inline std::function<point_data::filler()> particle_vectors(const discrete_model& m, const std::vector<vec2>& c,
-                                                           bool plus_position) {
-  return [&m, &c, plus_position] {
-    return point_data::filler([&m, &c, plus_position](std::size_t first, std::size_t n, double* out) {
+                                                           bool plus_position,
+                                                           const std::vector<vec2>* initial = nullptr) {
+  return [&m, &c, plus_position, initial] {
+    return point_data::filler([&m, &c, plus_position, initial](std::size_t first, std::size_t n, double* out) {
       index_t particle = -1;
       vec2 u = vec2::Zero();
       for (std::size_t k = 0; k < n; ++k) {
@@ -101,6 +106,7 @@ inline std::function<point_data::filler()> particle_vectors(const discrete_model
         if (I != particle) {
           u = m.at_particles.interpolate(I, c);
           if (plus_position) u += m.particles.position[I];
+          if (initial) u += m.particles.position[I] - (*initial)[I];
           particle = I;
         }
         const std::size_t component = (first + k) % 3;
@@ -160,7 +166,10 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
     if (when == field_arrays::deferred) data.add_filled(std::move(name), components, count, std::move(prepare));
     else data.add_values(std::move(name), components, filled_values(count, prepare));
   };
-  add_filled("displacement", 3, detail::particle_vectors(s.model(), d, false));
+  const std::vector<vec2>* initial = nullptr;  // a re-referenced run's: displacements since the start
+  if constexpr (requires { s.rereferences(); })
+    if (s.rereferences() > 0) initial = &s.initial_positions();
+  add_filled("displacement", 3, detail::particle_vectors(s.model(), d, false, initial));
   add_filled("velocity", 3, detail::particle_vectors(s.model(), v, false));
   add_filled("stress", 9, [&s] { return detail::stress_rows(s); });
   add("equivalent_plastic_strain", 1, [&s] {

@@ -128,7 +128,13 @@ class explicit_solver {
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
   // Physical displacements, velocities and current positions x_I = X_I + u(X_I).
-  std::vector<vec2> particle_displacements() const { return values_at_particles(model_, d_); }
+  // The displacements since the start (across re-references: x_I - X_I^0).
+  std::vector<vec2> particle_displacements() const {
+    std::vector<vec2> u = values_at_particles(model_, d_);
+    if (!initial_position_.empty())
+      for (index_t I = 0; I < model_.particle_count(); ++I) u[I] += model_.particles.position[I] - initial_position_[I];
+    return u;
+  }
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
   std::vector<vec2> particle_positions() const { return positions_at_particles(model_, d_); }
   template <class Value, class PointValue>
@@ -207,6 +213,9 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
       contact_{std::move(prob.contact)},
       options_(options) {
   options_.validate();
+  if (options_.rereference.enabled() && model_.is_part())
+    fail("re-referencing on several processes is not available yet: run on one process, or without "
+         "\"rereference\"");
   model_.own.validate(model_.particle_count(), model_.point_count());
   mass_ = materials_.lumped_masses(model_);
   d_.assign(model_.particle_count(), vec2::Zero());

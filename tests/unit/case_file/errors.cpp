@@ -126,7 +126,7 @@ TEST_CASE("unknown edge, body and tool names") {
   const std::string e = load_error(doc);
   CHECK(reports(e, "/bodies/0/constraints/0/edge", "body 'bar' has no edge 'botom'; did you mean 'bottom'?"));
   CHECK(reports(e, "/histories/0/extent/body", "no body 'rod'; the bodies are: bar"));
-  CHECK(reports(e, "/histories/3/tool_force/tool", "no tool 'wal'; did you mean 'wall'?"));
+  CHECK(reports(e, "/histories/4/tool_force/tool", "no tool 'wal'; did you mean 'wall'?"));
 }
 
 TEST_CASE("bodies without area: degenerate rectangle, flat, crossed or clockwise polygon, r < 0") {
@@ -206,6 +206,26 @@ TEST_CASE("--set overrides: a field the file has, a JSON value or a string") {
   // A value of the wrong kind is found by the checks, at its pointer.
   CHECK(reports(load_error(taylor(), override_list{{"/end_time_s", "soon"}}), "/end_time_s",
                 "expected a number, got a string \"soon\""));
+}
+
+}  // namespace test_unit_case_file_errors
+
+namespace test_unit_case_file_errors {
+
+TEST_CASE("re-referencing keys: read, and refused with the fix when they cannot mean anything") {
+  case_json doc = taylor();
+  doc["rereference"] = {{"max_stretch", 1.8}};
+  CHECK(test::load_document(doc).rereference.max_stretch == 1.8);
+  doc["rereference"] = {{"every_steps", 50}};
+  CHECK(test::load_document(doc).rereference.every_steps == 50);
+  doc["rereference"] = {{"max_stretch", 0.9}};
+  CHECK(reports(load_error(doc), "/rereference/max_stretch", "is not above 1"));
+  doc["rereference"] = {{"every_steps", 0}};
+  CHECK(reports(load_error(doc), "/rereference/every_steps", "give at least 1"));
+  doc["rereference"] = case_json::object();
+  CHECK(reports(load_error(doc), "/rereference", "give \"max_stretch\""));
+  doc["rereference"] = {{"max_strech", 1.8}};
+  CHECK(contains(load_error(doc), "max_stretch"));
 }
 
 }  // namespace test_unit_case_file_errors

@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include <rkpm/solver/rereference.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/gmsh_body.hpp>
 
@@ -181,6 +182,7 @@ struct case_description {
   double friction = 0.0;
   std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
   int snapshots = 20, history_rows = 400;
+  rereference_policy rereference;  // "rereference": {"max_stretch": 1.8} or {"every_steps": 50}
   std::vector<history_description> histories;
 };
 

@@ -60,7 +60,7 @@ particle_range body_particles(const Solver& s, const case_description& c, const 
 template <class Solver>
 double extent_of(const Solver& s, const body_description& b, particle_range body, const extent_history& h,
                  const std::vector<vec2>& x) {
-  const auto& X = s.model().particles.position;
+  const auto& X = s.initial_positions();
   std::vector<index_t> chosen;
   if (h.on_edge.empty()) {
     for (index_t I = body.first; I < body.last; ++I) chosen.push_back(I);
@@ -124,7 +124,7 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
         } else if constexpr (std::is_same_v<H, tool_displacement_history>) {
           return s.contact().tools()[tool_index(s, h.tool)].displacement(s.time())[h.component];
         } else if constexpr (std::is_same_v<H, probe_history>) {
-          const auto& X = s.model().particles.position;
+          const auto& X = s.initial_positions();
           const auto body = body_particles(s, c, h.body);
           auto nearest = static_cast<std::size_t>(body.first);
           for (auto I = nearest + 1; I < static_cast<std::size_t>(body.last); ++I)

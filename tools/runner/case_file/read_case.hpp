@@ -62,7 +62,8 @@ inline case_description read_case(diagnostics& d, const json& document, const st
   c.file = file;
   c.document = document;
   object_reader r(d, document, "", {"name", "description", "constants", "geometry", "method", "support_factor",
-                                    "end_time_s", "bodies", "tools", "contact", "output", "histories"});
+                                    "end_time_s", "bodies", "tools", "contact", "output", "histories",
+                                    "rereference"});
   if (!r.valid()) return c;
   c.name = r.text("name", "taylor_bar").value_or("");
   if (c.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
@@ -113,6 +114,21 @@ inline case_description read_case(diagnostics& d, const json& document, const st
     if (c.history_rows < 1) d.error(orr.at("history_rows"), fmt::format("{} rows; give at least 1", c.history_rows));
   }
   if (const json* h = r.find("histories")) c.histories = read_histories(d, *h, r.at("histories"));
+  if (const json* k = r.find("rereference")) {
+    // When the kernels are rebuilt in the current configuration (docs/method.md section 5.8).
+    object_reader rr(d, *k, r.at("rereference"), {"max_stretch", "every_steps"});
+    c.rereference.max_stretch = rr.number_or("max_stretch", 0.0);
+    c.rereference.every_steps = rr.integer_or("every_steps", 0);
+    if (rr.find("max_stretch") && !(c.rereference.max_stretch > 1.0))
+      d.error(rr.at("max_stretch"), fmt::format("{} is not above 1; give the principal stretch since the last "
+                                                "reference that triggers a re-reference, e.g. 1.8",
+                                                c.rereference.max_stretch));
+    if (rr.find("every_steps") && c.rereference.every_steps < 1)
+      d.error(rr.at("every_steps"), fmt::format("{} steps; give at least 1 (1 rebuilds every step)",
+                                                c.rereference.every_steps));
+    if (!rr.find("max_stretch") && !rr.find("every_steps"))
+      d.error(r.at("rereference"), "give \"max_stretch\" (e.g. 1.8) or \"every_steps\" (e.g. 50)");
+  }
   return c;
 }
 
