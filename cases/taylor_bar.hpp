@@ -108,21 +108,24 @@ struct taylor_bar {
   }
 
   // Key measures at the solver's current time (mm): the largest radius of the impact face
-  // (particles that started on it), the height (largest z) and the largest equivalent plastic
-  // strain.
+  // (particles that started on it), the height (largest z), the length (largest minus smallest
+  // z: what experiments and other codes report, since the bar lifts off the wall after the
+  // impact and the height then exceeds it) and the largest equivalent plastic strain.
   template <class Solver>
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
                                                              const std::vector<vec2>& /*tool_force*/) {
     const auto x = s.particle_positions();
     const auto& X = s.model().particles.position;
-    double radius = 0.0, height = 0.0, eps_p = 0.0;
+    double radius = 0.0, height = 0.0, lowest = x.empty() ? 0.0 : x[0][1], eps_p = 0.0;
     for (std::size_t I = 0; I < x.size(); ++I) {
       if (X[I][1] <= 1e-12) radius = std::max(radius, x[I][0]);
       height = std::max(height, x[I][1]);
+      lowest = std::min(lowest, x[I][1]);
     }
     for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
     return {{"radius_mm", radius * 1e3},
             {"height_mm", height * 1e3},
+            {"length_mm", (height - lowest) * 1e3},
             {"max_equivalent_plastic_strain", eps_p}};
   }
 };

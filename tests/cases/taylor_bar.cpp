@@ -8,7 +8,10 @@
 //   - u_r = 0 on the axis to round-off (the axisymmetric constraint acts on physical velocities);
 //   - plastic flow has started at the impact face, and it is largest there;
 //   - Newton's law along z: P_z(t) - P_z(0) = -sum_steps reaction_z dt (internal forces sum to
-//     zero by the partition of unity; the axis constraint acts on r only; no body force).
+//     zero by the partition of unity; the axis constraint acts on r only; no body force);
+//   - the case's measures at the end: its height is the largest z and its length the largest
+//     less the smallest z of the particles (the impact face is below z = 0 by the contact's
+//     small penetration here, above it once the bar lifts off: the length is not the height).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -44,6 +47,8 @@ struct impact_record {
   double min_eps_p_face = 1e30;       // smallest eps_p of the quadrature points in the lowest cell row
   double max_eps_p_face = 0.0;        // largest eps_p in the lowest tenth of the bar
   double max_eps_p_top = 0.0;         // largest eps_p in the highest tenth
+  double lowest = 0.0;                // smallest z of the particles at the end (m)
+  double measured_height_mm = 0.0, measured_length_mm = 0.0;  // the case's measure() at the end
   long steps = 0;
 };
 
@@ -92,6 +97,15 @@ impact_record impact(double end_time) {
         height_prev = r.height = height;
       },
       1);
+  {
+    const auto x = s.particle_positions();
+    r.lowest = x[0].y();
+    for (const vec2& xi : x) r.lowest = std::min(r.lowest, xi.y());
+    for (const auto& [name, value] : tb::measure(s, p, {})) {
+      if (name == "height_mm") r.measured_height_mm = value;
+      if (name == "length_mm") r.measured_length_mm = value;
+    }
+  }
   r.impulse_z = -s.tool_impulses()[0].y();  // the wall's reaction is the bar's push on it
   r.momentum_error = std::abs(momentum_z() - P0 - r.impulse_z) / (r.mass * p.velocity_m_s);
   r.balance_error = s.energy().balance_error();
@@ -129,6 +143,10 @@ void check(const impact_record& r, const tb::parameters& p) {
   // The wall pushed up on the bar: a positive impulse, a fair part of M V in a few microseconds.
   CHECK(r.impulse_z > 0.05 * r.mass * p.velocity_m_s);
   CHECK(r.momentum_error < 1e-10);
+  // The measures: the height is the top's z, the length the top's less the lowest point's.
+  CHECK(r.measured_height_mm == r.height * 1e3);
+  CHECK(r.lowest != 0.0);  // so that the length and the height differ
+  CHECK(r.measured_length_mm == doctest::Approx((r.height - r.lowest) * 1e3).epsilon(1e-14));
 }
 
 }  // namespace

@@ -213,7 +213,7 @@ def outputs(out):
         s = strict_json(f)
     check(list(s) == SUMMARY_KEYS, f"summary.json: keys {list(s)}, expected {SUMMARY_KEYS}")
     check(list(s.get("energy", {})) == ENERGY_KEYS, f"summary.json: energy keys {list(s.get('energy', {}))}")
-    check(list(s.get("results", {})) == ["radius_mm", "height_mm", "max_equivalent_plastic_strain"],
+    check(list(s.get("results", {})) == ["radius_mm", "height_mm", "length_mm", "max_equivalent_plastic_strain"],
           f"summary.json: results keys {list(s.get('results', {}))}")
     # Parameters keep their types: counts are integers, quantities are numbers.
     params = s.get("parameters", {})
@@ -230,7 +230,7 @@ def outputs(out):
         check(finite(s.get(key)), f"summary.json: '{key}' missing or not a finite number")
     for key in ENERGY_KEYS:
         check(finite(s.get("energy", {}).get(key)), f"summary.json: 'energy.{key}' missing or not finite")
-    for key in ["radius_mm", "height_mm", "max_equivalent_plastic_strain"]:
+    for key in ["radius_mm", "height_mm", "length_mm", "max_equivalent_plastic_strain"]:
         check(finite(s.get("results", {}).get(key)), f"summary.json: 'results.{key}' missing or not finite")
     if failures:
         return
@@ -366,6 +366,12 @@ def vtk(out):
     res = s["results"]
     check(abs(radius_mm - res["radius_mm"]) < 1e-9 and abs(height_mm - res["height_mm"]) < 1e-9,
           f"the last snapshot gives radius {radius_mm} and height {height_mm} mm; summary.json says {res}")
+    # The length is the height less the lowest point (the impact face, pressed a little into the
+    # wall here; off it once the bar lifts), not the height.
+    lowest_mm = x[:, 1].min() * 1e3
+    check(lowest_mm != 0.0 and abs(res["length_mm"] - (height_mm - lowest_mm)) < 1e-9,
+          f"the last snapshot gives length {height_mm - lowest_mm} mm (height {height_mm}, lowest point "
+          f"{lowest_mm}); summary.json says {res}")
     axis = ref[:, 0] == 0.0
     check(np.abs(x[axis, 0]).max() < 1e-15, "axis particles left r = 0")
     check(x[:, 1].min() > -0.02 * HEIGHT_MM * 1e-3 / (AXIAL - 1), "particles below the wall")
