@@ -1,6 +1,6 @@
 // config<>: the documented defaults, the with_* aliases rebind exactly one parameter, the
-// policy lists have the lengths of the shipped families, the product has 2*2*3*2*3*4 types and
-// the covering set holds 12 distinct Config types. All checks are at compile time; the one
+// policy lists have the lengths of the shipped families, the product has 2*2*3*2*4*4 types and
+// the covering set holds 16 distinct Config types. All checks are at compile time; the one
 // run-time case only makes the program a doctest executable and checks name().
 
 #include <set>
@@ -60,27 +60,26 @@ static_assert(hana::length(policies::kernels) == hana::size_c<2>);
 static_assert(hana::length(policies::corrections) == hana::size_c<2>);
 static_assert(hana::length(policies::quadratures) == hana::size_c<3>);
 static_assert(hana::length(policies::geometries) == hana::size_c<2>);
-static_assert(hana::length(policies::materials) == hana::size_c<3>);
+static_assert(hana::length(policies::materials) == hana::size_c<4>);
 static_assert(hana::length(policies::contacts) == hana::size_c<4>);
-static_assert(policies::family_sizes == std::array<std::size_t, 6>{2, 2, 3, 2, 3, 4});
-static_assert(hana::length(policies::covering_configs) == hana::size_c<12>);
-static_assert(decltype(hana::length(policies::all_configs()))::value == 288);
+static_assert(policies::family_sizes == std::array<std::size_t, 6>{2, 2, 3, 2, 4, 4});
+static_assert(hana::length(policies::covering_configs) == hana::size_c<16>);
+static_assert(decltype(hana::length(policies::all_configs()))::value == 384);
 // q1 is shipped but kept out of the lists: it is the failing reference of the spectrum test.
 static_assert(!hana::contains(policies::quadratures, hana::type_c<quadrature::q1>));
 
 // The generated covering set has the fewest rows possible, the product of the two largest
-// families (4 contacts x 3 materials or rules), and its rows map to the right types (rows 0
-// and 11 spelled out: {0,0,0,0,0,0} and {1,1,2,1,1,3}).
-static_assert(policies::covering_rows.size() == 4 * 3);
+// families (4 contacts x 4 materials), and its rows map to the right types (rows 0 and 15
+// spelled out: {0,0,0,0,0,0} and {1,1,0,1,3,3}).
+static_assert(policies::covering_rows.size() == 4 * 4);
 static_assert(policies::covering_rows[0] == std::array<std::size_t, 6>{0, 0, 0, 0, 0, 0});
 static_assert(std::is_same_v<typename decltype(+policies::covering_configs[hana::size_c<0>])::type,
                              config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
                                     material::elastic, contact::none>>);
-static_assert(policies::covering_rows[11] == std::array<std::size_t, 6>{1, 1, 2, 1, 1, 3});
-static_assert(std::is_same_v<typename decltype(+policies::covering_configs[hana::size_c<11>])::type,
-                             config<kernel::quartic_spline, correction::quadratic, quadrature::q9,
-                                    geometry::axisymmetric, material::j2_plasticity<material::hardening::linear>,
-                                    ptc>>);
+static_assert(policies::covering_rows[15] == std::array<std::size_t, 6>{1, 1, 0, 1, 3, 3});
+static_assert(std::is_same_v<typename decltype(+policies::covering_configs[hana::size_c<15>])::type,
+                             config<kernel::quartic_spline, correction::quadratic, quadrature::q2,
+                                    geometry::axisymmetric, material::zerilli_armstrong, ptc>>);
 // The generator covers every pair for other family sizes too (a fifth contact, a fourth
 // material, three geometries), within a few rows of the product of the two largest sizes.
 static_assert(policies::covers_every_pair(
@@ -92,18 +91,19 @@ static_assert(policies::covers_every_pair(
     }(),
     std::array<std::size_t, 6>{2, 2, 3, 2, 4, 5}));
 static_assert(pairwise_covering(std::array<std::size_t, 6>{2, 2, 3, 3, 4, 5}).count <= 5 * 4 + 3);
-// All 12 are distinct types.
-static_assert(hana::length(hana::to_set(policies::covering_configs)) == hana::size_c<12>);
+// All 16 are distinct types.
+static_assert(hana::length(hana::to_set(policies::covering_configs)) == hana::size_c<16>);
 
 // A deliberately incomplete row set is rejected by the pairwise check.
 static_assert(!policies::covers_every_pair(
     std::array<std::array<std::size_t, 6>, 1>{{{0, 0, 0, 0, 0, 0}}}, policies::family_sizes));
 // Dropping any one row of the shipped covering set loses some pair (the set is not padded).
 constexpr bool every_row_needed() {
-  for (std::size_t drop = 0; drop < 12; ++drop) {
-    std::array<std::array<std::size_t, 6>, 11> rows{};
+  constexpr std::size_t n = policies::covering_rows.size();
+  for (std::size_t drop = 0; drop < n; ++drop) {
+    std::array<std::array<std::size_t, 6>, n - 1> rows{};
     std::size_t k = 0;
-    for (std::size_t r = 0; r < 12; ++r)
+    for (std::size_t r = 0; r < n; ++r)
       if (r != drop) rows[k++] = policies::covering_rows[r];
     if (policies::covers_every_pair(rows, policies::family_sizes)) return false;
   }
@@ -123,7 +123,7 @@ TEST_CASE("config names") {
     names.insert(decltype(c)::type::name());
     ++count;
   });
-  CHECK(count == 288);
+  CHECK(count == 384);
   CHECK(names.size() == count);
 }
 

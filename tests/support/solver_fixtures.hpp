@@ -52,6 +52,12 @@ M make_material(const material::elastic_constants& c) {
     return M(c, material::hardening::johnson_cook{0.001 * c.youngs_modulus, 0.003 * c.youngs_modulus, 0.31, 0.025,
                                                   1.0, 1.09, 294.0, 1356.0},
              material::johnson_cook_heating{383.0}, material::johnson_cook_damage{0.54, 4.89, -3.03, 0.014, 1.12});
+  else if constexpr (std::is_same_v<M, material::zerilli_armstrong>)  // copper's fcc shape
+    return M(c,
+             material::hardening::zerilli_armstrong{material::hardening::zerilli_armstrong::lattice_type::fcc,
+                                                    0.0003 * c.youngs_modulus, 0.0, 0.007 * c.youngs_modulus, 0.0028,
+                                                    0.000115, 0.0, 0.0, 1.0, 1356.0},
+             material::zerilli_armstrong_heating{383.0, 0.9, 294.0});
   else
     return M{c};  // a test's own material, an aggregate of its elastic constants first
 }

@@ -2,8 +2,8 @@
 // The shipped policies of each family as Boost.Hana type lists, the cartesian product of
 // all combinations, and a pairwise covering set (docs/method.md section 9.2).
 //
-// Every solver type costs compile time, and the full product is 2 x 2 x 3 x 2 x 3 x 4 = 288
-// configurations. The tests instantiate `covering_configs`: 12 configurations in which every
+// Every solver type costs compile time, and the full product is 2 x 2 x 3 x 2 x 4 x 4 = 384
+// configurations. The tests instantiate `covering_configs`: 16 configurations in which every
 // pair of policies from two different families appears at least once (generated and checked
 // below at compile time). The runner instantiates only what its option strings can reach.
 
@@ -20,6 +20,7 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
+#include <rkpm/material/zerilli_armstrong.hpp>
 #include <rkpm/solver/config.hpp>
 
 namespace rkpm::policies {
@@ -44,13 +45,15 @@ inline constexpr auto extended_quadratures =
 // instantiation (the solver type does not depend on the rule).
 inline constexpr auto all_quadratures = hana::concat(quadratures, extended_quadratures);
 inline constexpr auto geometries = hana::tuple_t<geometry::plane_strain, geometry::axisymmetric>;
-// One material of each kind of update: path-independent, J2 with a closed-form return, and
-// J2 with a Newton return of a rate- and temperature-dependent law and a state that grows
-// (temperature, damage). J2 with power-law or Voce hardening shares the solver's code with
-// these; it is tested by its own material tests and case files instead of four more solver
-// instantiations (docs/method.md section 9.2).
+// One material of each kind of update: path-independent, J2 with a closed-form return, J2 with
+// the Newton return of a rate- and temperature-dependent law on its own step curve and a state
+// that grows (temperature, damage: Johnson-Cook), and J2 with the general rate-dependent Newton
+// return and a temperature (Zerilli-Armstrong). J2 with power-law or Voce hardening shares the
+// solver's code with these; it is tested by its own material tests and case files instead of
+// four more solver instantiations (docs/method.md section 9.2).
 inline constexpr auto materials =
-    hana::tuple_t<material::elastic, material::j2_plasticity<material::hardening::linear>, material::johnson_cook>;
+    hana::tuple_t<material::elastic, material::j2_plasticity<material::hardening::linear>, material::johnson_cook,
+                  material::zerilli_armstrong>;
 inline constexpr auto contacts =
     hana::tuple_t<contact::none,
                   contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>,
