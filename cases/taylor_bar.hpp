@@ -115,7 +115,7 @@ struct taylor_bar {
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
                                                              const std::vector<vec2>& /*tool_force*/) {
     const auto x = s.particle_positions();
-    const auto& X = s.model().particles.position;
+    const auto& X = s.initial_positions();
     double radius = 0.0, height = 0.0, lowest = x.empty() ? 0.0 : x[0][1], eps_p = 0.0;
     for (std::size_t I = 0; I < x.size(); ++I) {
       if (X[I][1] <= 1e-12) radius = std::max(radius, x[I][0]);

@@ -4,8 +4,8 @@
 //    gradient exactly, and F composes (79): driven by prescribed velocities at every particle, a
 //    run re-referenced every few steps ends with the total F and the J2 stress of the Lagrangian
 //    run, to round-off;
-//  - mass exact and linear momentum to round-off at every re-reference, the fields carried over:
-//    the current velocity of every particle reproduced up to one uniform shift;
+//  - mass, linear momentum and kinetic energy kept exactly at every re-reference (the masses and
+//    the velocity coefficients stay), the velocity field changed by the approximation's O(h^2);
 //  - a free elastic block set spinning, re-referenced every 10 steps for a quarter turn: angular
 //    momentum within the run's balance tolerance, the energy ledger (with its remap term) balanced.
 
@@ -135,7 +135,7 @@ TEST_CASE("re-referencing: a linear field is reproduced on the re-referenced, di
   CHECK(moved < 1e-9);
 }
 
-TEST_CASE("re-referencing: mass exact, momentum to round-off, velocities carried over") {
+TEST_CASE("re-referencing: mass, momentum and kinetic energy kept exactly, the velocity field within O(h^2)") {
   test::run_serially();
   using Cfg = method<quadrature::q2>;
   const vec2 lo(0.0, 0.0), hi(0.06, 0.02);
@@ -156,20 +156,23 @@ TEST_CASE("re-referencing: mass exact, momentum to round-off, velocities carried
   };
   for (int k = 0; k < 3; ++k) {
     const vec2 before = momentum();
+    const double kinetic = s.kinetic_energy();
     const std::vector<vec2> velocity = s.particle_velocities();
     s.rereference();
     CHECK(s.mass() == mass);
-    CHECK((momentum() - before).norm() < 1e-13 * before.norm());
-    // The current velocities reproduced, up to the one uniform shift that keeps the momentum.
+    CHECK(momentum() == before);
+    CHECK(s.kinetic_energy() == kinetic);
+    // The field on the new kernels differs by the approximation's error: the velocity's second
+    // derivatives (4000 and 6000 1/(m s)) times h^2 (5 mm), a few mm/s here; at most 0.2 % of it.
     const std::vector<vec2> after = s.particle_velocities();
-    const vec2 shift = after[0] - velocity[0];
-    double spread = 0.0;
-    for (std::size_t I = 0; I < after.size(); ++I) spread = std::max(spread, (after[I] - velocity[I] - shift).norm());
-    CHECK(spread < 1e-10 * largest(velocity));
-    CHECK(shift.norm() < 1e-2 * largest(velocity));
+    double change = 0.0;
+    for (std::size_t I = 0; I < after.size(); ++I) change = std::max(change, (after[I] - velocity[I]).norm());
+    CHECK(change < 2e-3 * largest(velocity));
+    CHECK(change > 0.0);  // not trivially the same kernels
     s.step();
   }
   CHECK(s.rereferences() == 3);
+  CHECK(s.energy().remap == 0.0);
 }
 
 TEST_CASE("re-referencing: a spinning block keeps its angular momentum and its energy balance") {

@@ -121,6 +121,9 @@ class explicit_solver {
   const std::vector<state_type>& point_states() const { return points_.states(); }
   // det F at quadrature point q at the last force evaluation.
   double point_det_F(index_t q) const { return points_.det_F(q); }
+  // F relative to the current reference at point q (F itself until a re-reference): how far the
+  // kernels have been distorted since they were built.
+  mat3 point_relative_deformation_gradient(index_t q) const { return points_.relative_deformation_gradient(q); }
   const constraint_projector& constraints() const { return constraints_; }
   const std::vector<index_t>& slave_particles() const { return contact_.slaves; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).

@@ -6,8 +6,6 @@
 //   deformed_particles     the particles at their current positions, with supports that follow
 //                          the deformation (82) and volumes from the deformed cells; the cells'
 //                          corners move with the particles (the mesh nodes are the particles)
-//   solve_coefficients     the coefficients c with sum_J N_J(X_I) c_J = u_I at every particle:
-//                          RK shape functions do not interpolate (83)
 
 #include <algorithm>
 #include <array>
@@ -15,15 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
-#include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
 
@@ -79,47 +73,6 @@ inline std::pair<particle_set<2>, background_mesh> deformed_particles(const part
     for (const stored_index n : cells.cell[c]) next.volume[n] += 0.25 * area;
   }
   return {std::move(next), std::move(cells)};
-}
-
-// c with sum_J N_J(X_I) c_J = u_I at every particle I (83): BiCGSTAB with an incomplete LU
-// preconditioner on the rows of `at_particles`, to a residual of 1e-14 of |u|; a sparse LU if
-// that does not converge. The same bits on any thread count (a row is summed by one thread).
-inline std::vector<vec2> solve_coefficients(const shape_table<2>& at_particles, const std::vector<vec2>& u) {
-  using sparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  const auto n = static_cast<Eigen::Index>(u.size());
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(at_particles.neighbor.size());
-  for (index_t I = 0; I < static_cast<index_t>(n); ++I)
-    for (index_t e = at_particles.offset[I]; e < at_particles.offset[I + 1]; ++e)
-      entries.emplace_back(I, at_particles.neighbor[e], at_particles.N[e]);
-  sparse A(n, n);
-  A.setFromTriplets(entries.begin(), entries.end());
-  Eigen::MatrixX2d rhs(n, 2);
-  for (Eigen::Index I = 0; I < n; ++I) rhs.row(I) = u[static_cast<std::size_t>(I)].transpose();
-  Eigen::MatrixX2d c(n, 2);
-  Eigen::BiCGSTAB<sparse, Eigen::IncompleteLUT<double>> iterative;
-  iterative.setTolerance(1e-14);
-  iterative.setMaxIterations(1000);
-  iterative.compute(A);
-  bool solved = iterative.info() == Eigen::Success;
-  for (int k = 0; solved && k < 2; ++k) {
-    if (rhs.col(k).squaredNorm() == 0.0) {
-      c.col(k).setZero();
-      continue;
-    }
-    c.col(k) = iterative.solve(rhs.col(k));
-    solved = iterative.info() == Eigen::Success;
-  }
-  if (!solved) {
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> direct(A);
-    if (direct.info() != Eigen::Success)
-      fail("re-referencing: the shape functions at the particles form a singular matrix, so the fields cannot "
-           "be carried to the new reference; re-reference earlier (a smaller max_stretch) or enlarge the supports");
-    c = direct.solve(rhs);
-  }
-  std::vector<vec2> out(u.size());
-  for (Eigen::Index I = 0; I < n; ++I) out[static_cast<std::size_t>(I)] = c.row(I).transpose();
-  return out;
 }
 
 }  // namespace rkpm
