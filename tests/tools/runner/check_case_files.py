@@ -20,6 +20,14 @@
                                                             history.csv, summary.json and the VTK snapshots (and
                                                             not a J2 file's); each bad Johnson-Cook key stops the
                                                             run with its pointer and fix
+    check_case_files.py zerilli_armstrong RKPM_RUN CASES_DIR WORK_DIR
+                                                            cases/taylor_copper_za.json, coarse and short, and the
+                                                            same bar with bcc constants: the runner takes the
+                                                            temperature-carrying material, the energy balances,
+                                                            the temperature rises and reaches summary.json and the
+                                                            snapshots (no damage field), the length is the height
+                                                            less the lowest point; a bad key stops the run with its
+                                                            pointer and fix
     check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
                                                             has the geometry's mass (kinetic energy 1/2 rho A v^2),
                                                             keeps its symmetry line and stays on the wall's side;
@@ -447,6 +455,57 @@ def johnson_cook(rkpm_run, cases, work):
         print(f"ok  {name}: {r.stderr.strip()}")
 
 
+def zerilli_armstrong(rkpm_run, cases, work):
+    with open(os.path.join(cases, "taylor_copper_za.json")) as f:
+        doc = json.load(f)
+    doc["bodies"][0]["shape"]["rectangle"]["particles"] = [9, 15]
+    doc["output"] = {"snapshots": 2, "history_rows": 40}
+    bcc = json.loads(json.dumps(doc))
+    m = bcc["bodies"][0]["material"]
+    m.pop("C2_Pa")  # Armco iron's constants (Zerilli & Armstrong 1987), C0 chosen here
+    m.update(lattice="bcc", C0_Pa=50e6, C1_Pa=1033e6, C3_1_K=0.00698, C4_1_K=0.000415, C5_Pa=266e6, n=0.289,
+             melt_temperature_K=1811)
+    for name, d in (("za_fcc", doc), ("za_bcc", bcc)):
+        r, out = run_document(rkpm_run, d, work, name, "--end-time", "8e-6")
+        check(r.returncode == 0, f"{name}: the run failed: {r.stderr}")
+        if r.returncode != 0:
+            continue
+        s = summary(out)
+        e, res = s["energy"], s["results"]
+        check(e["balance_error"] < 2e-2, f"{name}: balance error {e['balance_error']}")
+        check(e["plastic_J"] > 0.05 * e["initial_kinetic_J"], f"{name}: little plastic work {e}")
+        T = s.get("points", {}).get("max_temperature_K", 0.0)
+        check(300.0 < T < 1356.0 and res.get("max_temperature_K") == T, f"{name}: temperature {T}, results {res}")
+        check(0.0 < res["length_mm"] and abs(res["length_mm"] - res["height_mm"]) < 0.05, f"{name}: results {res}")
+        vtus = sorted(f for f in os.listdir(out) if f.endswith(".vtu"))
+        text = read(os.path.join(out, vtus[-1]), "rb")
+        check(b'Name="temperature_K"' in text and b'Name="damage"' not in text,
+              f"{name}: {vtus[-1]} should have a temperature and no damage")
+        print(f"ok  {name}: {s['steps']} steps, max temperature {T:.1f} K, length {res['length_mm']:.3f} mm, "
+              f"plastic {e['plastic_J']:.3f} J of {e['initial_kinetic_J']:.3f} J, balance error {e['balance_error']:.2e}")
+
+    bad = []
+
+    def variant(name, base, change, words):
+        d = json.loads(json.dumps(base))
+        change(d["bodies"][0]["material"])
+        bad.append((name, d, words))
+    variant("lattice", doc, lambda m: m.update(lattice="hcp"), ["/bodies/0/material/lattice", "unknown lattice 'hcp'"])
+    variant("bcc_key_in_fcc", doc, lambda m: m.update(C5_Pa=266e6), ["/bodies/0/material/C5_Pa", "unknown field"])
+    variant("missing_n", bcc, lambda m: m.pop("n"), ["/bodies/0/material", "missing field 'n'", "0.289"])
+    variant("negative_C3", doc, lambda m: m.update(C3_1_K=-1e-3), ["/bodies/0/material/C3_1_K", "must not be negative"])
+    variant("melt", doc, lambda m: m.update(melt_temperature_K=200), ["/bodies/0/material/melt_temperature_K",
+                                                                       "not above initial_temperature_K"])
+    variant("no_initial_temperature", doc, lambda m: m.pop("initial_temperature_K"),
+            ["missing field 'initial_temperature_K'", "294"])
+    for name, d, words in bad:
+        r, _ = run_document(rkpm_run, d, work, f"za_{name}")
+        check(r.returncode != 0, f"{name}: accepted")
+        for w in words:
+            check(w in r.stderr, f"{name}: the error does not say {w!r}: {r.stderr!r}")
+        print(f"ok  {name}: {r.stderr.strip()}")
+
+
 def expressions(rkpm_run, cases, work):
     """Fields given as expressions (tools/runner/case_file/README.md, "Expressions"):
     cases/spinning_disc.json for a quarter turn: the momentum kept, the rim particle turned by about
@@ -524,7 +583,8 @@ def main(argv):
         paper(rkpm_run, cases, work, mode)
         return exit_status()
     { "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies,
-     "ledger": ledger, "voce": voce, "johnson_cook": johnson_cook, "expressions": expressions}[mode](
+     "ledger": ledger, "voce": voce, "johnson_cook": johnson_cook, "zerilli_armstrong": zerilli_armstrong,
+     "expressions": expressions}[mode](
         rkpm_run, cases, work)
     return exit_status()
 
