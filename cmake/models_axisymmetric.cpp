@@ -6,5 +6,6 @@
 #include <rkpm/solver/make_model.hpp>
 
 namespace rkpm {
-template discrete_model make_model<geometry::axisymmetric>(const method_names&, particle_set<2>, background_mesh, double);
+template discrete_model make_model<geometry::axisymmetric>(const method_names&, particle_set<2>, background_mesh, double,
+                                                           const quadrature_points*);
 }  // namespace rkpm

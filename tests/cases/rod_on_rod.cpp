@@ -160,7 +160,7 @@ TEST_CASE("rod on rod: two bodies of one material, each particle and point in it
   CHECK(chains[0].body != chains[1].body);
 
   REQUIRE(s.model_builder());
-  const discrete_model again = s.model_builder()(m.particles, m.mesh, s.options().max_moment_condition);
+  const discrete_model again = s.model_builder()(m.particles, m.mesh, s.options().max_moment_condition, nullptr);
   CHECK(again.at_points.neighbor == m.at_points.neighbor);
   CHECK(again.at_points.N == m.at_points.N);
   CHECK(again.at_particles.N == m.at_particles.N);

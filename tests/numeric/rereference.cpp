@@ -1,6 +1,6 @@
 // Re-referencing the kernels (docs/method.md section 5.8), against theory:
 //  - a homogeneous deformation: after a re-reference the new model's particles and quadrature
-//    points are where F puts them, a linear field on the re-referenced (distorted) body gives its
+//    points are where F puts them (the points carried, their weights times det F), a linear field on the re-referenced (distorted) body gives its
 //    gradient exactly, and F composes (79): driven by prescribed velocities at every particle, a
 //    run re-referenced every few steps ends with the total F and the J2 stress of the Lagrangian
 //    run, to round-off;
@@ -95,6 +95,24 @@ void check_composition() {
     position_error = std::max(position_error, (rebuilt.particle_positions()[I] - expected.topLeftCorner<2, 2>() * X).norm());
   }
   CHECK(position_error < 1e-12);
+  // The points are the material points carried: where F at the last re-reference puts the
+  // initial ones, their weights the initial ones times its det (with the hoop stretch and
+  // 2 pi r in axisymmetry).
+  const double t_r = rebuilt.rereference_times().back();
+  mat3 F_r = mat3::Identity();
+  F_r.topLeftCorner<2, 2>() += t_r * L;
+  if constexpr (G::is_axisymmetric) F_r(2, 2) = 1.0 + t_r * L(0, 0);
+  double point_error = 0.0, weight_error = 0.0;
+  const double J = F_r.determinant();
+  for (index_t q = 0; q < rebuilt.model().point_count(); ++q) {
+    const vec2 X = lagrangian.model().points.position[q];
+    point_error = std::max(point_error, (rebuilt.model().points.position[q] - F_r.topLeftCorner<2, 2>() * X).norm());
+    weight_error = std::max(weight_error, std::abs(rebuilt.model().points.weight[q] / (J * lagrangian.model().points.weight[q]) - 1.0));
+  }
+  if (!rebuilt.model().nodal) {
+    CHECK(point_error < 1e-12);
+    CHECK(weight_error < 1e-12);
+  }
 }
 
 }  // namespace

@@ -21,6 +21,11 @@ namespace rkpm {
 struct background_mesh {
   std::vector<vec2> node;
   std::vector<std::array<stored_index, 4>> cell;  // node numbers, counter-clockwise
+  // The cells of a re-referenced model (docs/method.md section 5.8): the particles' current
+  // positions, where a cell squeezed flat against a tool may have turned inside out. Such cells
+  // carry no quadrature rule (the points are the material points carried over) and say only
+  // which particles and boundary edges belong together, so validate() checks their numbering.
+  bool tangled = false;
 
   index_t cells() const { return static_cast<index_t>(cell.size()); }
 
@@ -50,7 +55,7 @@ struct background_mesh {
       for (index_t n : cell[c])
         if (n < 0 || n >= static_cast<index_t>(node.size()))
           fail("background cell {} refers to node {} of {}", c, n, node.size());
-      if (!(cell_area(c) > 0.0))
+      if (!tangled && !(cell_area(c) > 0.0))
         fail("background cell {} has area {:.3g}: its nodes must be counter-clockwise and distinct",
              c, cell_area(c));
     }

@@ -7,6 +7,7 @@
 // all bodies together with one stable step. A problem with one body gets exactly the model of
 // build_discrete_model.
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -67,11 +68,13 @@ inline void append_row(const shape_table<2>& from, index_t row, const std::vecto
 
 template <Kernel K, Correction C, Quadrature Q, Geometry G>
 discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh mesh,
-                                     double max_condition = default_max_moment_condition) {
+                                     double max_condition = default_max_moment_condition,
+                                     const quadrature_points* carried = nullptr) {
   particles.validate();
   model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
   if (bodies.count() == 1) {
-    discrete_model m = detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition);
+    discrete_model m =
+        detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition, carried);
     m.set_bodies(std::move(bodies));
     return m;
   }
@@ -83,7 +86,21 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
   std::vector<discrete_model> models;
   for (index_t b = 0; b < bodies.count(); ++b) {
     parts.push_back(detail::extract_body(particles, mesh, bodies, b));
-    models.push_back(detail::build_one_model<K, C, Q, G>(parts[b].particles, parts[b].mesh, max_condition));
+    // Carried points of body b, in their order, their cells numbered as the body's.
+    std::optional<quadrature_points> own;
+    if (carried) {
+      std::vector<index_t> local_cell(mesh.cell.size(), -1);
+      for (index_t c = 0; c < static_cast<index_t>(parts[b].cell.size()); ++c) local_cell[parts[b].cell[c]] = c;
+      own.emplace();
+      for (index_t q = 0; q < carried->size(); ++q)
+        if (const index_t c = local_cell[carried->cell[q]]; c >= 0) {
+          own->position.push_back(carried->position[q]);
+          own->weight.push_back(carried->weight[q]);
+          own->cell.push_back(static_cast<stored_index>(c));
+        }
+    }
+    models.push_back(detail::build_one_model<K, C, Q, G>(parts[b].particles, parts[b].mesh, max_condition,
+                                                         own ? &*own : nullptr));
   }
   for (index_t b = 0; b < bodies.count(); ++b) {
     const discrete_model& m = models[b];

@@ -60,6 +60,9 @@ struct discrete_model {
   // the same particles (the constraints, the contact, the stable step's start vector). Empty on
   // one process.
   std::optional<vec2> global_mean_support;
+  // Whether the points are a nodal rule's (scni): on smoothing cells, not carried as material
+  // points when the model is rebuilt in the current configuration (section 5.8).
+  bool nodal = false;
   std::vector<stored_index> point_id;
   std::vector<stored_index> particle_id;
 
@@ -148,20 +151,25 @@ discrete_model build_nodal_model(particle_set<2> particles, background_mesh mesh
   discrete_model m = build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), np.points, max_condition);
   smooth_point_gradients<K, C, G>(m.particles, cells, np, beta, edge_points, m.at_points, max_condition);
   m.traversal = make_point_traversal(m.at_points, m.particle_count());
+  m.nodal = true;
   return m;
 }
 
 namespace detail {
 
-// One model over all the particles and cells, without its bodies.
+// One model over all the particles and cells, without its bodies. `carried`: the points of a
+// model rebuilt in the current configuration (section 5.8), the material points of the one before
+// with their current weights, in place of the rule's points on the cells (a nodal rule ignores
+// them and smooths on the cells).
 template <Kernel K, Correction C, Quadrature Q, Geometry G>
-discrete_model build_one_model(particle_set<2> particles, background_mesh mesh, double max_condition) {
-  check_body(particles, mesh);
+discrete_model build_one_model(particle_set<2> particles, background_mesh mesh, double max_condition,
+                               const quadrature_points* carried = nullptr) {
+  if (!carried || NodalRule<Q>) check_body(particles, mesh);
   if constexpr (NodalRule<Q>) {
     return build_nodal_model<K, C, G>(std::move(particles), std::move(mesh), Q::stabilization, Q::edge_points,
                                       max_condition);
   } else {
-    quadrature_points points = make_quadrature_points<Q, G>(mesh);
+    quadrature_points points = carried ? *carried : make_quadrature_points<Q, G>(mesh);
     discrete_model m =
         build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
     if constexpr (CorrectedRule<Q>)
@@ -189,8 +197,9 @@ discrete_model build_discrete_model(particle_set<2> particles, background_mesh m
 // A model builder with its method fixed (make_solver's): the model of particles in cells, with
 // the moment-matrix conditioning limit. A solver keeps the one it was built with, so that its
 // tables can be built again on another particle set (model_factory()).
-using model_factory =
-    std::function<discrete_model(particle_set<2> particles, background_mesh mesh, double max_condition)>;
+// `carried`: the points of a re-referenced model (build_one_model), or null.
+using model_factory = std::function<discrete_model(particle_set<2> particles, background_mesh mesh,
+                                                   double max_condition, const quadrature_points* carried)>;
 
 // The model with its bodies found, if it was assembled without a builder that finds them.
 template <Geometry G>

@@ -31,7 +31,7 @@ namespace rkpm {
 // one line that gives the choices.
 template <Geometry G>
 discrete_model make_model(const method_names& m, particle_set<2> particles, background_mesh mesh,
-                          double max_condition) {
+                          double max_condition, const quadrature_points* carried = nullptr) {
   namespace hana = boost::hana;
   m.check();
   std::optional<discrete_model> model;
@@ -42,7 +42,7 @@ discrete_model make_model(const method_names& m, particle_set<2> particles, back
         using C = typename decltype(+combo[hana::size_c<1>])::type;
         using Q = typename decltype(+combo[hana::size_c<2>])::type;
         if (!model && m.kernel == K::name && m.correction == C::name && m.quadrature == Q::name)
-          model.emplace(build_model_of_bodies<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition));
+          model.emplace(build_model_of_bodies<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition, carried));
       });
   if (!model) fail("no model for {}: not a combination of the policy lists", m.describe());
   return std::move(*model);
@@ -51,8 +51,8 @@ discrete_model make_model(const method_names& m, particle_set<2> particles, back
 // make_model<G> of the method `m` as a solver's model_factory (explicit_solver::model_builder).
 template <Geometry G>
 model_factory model_factory_of(const method_names& m) {
-  return [m](particle_set<2> particles, background_mesh mesh, double max_condition) {
-    return make_model<G>(m, std::move(particles), std::move(mesh), max_condition);
+  return [m](particle_set<2> particles, background_mesh mesh, double max_condition, const quadrature_points* carried) {
+    return make_model<G>(m, std::move(particles), std::move(mesh), max_condition, carried);
   };
 }
 
@@ -60,7 +60,7 @@ model_factory model_factory_of(const method_names& m) {
 template <Geometry G, Material M, Contact Ct>
 explicit_solver<G, M, Ct> make_solver(const method_names& m, problem<M, Ct> p, const run_options& options) {
   const model_factory factory = model_factory_of<G>(m);
-  discrete_model model = factory(std::move(p.particles), std::move(p.mesh), options.max_moment_condition);
+  discrete_model model = factory(std::move(p.particles), std::move(p.mesh), options.max_moment_condition, nullptr);
   return explicit_solver<G, M, Ct>(std::move(model), std::move(p), options, factory);
 }
 
@@ -76,9 +76,9 @@ static_assert(decltype(boost::hana::length(policies::kernels))::value == 2 &&
               "solver/model_instances.hpp lists every shipped kernel, correction and rule: add the new one there");
 #ifdef RKPM_EXTERN_MODELS
 extern template discrete_model make_model<geometry::plane_strain>(const method_names&, particle_set<2>,
-                                                                  background_mesh, double);
+                                                                  background_mesh, double, const quadrature_points*);
 extern template discrete_model make_model<geometry::axisymmetric>(const method_names&, particle_set<2>,
-                                                                  background_mesh, double);
+                                                                  background_mesh, double, const quadrature_points*);
 #endif
 }  // namespace rkpm
 #endif

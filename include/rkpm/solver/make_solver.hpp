@@ -28,12 +28,13 @@ using solver_for =
 
 template <class Config>
 solver_for<Config> make_solver(problem_for<Config> p, const run_options& options) {
-  const model_factory factory = [](particle_set<2> particles, background_mesh mesh, double max_condition) {
+  const model_factory factory = [](particle_set<2> particles, background_mesh mesh, double max_condition,
+                                   const quadrature_points* carried) {
     return build_model_of_bodies<typename Config::kernel_type, typename Config::correction_type,
                                  typename Config::quadrature_type, typename Config::geometry_type>(
-        std::move(particles), std::move(mesh), max_condition);
+        std::move(particles), std::move(mesh), max_condition, carried);
   };
-  discrete_model model = factory(std::move(p.particles), std::move(p.mesh), options.max_moment_condition);
+  discrete_model model = factory(std::move(p.particles), std::move(p.mesh), options.max_moment_condition, nullptr);
   return solver_for<Config>(std::move(model), std::move(p), options, factory);
 }
 

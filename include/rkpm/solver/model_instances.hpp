@@ -36,7 +36,8 @@
 #ifdef RKPM_MODEL_EXTERN
 // One rule in geometry G, every kernel and correction.
 #define RKPM_MODEL_INSTANCE(K, C, Q, G) \
-  RKPM_MODEL_EXTERN template discrete_model detail::build_one_model<K, C, Q, G>(particle_set<2>, background_mesh, double);
+  RKPM_MODEL_EXTERN template discrete_model detail::build_one_model<K, C, Q, G>(particle_set<2>, background_mesh, double, \
+                                                                                const quadrature_points*);
 #define RKPM_MODEL_INSTANCES_OF_RULE(Q, G)                                                 \
   RKPM_MODEL_INSTANCE(kernel::cubic_spline, correction::linear, Q, G)                  \
   RKPM_MODEL_INSTANCE(kernel::cubic_spline, correction::quadratic, Q, G)               \

@@ -15,7 +15,7 @@
 // an error naming the first such point, its position and the step.
 // After a re-reference (rereference()) the gradients are those of the current reference: the
 // material gets F = F_rel F_r and the force terms F_rel with tau / det F_r (docs/method.md
-// (79)-(80), solver/point_reference.hpp); points are then updated one by one.
+// (79)-(80), solver/point_reference.hpp), in the batched path as in the one-point one.
 
 #include <algorithm>
 #include <array>
@@ -117,7 +117,7 @@ class point_materials {
     if constexpr (batched) {
       assemble_point_batches<G, simd_lanes>(
           m, d, f_int, [&](index_t t, index_t q0, int n, const point_gradient* g, mat2* S, double* hoop) {
-            if (n < simd_lanes || reference_.active() || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
+            if (n < simd_lanes || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
               for (int k = 0; k < n; ++k) point(t, q0 + k, g[k], S[k], hoop[k]);
           });
     } else {
@@ -264,14 +264,18 @@ class point_materials {
   // then updates the points one by one, which reports the first failure as always.
   bool batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t, index_t q0,
                     const point_gradient* g, mat2* S, double* hoop, step_context where, double log_dt) {
+    // F relative to the current reference, and the total F the material takes (79).
     std::array<mat3, simd_lanes> F;
+    std::array<block_matrix, simd_lanes> total;
+    const bool rereferenced = reference_.active();
     for (int k = 0; k < simd_lanes; ++k) {
       F[k] = deformation_gradient_at(m, q0 + k, g[k]);
-      const double J = block_matrix::of(F[k]).determinant();
+      total[k] = rereferenced ? reference_.total(q0 + k, block_matrix::of(F[k])) : block_matrix::of(F[k]);
+      const double J = total[k].determinant();
       if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
     }
     if (!updates_in_lanes(material.at_point(q0))) return false;
-    const block_lanes F_lanes = gather_block([&](int k) { return block_matrix::of(F[k]); });
+    const block_lanes F_lanes = gather_block([&](int k) { return total[k]; });
     block_lanes tau;
     try {
       tau = kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
@@ -282,9 +286,23 @@ class point_materials {
     // point_force of the lanes (solver/point_force_terms.hpp), the tile's sums in point order.
     const simd_double weight = gather_lanes([&](int k) { return m.points.weight[q0 + k]; });
     const simd_double radius = gather_lanes([&](int k) { return m.points.position[q0 + k][0]; });
+    tile_summary& tile = tile_[t];
+    if (rereferenced) {  // (80): F_rel with tau / det F_r, as point_force_rereferenced
+      const simd_double volume_change = gather_lanes([&](int k) { return reference_.volume_change(q0 + k); });
+      const block_lanes tau_r{tau.xx / volume_change, tau.xy / volume_change, tau.yx / volume_change,
+                              tau.yy / volume_change, tau.zz / volume_change};
+      const block_lanes F_rel = gather_block([&](int k) { return block_matrix::of(F[k]); });
+      const simd_double stretch =
+          support_stretch(point_forces_in_lanes<G>(F_rel, tau_r, weight, radius, S, hoop), support_inverse_);
+      for (int k = 0; k < simd_lanes; ++k) {
+        tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
+        tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k] *
+                        reference_.initial_volume_per_weight(q0 + k);
+      }
+      return true;
+    }
     const simd_double stretch =
         support_stretch(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
-    tile_summary& tile = tile_[t];
     for (int k = 0; k < simd_lanes; ++k) {
       tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
       tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k];

@@ -52,26 +52,29 @@ inline mat2 left_stretch(const mat2& F) {
 // rotation: the box that holds the support stretched by V_I, a'_k = sum_j |V_kj| a_j (82), so
 // that a particle keeps the neighbours it had, and a spinning body keeps its supports. (A body
 // turned by a large angle keeps axis-aligned supports: an anisotropic support does not turn
-// with it.) Volumes: a quarter of each deformed cell at each of its corners.
+// with it.) Volumes: a quarter of each deformed cell at each of its corners (of its area's
+// magnitude when the cells may be tangled: `tangled`, the points carried, not made on them).
 inline std::pair<particle_set<2>, background_mesh> deformed_particles(const particle_set<2>& particles,
                                                                       const background_mesh& mesh,
                                                                       const std::vector<vec2>& x,
-                                                                      const std::vector<mat2>& F) {
+                                                                      const std::vector<mat2>& F, bool tangled) {
   particle_set<2> next;
   next.position = x;
   next.support.resize(particles.size());
   for (index_t I = 0; I < particles.size(); ++I)
     next.support[I] = left_stretch(F[I]).cwiseAbs() * particles.support[I];
-  background_mesh cells{x, mesh.cell};
+  background_mesh cells{x, mesh.cell, tangled};
   next.volume.assign(particles.size(), 0.0);
   for (index_t c = 0; c < cells.cells(); ++c) {
-    const double area = cells.cell_area(c);
-    if (!(area > 0.0))
+    const double area = tangled ? std::abs(cells.cell_area(c)) : cells.cell_area(c);
+    if (!tangled && !(area > 0.0))
       fail("re-referencing: cell {} has area {:.3g} in the current configuration (a cell turned inside out); "
            "re-reference earlier (a smaller max_stretch) or refine the particles",
            c, area);
     for (const stored_index n : cells.cell[c]) next.volume[n] += 0.25 * area;
   }
+  for (index_t I = 0; I < particles.size(); ++I)
+    if (!(next.volume[I] > 0.0)) next.volume[I] = particles.volume[I];  // cells around it all flat
   return {std::move(next), std::move(cells)};
 }
 

@@ -3,12 +3,13 @@
 // (docs/method.md section 5.8), between two steps:
 //   1. the particles' current positions x_I become their reference; the cells are the deformed
 //      cells (their corners are the particles), the supports follow the stretch (82), and the
-//      model's builder (model_builder()) builds the tables, weights, VCI gradients and surfaces;
-//   2. each quadrature point keeps its material state: point q of the new model is point q of the
-//      old one (the same rule point of the same cell), and F_r takes its total F (79), so the
-//      material goes on from the same F. The new point lies where the deformed cell's map puts
-//      the rule point, the old one where the RK displacement put it: they differ by O(h^2 |grad
-//      grad u|) (the bilinear cell against the smooth map);
+//      model's builder (model_builder()) builds the tables, VCI gradients and surfaces;
+//   2. the quadrature points are the material points themselves, carried: point q at its current
+//      position x_q, with its weight times det F_rel (the volume it stands for now), so the
+//      deformed cells need not stay convex, nor even the right way round, where the material is
+//      squeezed flat against a tool; each keeps its material state, and F_r takes its total F
+//      (79), so the material goes on from the same F. (A nodal rule's points are made again on
+//      the deformed cells, its smoothing cells: they must stay the right way round.)
 //   3. the coefficients: d = 0 (the displacement since the new reference); the velocity
 //      coefficients stay (83): the masses and v, so the linear momentum and the kinetic energy,
 //      are kept exactly, and a linear velocity field (a rigid motion among them) is the same
@@ -36,7 +37,10 @@ bool explicit_solver<G, M, Ct>::rereference_due() const {
   const rereference_policy& when = options_.rereference;
   if (!when.enabled()) return false;
   if (when.every_steps > 0 && timeline_.steps - last_rereference_step_ >= when.every_steps) return true;
-  return when.max_stretch > 0.0 && points_.max_distortion(model_) > when.max_stretch;
+  // The distortion (81) every time_step_update_interval steps, with the stable step's update: a
+  // pass over the points each step would cost a tenth of the step.
+  return when.max_stretch > 0.0 && timeline_.steps % options_.time_step_update_interval == 0 &&
+         points_.max_distortion(model_) > when.max_stretch;
 }
 
 template <Geometry G, Material M, Contact Ct>
@@ -57,8 +61,22 @@ void explicit_solver<G, M, Ct>::rereference() {
   const std::vector<vec2> x = positions_at_particles(model_, d_);
   const std::vector<mat2> stretch = project_to_particles<mat2>(
       [&](index_t q) { return mat2(points_.relative_deformation_gradient(q).template topLeftCorner<2, 2>()); });
-  auto [particles, cells] = deformed_particles(model_.particles, model_.mesh, x, stretch);
-  discrete_model next = with_bodies<G>(factory_(std::move(particles), std::move(cells), options_.max_moment_condition));
+  auto [particles, cells] = deformed_particles(model_.particles, model_.mesh, x, stretch, !model_.nodal);
+  // The points: each the same material point at its current position, its weight times J_rel
+  // (the volume it stands for now), so that nothing is interpolated; a nodal rule's are made
+  // again on the deformed cells.
+  quadrature_points carried;
+  if (!model_.nodal) {
+    carried.position.resize(model_.point_count());
+    carried.weight.resize(model_.point_count());
+    carried.cell = model_.points.cell;
+    for (index_t q = 0; q < model_.point_count(); ++q) {
+      carried.position[q] = model_.points.position[q] + model_.at_points.interpolate(q, d_);
+      carried.weight[q] = model_.points.weight[q] * points_.relative_deformation_gradient(q).determinant();
+    }
+  }
+  discrete_model next = with_bodies<G>(factory_(std::move(particles), std::move(cells), options_.max_moment_condition,
+                                                model_.nodal ? nullptr : &carried));
 
   // 2. The points: the same material points, F_r their total F.
   points_.rereference(model_, next);
@@ -106,14 +124,28 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
     a.array("reference.support", particles.support);
     a.array("reference.volume", particles.volume);
     cells.node = particles.position;
+    cells.tangled = !s.model_.nodal;
+    quadrature_points carried;  // the carried points (none for a nodal rule)
+    if (!s.model_.nodal) {
+      carried.position.resize(s.model_.point_count());
+      carried.weight.resize(s.model_.point_count());
+      carried.cell = s.model_.points.cell;
+    }
+    a.array("reference.point_position", carried.position);
+    a.array("reference.point_weight", carried.weight);
     if (!s.factory_) fail("reading a re-referenced checkpoint needs the solver's model builder: build it with make_solver");
-    s.model_ = with_bodies<G>(s.factory_(std::move(particles), std::move(cells), s.options_.max_moment_condition));
+    s.model_ = with_bodies<G>(s.factory_(std::move(particles), std::move(cells), s.options_.max_moment_condition,
+                                         s.model_.nodal ? nullptr : &carried));
     s.points_.bind(s.model_);
     s.derive_from_model(s.constraints_.constraints());
   } else if (count > 0) {
     a.array("reference.position", s.model_.particles.position);
     a.array("reference.support", s.model_.particles.support);
     a.array("reference.volume", s.model_.particles.volume);
+    static const std::vector<vec2> no_positions;
+    static const std::vector<double> no_weights;
+    a.array("reference.point_position", s.model_.nodal ? no_positions : s.model_.points.position);
+    a.array("reference.point_weight", s.model_.nodal ? no_weights : s.model_.points.weight);
   }
 }
 
