@@ -86,12 +86,7 @@ class particle_to_segment {
   // every enforce().
   void setup(const contact_body& body, const contact_slaves& slaves) {
     tool_slaves_.setup(body, slaves);
-    bodies_.setup(body, tool_slaves_.slaves());
-    if (tool_vertex_slaves_) {
-      std::size_t vertices = 0;
-      for (const rigid_tool& tool : tools()) vertices += tool.reference_vertices().size();
-      tool_vertices_.setup(body, vertices);
-    }
+    setup_surfaces(body);
     ready_ = true;
   }
 
@@ -99,12 +94,7 @@ class particle_to_segment {
   // the tools' pass keeps what the last step left, the others are set up on the new surfaces.
   void rebind(const contact_body& body, const contact_slaves& slaves) {
     tool_slaves_.rebind(body, slaves);
-    bodies_.setup(body, tool_slaves_.slaves());
-    if (tool_vertex_slaves_) {
-      std::size_t vertices = 0;
-      for (const rigid_tool& tool : tools()) vertices += tool.reference_vertices().size();
-      tool_vertices_.setup(body, vertices);
-    }
+    setup_surfaces(body);
   }
 
   contact_result enforce(const contact_body& body, double t, double dt, std::vector<vec2>& d, std::vector<vec2>& v) {
@@ -123,6 +113,16 @@ class particle_to_segment {
   }
 
  private:
+  // The passes that start afresh every step: bodies against bodies, tool vertices against the body.
+  void setup_surfaces(const contact_body& body) {
+    bodies_.setup(body, tool_slaves_.slaves());
+    if (tool_vertex_slaves_) {
+      std::size_t vertices = 0;
+      for (const rigid_tool& tool : tools()) vertices += tool.reference_vertices().size();
+      tool_vertices_.setup(body, vertices);
+    }
+  }
+
   tool_slave_contact tool_slaves_;
   body_contact bodies_;
   bool tool_vertex_slaves_ = false;
