@@ -60,6 +60,21 @@ struct outcome {
   index_t particles = 0, points = 0;
 };
 
+// The case's measures (cases/taylor_bar.hpp) by their names.
+struct measured {
+  double radius_mm = 0.0, height_mm = 0.0, eps_p = 0.0;
+};
+template <class Solver>
+measured measures(const Solver& s, const taylor_bar::parameters& params) {
+  measured out;
+  for (const auto& [name, value] : taylor_bar::measure(s, params, {})) {
+    if (name == "radius_mm") out.radius_mm = value;
+    if (name == "height_mm") out.height_mm = value;
+    if (name == "max_equivalent_plastic_strain") out.eps_p = value;
+  }
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------
 // One run
 // ---------------------------------------------------------------------------------------
@@ -81,12 +96,12 @@ outcome run(const taylor_bar::parameters& params, const fs::path& dir) {
                          {"time_us", "radius_mm", "height_mm", "max_eps_p", "kinetic_J", "balance_error"});
   double next_report = 0.0;
   auto observe = [&](const auto& s) {
-    const auto m = taylor_bar::measure(s, params, {});
-    history.row({s.time() * 1e6, m[0].second, m[1].second, m[2].second, s.energy().kinetic,
+    const auto m = measures(s, params);
+    history.row({s.time() * 1e6, m.radius_mm, m.height_mm, m.eps_p, s.energy().kinetic,
                  s.energy().balance_error()});
     if (s.time() >= next_report) {
       fmt::print("  {:>5.1f} us  step {:>6}  radius {:.3f} mm  height {:.3f} mm\n", s.time() * 1e6, s.steps(),
-                 m[0].second, m[1].second);
+                 m.radius_mm, m.height_mm);
       std::fflush(stdout);
       next_report += 0.1 * options.end_time;
     }
@@ -100,8 +115,8 @@ outcome run(const taylor_bar::parameters& params, const fs::path& dir) {
   io::csv_writer shape(dir / fmt::format("shape_{}.csv", rule), {"r0_mm", "z0_mm", "r_mm", "z_mm"});
   for (std::size_t I = 0; I < x.size(); ++I) shape.row({X[I][0] * 1e3, X[I][1] * 1e3, x[I][0] * 1e3, x[I][1] * 1e3});
 
-  const auto m = taylor_bar::measure(solver, params, {});
-  return {m[0].second,           m[1].second, m[2].second, solver.energy().balance_error(), seconds,
+  const measured m = measures(solver, params);
+  return {m.radius_mm,           m.height_mm, m.eps_p, solver.energy().balance_error(), seconds,
           static_cast<long>(solver.steps()), solver.model().particle_count(), solver.model().point_count()};
 }
 
