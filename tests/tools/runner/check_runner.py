@@ -432,11 +432,25 @@ def view(script, out):
     print(f"ok  view: {len(cases)} pictures of {out}")
 
 
+# Rules whose points are not symmetric under z -> -z (the diagonal Gauss pair, the triangles on
+# one diagonal): the two rods, mirror images, are integrated by different rules.
+DIAGONAL_RULES = ("q2", "q2+vci", "q2_tri")
+DENSITY = 8930.0
+
+
 def rod_on_rod(rkpm_run, work):
     """Two rods head on, small and short, with each --enforcement (and its older name --contact),
-    --quadrature, --kernel and --correction:
-    the run ends, both rods shorten by the same amount within a spacing (symmetry), their faces spread,
-    total axial momentum is kept to round-off and no slave goes deeper than a tenth of a spacing."""
+    --quadrature, --kernel and --correction. Measured from the snapshots (rod_measures), not from
+    summary.json: the run ends; both rods shorten, by the same amount within 3% of the shortening
+    with a rule symmetric under z -> -z (measured: within 0.3%), within 30% with a diagonal rule
+    (measured: up to 23%, quartic kernel; the rods' rules are mirror images); their faces spread;
+    the total axial momentum, zero at the start, stays within 4% of one rod's m |v0| at every
+    snapshot (zero to round-off with the solver's masses, which its rule integrates; the 4% is
+    this estimate's own error, bilinear on the quads against the rule's masses: measured up to
+    1.7% with q2 rules, 1e-4 with q4, q4+vci, q2_split and scni, against the 10% of m |v0| each
+    rod has given the other by the end); each rod loses at least 5% of its momentum (the contact
+    acted); and no face particle goes deeper than a tenth of a spacing into the other rod's face
+    at any snapshot."""
     small = ["--set", "radial_particles=5", "--set", "axial_particles=11", "--end-time", "4e-6", "--no-plots",
              "--quiet", "--threads", "1"]
     spacing_mm = 32.4 / 10
@@ -456,15 +470,115 @@ def rod_on_rod(rkpm_run, work):
         summary = json.load(open(os.path.join(out, "summary.json")))
         if v[0] in ("--enforcement", "--contact"):
             check(summary["contact"] == v[1], f"rod_on_rod {v}: ran with the {summary['contact']} enforcement")
-        res = summary["results"]
-        lower, upper = res["lower_final_height_mm"], res["upper_final_height_mm"]
-        check(lower < 32.4 and upper < 32.4, f"rod_on_rod {v}: the rods did not shorten ({lower}, {upper})")
-        check(abs(lower - upper) < spacing_mm, f"rod_on_rod {v}: heights {lower} and {upper} differ by a spacing")
-        check(res["lower_final_radius_mm"] > 3.2 and res["upper_final_radius_mm"] > 3.2,
-              f"rod_on_rod {v}: the impact faces did not spread: {res}")
-        check(res["momentum_error"] < 1e-12, f"rod_on_rod {v}: momentum error {res['momentum_error']}")
-        check(res["max_penetration_mm"] < 0.1 * spacing_mm, f"rod_on_rod {v}: penetration {res['max_penetration_mm']}")
+        check_rods(f"rod_on_rod {v}", out, summary, spacing_mm)
     print(f"ok  rod_on_rod: {len(variants)} variants")
+
+
+def check_rods(label, out, summary, spacing_mm):
+    import numpy as np
+
+    before = len(failures)
+    heights, momenta, depth = rod_measures(out)
+    res = summary["results"]
+    lower, upper = heights[0] * 1e3, heights[1] * 1e3
+    check(abs(lower - res["lower_final_height_mm"]) < 1e-9 and abs(upper - res["upper_final_height_mm"]) < 1e-9,
+          f"{label}: the last snapshot gives heights {lower}, {upper} mm; summary.json {res}")
+    shortening = (32.4 - lower, 32.4 - upper)
+    check(min(shortening) > 0, f"{label}: the rods did not shorten ({lower}, {upper})")
+    mean = 0.5 * sum(shortening)
+    asymmetry = abs(shortening[0] - shortening[1]) / mean
+    limit = 0.30 if summary["quadrature"] in DIAGONAL_RULES else 0.03
+    check(asymmetry < limit, f"{label}: the rods shorten by {shortening[0]:.4f} and {shortening[1]:.4f} mm, "
+          f"{100 * asymmetry:.2f}% apart (at most {100 * limit:.0f}% with the {summary['quadrature']} rule)")
+    check(res["lower_final_radius_mm"] > 3.2 and res["upper_final_radius_mm"] > 3.2,
+          f"{label}: the impact faces did not spread: {res}")
+    rod = DENSITY * math.pi * (3.2e-3) ** 2 * 32.4e-3 * 227.0  # one rod's m |v0|
+    net = float(np.max(np.abs(momenta.sum(axis=1)))) / rod
+    check(abs(momenta[0, 0] - rod) < 1e-9 * rod and abs(momenta[0, 1] + rod) < 1e-9 * rod,
+          f"{label}: momenta at t = 0 {momenta[0]}, expected +-{rod}")
+    check(net < 0.04, f"{label}: total axial momentum up to {net:.2e} of m |v0| (the rods' at the end "
+          f"{momenta[-1] / rod} m |v0|)")
+    check(momenta[-1, 0] < 0.95 * rod and momenta[-1, 1] > -0.95 * rod,
+          f"{label}: the rods kept their momenta {momenta[-1] / rod} m |v0|: no contact force")
+    check(depth < 0.1 * spacing_mm * 1e-3, f"{label}: a face particle {depth * 1e3:.4f} mm inside the other rod")
+    print(f"{'ok ' if len(failures) == before else '-- '} {label}: shortening {shortening[0]:.4f}, "
+          f"{shortening[1]:.4f} mm ({100 * asymmetry:.2f}% apart), momentum {net:.1e} m|v0|, rods at "
+          f"{momenta[-1, 0] / rod:.3f}, {momenta[-1, 1] / rod:.3f}, deepest {depth * 1e3:.4f} mm")
+
+
+def axial_momentum(mesh, density, part):
+    """The axial momentum integral rho0 v_z 2 pi r dA0 of an axisymmetric snapshot read by meshio,
+    over its quads in the reference section (points - displacement), the particle velocities
+    interpolated bilinearly, 2 x 2 Gauss points: [of the quads where part is true, of the others]."""
+    import numpy as np
+
+    X = mesh.points[:, :2] - mesh.point_data["displacement"][:, :2]
+    vz = mesh.point_data["velocity"][:, 1]
+    quads = mesh.cells[0].data
+    corners = [(-1, -1), (1, -1), (1, 1), (-1, 1)]
+    p = np.zeros(2)
+    for a in (-1 / math.sqrt(3.0), 1 / math.sqrt(3.0)):
+        for b in (-1 / math.sqrt(3.0), 1 / math.sqrt(3.0)):
+            N = np.array([(1 + s * a) * (1 + t * b) / 4 for s, t in corners])
+            dNa = np.array([s * (1 + t * b) / 4 for s, t in corners])
+            dNb = np.array([t * (1 + s * a) / 4 for s, t in corners])
+            Xq = X[quads]
+            ja, jb = np.einsum("k,ckd->cd", dNa, Xq), np.einsum("k,ckd->cd", dNb, Xq)
+            w = density * 2 * math.pi * (Xq[..., 0] @ N) * (ja[:, 0] * jb[:, 1] - ja[:, 1] * jb[:, 0])
+            pz = w * (vz[quads] @ N)
+            p += [pz[part].sum(), pz[~part].sum()]
+    return p
+
+
+def rod_measures(out):
+    """What the rod_on_rod run in OUT wrote, measured here from its VTU snapshots (meshio) and
+    nothing else: each rod's height (extent in z) at the end; each rod's axial momentum
+    (axial_momentum) at every snapshot; and the deepest penetration at any snapshot
+    of a particle of one rod's face (z = 0 in the reference) through the other rod's face,
+    the polyline through that face's particles."""
+    import numpy as np
+    import meshio
+
+    sets = ElementTree.parse(os.path.join(out, "rod_on_rod.pvd")).getroot().findall("./Collection/DataSet")
+    lower = None
+    momenta, depth = [], 0.0
+    for d in sets:
+        m = meshio.read(os.path.join(out, d.get("file")))
+        x = m.points[:, :2]
+        X = x - m.point_data["displacement"][:, :2]
+        quads = m.cells[0].data
+        if lower is None:
+            # The rods are the two connected sets of quads: the first quad's rod, grown through
+            # shared corners, and the rest; the lower one holds the lowest particle.
+            body = np.full(len(x), -1)
+            body[quads[0]] = 0
+            changed = True
+            while changed:
+                tagged = np.any(body[quads] == 0, axis=1)
+                changed = bool(np.any(body[quads[tagged]] != 0))
+                body[quads[tagged]] = 0
+            lower = body == 0
+            if not lower[np.argmin(X[:, 1])]:
+                lower = ~lower
+            quad_lower = lower[quads[:, 0]]
+        p = axial_momentum(m, DENSITY, quad_lower)
+        momenta.append(p)
+        # Faces: the particles at z = 0 of each rod, ordered along r.
+        faces = []
+        for rod in (lower, ~lower):
+            on = np.flatnonzero(rod & (np.abs(X[:, 1]) < 1e-12))
+            on = on[np.argsort(X[on, 0])]
+            faces.append(x[on])
+        lo, up = faces
+        # Upper face particles below the lower face, lower face particles above the upper face.
+        for pts, face, sign in ((up, lo, 1.0), (lo, up, -1.0)):
+            inside = (pts[:, 0] >= face[0, 0]) & (pts[:, 0] <= face[-1, 0])
+            if np.any(inside):
+                z = np.interp(pts[inside, 0], face[:, 0], face[:, 1])
+                depth = max(depth, float(np.max(sign * (z - pts[inside, 1]))))
+        last_x = x
+    heights = [float(np.ptp(last_x[lower, 1])), float(np.ptp(last_x[~lower, 1]))]
+    return heights, np.array(momenta), depth
 
 
 def main(argv):
