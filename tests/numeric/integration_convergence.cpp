@@ -219,12 +219,23 @@ TEST_CASE("issue 10's claim: q2+vci at least as accurate as q4 at every resoluti
   for (std::size_t k = 0; k < bar_n.size(); ++k) CHECK(m.bar.at("q2+vci")[k] <= m.bar.at("q4")[k]);
 }
 
-// scni (docs/method.md section 3.6): its errors and rates beside the table above, measured and
-// printed only; no claim is made of them here.
-TEST_CASE("scni: expansion and bar errors and rates (measurement)") {
+// scni (docs/method.md section 3.6) beside the rules above, held to what they are: first order in
+// the expansion, whose error the collocated conditions set (measured 0.00596, 0.00286, 0.00187;
+// rates 1.06, 1.04), and second order in the bar's period, the lumped mass's (measured 0.0173,
+// 0.00413, 0.00102, 0.000262; rates 2.07, 2.02, 1.95), there 11% to 15% above q4 (the others are
+// within 10%). Its own second order in the static problems is in numeric/integration_statics.cpp.
+TEST_CASE("scni: first order in the expansion, second in the bar's period, within 25% of q4 there") {
   test::run_serially();
-  expansion_errors<quadrature::scni<>>();
-  bar_errors<quadrature::scni<>>();
+  const auto expansion = expansion_errors<quadrature::scni<>>();
+  const auto bar = bar_errors<quadrature::scni<>>();
+  CHECK(rate(expansion, expansion_n, 2) > 0.8);
+  CHECK(rate(expansion, expansion_n, 2) < 1.3);
+  CHECK(rate(bar, bar_n, 3) > 1.8);
+  const auto& q4 = measured().bar.at("q4");
+  for (std::size_t k = 0; k < bar_n.size(); ++k) {
+    CAPTURE(bar_n[k]);
+    CHECK(std::abs(bar[k] / q4[k] - 1.0) < 0.25);
+  }
 }
 
 }  // namespace test_numeric_integration_convergence
