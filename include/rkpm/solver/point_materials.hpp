@@ -34,18 +34,11 @@
 #include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/point_force_terms.hpp>
+#include <rkpm/solver/point_failures.hpp>
 #include <rkpm/solver/point_forces.hpp>
 #include <rkpm/solver/point_reference.hpp>
 
 namespace rkpm {
-
-// The step a force evaluation belongs to: where an error happened, for its message, and what
-// the material update is told of the step (material_step, concepts/material.hpp).
-struct step_context {
-  index_t step = 0;
-  double time = 0.0;  // s, at the end of the step
-  double dt = 0.0;    // s, 0 for the evaluation at the start
-};
 
 template <Geometry G, Material M>
 class point_materials {
@@ -83,56 +76,7 @@ class point_materials {
   // f_int at coefficients d; advances the material states to the new F. A material with a
   // batched update (material/j2_batch.hpp) takes simd_lanes points at a time, with the same bits.
   void internal_force(const discrete_model& m, const materials_by_body<M>& material, const std::vector<vec2>& d,
-                      std::vector<vec2>& f_int, step_context where) {
-    const point_traversal& tr = m.traversal;
-    tile_.assign(tr.tiles(), tile_summary{});
-    const double log_dt = where.dt > 0.0 ? std::log(where.dt) : std::numeric_limits<double>::quiet_NaN();
-    const auto point = [&](index_t t, index_t q, const point_gradient& g, mat2& S, double& hoop) {
-      tile_summary& tile = tile_[t];  // its points are visited in order by one thread
-      const mat3 F_rel = deformation_gradient_at(m, q, g);
-      const mat3 F = reference_.active() ? reference_.total(q, block_matrix::of(F_rel)).full() : F_rel;
-      const double J = block_matrix::of(F).determinant();  // F.determinant()'s value, fewer flops
-      if (!(J > 0.0) || !std::isfinite(J)) {
-        tile.fail(q, failure::inverted, J);
-        return;
-      }
-      if constexpr (!state_records_F) F_[q] = block_matrix::of(F);
-      mat3 tau;
-      try {
-        tau = material_update(material.at_point(q), F, state_[q],
-                              material_step{where.dt, where.time, state_temperature(state_[q]), log_dt});
-      } catch (const std::exception& ex) {
-        tile.fail(q, failure::material, J);
-#pragma omp critical(rkpm_material_error)
-        if (error_.empty() || q < error_point_) {
-          error_ = ex.what();
-          error_point_ = q;
-        }
-        return;
-      }
-      if constexpr (!stress_recomputed) tau_[q] = block_matrix::of(tau);
-      if (reference_.active()) point_force_rereferenced(m, tile, q, F_rel, tau, S, hoop);
-      else point_force(m, tile, q, F, tau, S, hoop);
-    };
-    if constexpr (batched) {
-      assemble_point_batches<G, simd_lanes>(
-          m, d, f_int, [&](index_t t, index_t q0, int n, const point_gradient* g, mat2* S, double* hoop) {
-            if (n < simd_lanes || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
-              for (int k = 0; k < n; ++k) point(t, q0 + k, g[k], S[k], hoop[k]);
-          });
-    } else {
-      assemble_point_forces<G>(m, d, f_int, point);
-    }
-    // The tiles in order: the same sums and the same first failure whatever the thread count.
-    double narrowest = std::numeric_limits<double>::infinity(), plastic = 0.0;
-    for (const tile_summary& tile : tile_) {
-      if (tile.failed != failure::none) report_failure(m, tile, where);
-      narrowest = std::min(narrowest, tile.narrowest);
-      plastic += tile.plastic;
-    }
-    min_stretch_ = narrowest;
-    plastic_work_ = plastic;
-  }
+                      std::vector<vec2>& f_int, step_context where);
 
   // On one rank of several (discrete_model::is_part): the plastic work and the smallest stretch
   // over every rank's points. internal_force() leaves this rank's; this combines them, the
@@ -174,15 +118,8 @@ class point_materials {
   // the kernels since the last reference, docs/method.md (81)), in point order.
   double max_distortion(const discrete_model& m) const {
     double largest = 1.0;
-    for (index_t q = 0; q < m.point_count(); ++q) {
-      const mat2 C = [&] {
-        const mat2 F = relative_deformation_gradient(q).template topLeftCorner<2, 2>();
-        return mat2(F.transpose() * F);
-      }();
-      const double mean = 0.5 * C.trace(), radius = std::sqrt(std::max(0.0, mean * mean - C.determinant()));
-      const double most = std::sqrt(mean + radius), least = std::sqrt(std::max(mean - radius, 0.0));
-      largest = std::max({largest, most, least > 0.0 ? 1.0 / least : std::numeric_limits<double>::infinity()});
-    }
+    for (index_t q = 0; q < m.point_count(); ++q)
+      largest = std::max(largest, distortion(relative_deformation_gradient(q).template topLeftCorner<2, 2>()));
     return largest;
   }
   const point_reference& reference() const { return reference_; }
@@ -214,21 +151,8 @@ class point_materials {
   void load(io::checkpoint_reader& r) { sections(r, *this); }
 
  private:
-  enum class failure : char { none, inverted, material };
-  // What a tile's points left in the last evaluation.
-  struct tile_summary {
-    double narrowest = std::numeric_limits<double>::infinity();
-    double plastic = 0.0;
-    failure failed = failure::none;
-    index_t point = -1;  // the first failed point of the tile
-    double det = 0.0;    // its det F
-    void fail(index_t q, failure why, double J) {
-      if (failed != failure::none) return;
-      failed = why;
-      point = q;
-      det = J;
-    }
-  };
+  using failure = point_failure;
+  using tile_summary = point_tile_summary;
 
   // F_q = I + H_q in-plane, F33 from the geometry.
   static mat3 deformation_gradient_at(const discrete_model& m, index_t q, const point_gradient& g) {
@@ -263,52 +187,7 @@ class point_materials {
   // by one (updates_in_lanes), or a return that failed; the caller
   // then updates the points one by one, which reports the first failure as always.
   bool batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t, index_t q0,
-                    const point_gradient* g, mat2* S, double* hoop, step_context where, double log_dt) {
-    // F relative to the current reference, and the total F the material takes (79).
-    std::array<mat3, simd_lanes> F;
-    std::array<block_matrix, simd_lanes> total;
-    const bool rereferenced = reference_.active();
-    for (int k = 0; k < simd_lanes; ++k) {
-      F[k] = deformation_gradient_at(m, q0 + k, g[k]);
-      total[k] = rereferenced ? reference_.total(q0 + k, block_matrix::of(F[k])) : block_matrix::of(F[k]);
-      const double J = total[k].determinant();
-      if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
-    }
-    if (!updates_in_lanes(material.at_point(q0))) return false;
-    const block_lanes F_lanes = gather_block([&](int k) { return total[k]; });
-    block_lanes tau;
-    try {
-      tau = kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
-                                             material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
-    } catch (const std::exception&) {
-      return false;
-    }
-    // point_force of the lanes (solver/point_force_terms.hpp), the tile's sums in point order.
-    const simd_double weight = gather_lanes([&](int k) { return m.points.weight[q0 + k]; });
-    const simd_double radius = gather_lanes([&](int k) { return m.points.position[q0 + k][0]; });
-    tile_summary& tile = tile_[t];
-    if (rereferenced) {  // (80): F_rel with tau / det F_r, as point_force_rereferenced
-      const simd_double volume_change = gather_lanes([&](int k) { return reference_.volume_change(q0 + k); });
-      const block_lanes tau_r{tau.xx / volume_change, tau.xy / volume_change, tau.yx / volume_change,
-                              tau.yy / volume_change, tau.zz / volume_change};
-      const block_lanes F_rel = gather_block([&](int k) { return block_matrix::of(F[k]); });
-      const simd_double stretch =
-          support_stretch(point_forces_in_lanes<G>(F_rel, tau_r, weight, radius, S, hoop), support_inverse_);
-      for (int k = 0; k < simd_lanes; ++k) {
-        tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
-        tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k] *
-                        reference_.initial_volume_per_weight(q0 + k);
-      }
-      return true;
-    }
-    const simd_double stretch =
-        support_stretch(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
-    for (int k = 0; k < simd_lanes; ++k) {
-      tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
-      tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k];
-    }
-    return true;
-  }
+                    const point_gradient* g, mat2* S, double* hoop, step_context where, double log_dt);
 
   const block_matrix& deformation_block(index_t q) const {
     if constexpr (state_records_F) return state_[q].previous_deformation;
@@ -329,18 +208,9 @@ class point_materials {
   }
 
   [[noreturn]] void report_failure(const discrete_model& m, const tile_summary& tile, step_context where) {
-    const index_t q = tile.point;
-    const vec2& X = m.points.position[q];
-    if (tile.failed == failure::material) {
-      std::string message;
-      std::swap(message, error_);
-      fail("step {}, t = {:.6g} s: the material update failed at quadrature point {} (X = {:.6g}, {:.6g}): {}",
-           where.step, where.time, m.global_point(q), X[0], X[1], message);
-    }
-    fail("step {}, t = {:.6g} s: det F = {:.6g} at quadrature point {} (X = {:.6g}, {:.6g}): the body "
-         "has inverted or the solution has blown up; reduce the time step fraction, refine the "
-         "particles or check the boundary conditions. Output written so far is kept",
-         where.step, where.time, tile.det, m.global_point(q), X[0], X[1]);
+    std::string message;
+    std::swap(message, error_);
+    report_point_failure(m, tile, where, message);
   }
 
   std::vector<state_type> state_;
@@ -355,3 +225,6 @@ class point_materials {
 };
 
 }  // namespace rkpm
+
+// The force loop and its batched update, out of the class.
+#include <rkpm/solver/point_force_loop.hpp>

@@ -7,7 +7,10 @@
 //         unit initial volume (the plastic work) are summed with their initial weights.
 // Empty until the first re-reference: a Lagrangian run reads nothing of it and keeps its bits.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <rkpm/core/block_matrix.hpp>
@@ -15,6 +18,15 @@
 #include <rkpm/io/checkpoint.hpp>
 
 namespace rkpm {
+
+// The distortion of an in-plane F (81): its largest principal stretch or the inverse of its
+// smallest, from the eigenvalues of C = F^T F.
+inline double distortion(const mat2& F) {
+  const mat2 C = F.transpose() * F;
+  const double mean = 0.5 * C.trace(), radius = std::sqrt(std::max(0.0, mean * mean - C.determinant()));
+  const double most = std::sqrt(mean + radius), least = std::sqrt(std::max(mean - radius, 0.0));
+  return std::max(most, least > 0.0 ? 1.0 / least : std::numeric_limits<double>::infinity());
+}
 
 class point_reference {
  public:
