@@ -66,6 +66,27 @@ inline vec3 principal_log_strains(const vec3& squared_stretches) {
               0.5 * std::log(squared_stretches(2)));
 }
 
+// tau = K tr(eps_e) 1 + 2 mu dev(eps_e) in the principal frame of b_e (the Hencky law of every
+// elastic-plastic material here: J2, Johnson-Cook, Zerilli-Armstrong).
+RKPM_HOT_INLINE mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev, double bulk,
+                                   double mu) {
+  return frame.assemble(vec3::Constant(bulk * volumetric) + 2.0 * mu * dev);
+}
+
+// The logarithmic elastic strains of b_e: its principal frame, the volumetric strain and the
+// principal deviatoric strains (what a material's current_kirchhoff_stress recomputes tau from).
+struct hencky_strains {
+  principal_frame frame;
+  double volumetric;
+  vec3 dev;
+  static hencky_strains of(const mat3& b_e) {
+    const principal_frame frame = principal_frame::of(b_e);
+    const vec3 eps = principal_log_strains(frame.values);
+    const double volumetric = eps.sum();
+    return {frame, volumetric, eps - vec3::Constant(volumetric / 3.0)};
+  }
+};
+
 // The inverse of a block-structured F, written out so the zero blocks stay exactly zero.
 inline mat3 block_inverse(const mat3& F) {
   const double det2 = F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0);

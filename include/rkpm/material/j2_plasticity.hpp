@@ -140,7 +140,7 @@ class j2_plasticity {
       s.elastic_left_cauchy_green = t.b;
     }
     s.previous_deformation = block_matrix::of(F);
-    return hencky_stress(t.frame, t.volumetric, t.dev);
+    return hencky_stress(t.frame, t.volumetric, t.dev, bulk_, mu_);
   }
 
   // The stress the last kirchhoff_stress(F, s) returned, from the state it left: tau =
@@ -150,10 +150,8 @@ class j2_plasticity {
   // sum exp(2 eps_e_i) n_i n_i^T, which agrees to rounding.
   template <class State>
   mat3 current_kirchhoff_stress(const mat3& /*F*/, const State& s) const {
-    const principal_frame frame = principal_frame::of(s.elastic_left_cauchy_green.full());
-    const vec3 eps = principal_log_strains(frame.values);
-    const double volumetric = eps.sum();
-    return hencky_stress(frame, volumetric, eps - vec3::Constant(volumetric / 3.0));
+    const hencky_strains e = hencky_strains::of(s.elastic_left_cauchy_green.full());
+    return hencky_stress(e.frame, e.volumetric, e.dev, bulk_, mu_);
   }
 
   double density() const { return constants_.density; }
@@ -187,10 +185,6 @@ class j2_plasticity {
   }
 
  private:
-  // tau = K tr(eps_e) 1 + 2 mu dev(eps_e) in the principal frame of b_e.
-  mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev) const {
-    return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
-  }
 
   elastic_constants constants_;
   H hardening_;

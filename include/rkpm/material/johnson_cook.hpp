@@ -162,7 +162,7 @@ class johnson_cook {
     const double yield = s.flow_stress_at_rest;  // (24b) at eps_p and T, rate* <= 1
     if (!(t.q > yield)) {
       s.elastic_left_cauchy_green = t.b;
-      return hencky_stress(t.frame, t.volumetric, t.dev);
+      return hencky_stress(t.frame, t.volumetric, t.dev, bulk_, mu_);
     }
     const auto law = flow_.at_homologous_power(s.homologous_power, flow_constants_);  // at the step's temperature
     if (law.theta == 0.0) {  // molten: sigma_y = 0, the whole deviator returns
@@ -200,17 +200,15 @@ class johnson_cook {
         return failed_stress(t.volumetric);
       }
     }
-    return hencky_stress(t.frame, t.volumetric, t.dev);
+    return hencky_stress(t.frame, t.volumetric, t.dev, bulk_, mu_);
   }
 
   // The stress the last kirchhoff_stress(F, s) returned, from the state it left (as
   // j2_plasticity's, to rounding after a return; a failed point's from its volume alone).
   mat3 current_kirchhoff_stress(const mat3& /*F*/, const state_type& s) const {
-    const principal_frame frame = principal_frame::of(s.elastic_left_cauchy_green.full());
-    const vec3 eps = principal_log_strains(frame.values);
-    const double volumetric = eps.sum();
-    if (s.failed()) return failed_stress(volumetric);
-    return hencky_stress(frame, volumetric, eps - vec3::Constant(volumetric / 3.0));
+    const hencky_strains e = hencky_strains::of(s.elastic_left_cauchy_green.full());
+    if (s.failed()) return failed_stress(e.volumetric);
+    return hencky_stress(e.frame, e.volumetric, e.dev, bulk_, mu_);
   }
 
   double density() const { return constants_.density; }
@@ -223,9 +221,6 @@ class johnson_cook {
   double heat_per_work() const { return heat_per_work_; }
 
  private:
-  mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev) const {
-    return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
-  }
   // (32d): pressure in compression only.
   mat3 failed_stress(double volumetric) const {
     return volumetric < 0.0 ? mat3(mat3::Identity() * (bulk_ * volumetric)) : mat3(mat3::Zero());

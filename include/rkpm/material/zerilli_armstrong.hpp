@@ -110,7 +110,7 @@ class zerilli_armstrong {
     const double yield = flow_.flow_stress(eps_p, flow_point{0.0, T});  // rate* = 1
     if (!(t.q > yield)) {
       s.elastic_left_cauchy_green = t.b;
-      return hencky_stress(t.frame, t.volumetric, t.dev);
+      return hencky_stress(t.frame, t.volumetric, t.dev, bulk_, mu_);
     }
     const radial_return_result rr = radial_return(flow_, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
                                                   material_step{step.dt, step.time, T, step.log_dt});
@@ -121,17 +121,15 @@ class zerilli_armstrong {
     s.plastic_work += work;
     s.equivalent_plastic_strain = eps_p + dgamma;
     s.temperature = T + heat_per_work_ * work;  // (32e)
-    return hencky_stress(t.frame, t.volumetric, t.dev);
+    return hencky_stress(t.frame, t.volumetric, t.dev, bulk_, mu_);
   }
 
   // The stress the last kirchhoff_stress(F, s) returned, from the state it left (as
   // j2_plasticity's).
   template <class State>
   mat3 current_kirchhoff_stress(const mat3& /*F*/, const State& s) const {
-    const principal_frame frame = principal_frame::of(s.elastic_left_cauchy_green.full());
-    const vec3 eps = principal_log_strains(frame.values);
-    const double volumetric = eps.sum();
-    return hencky_stress(frame, volumetric, eps - vec3::Constant(volumetric / 3.0));
+    const hencky_strains e = hencky_strains::of(s.elastic_left_cauchy_green.full());
+    return hencky_stress(e.frame, e.volumetric, e.dev, bulk_, mu_);
   }
 
   double density() const { return constants_.density; }
@@ -143,9 +141,6 @@ class zerilli_armstrong {
   double heat_per_work() const { return heat_per_work_; }
 
  private:
-  mat3 hencky_stress(const principal_frame& frame, double volumetric, const vec3& dev) const {
-    return frame.assemble(vec3::Constant(bulk_ * volumetric) + 2.0 * mu_ * dev);
-  }
 
   elastic_constants constants_;
   flow_type flow_;

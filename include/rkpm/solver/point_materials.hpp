@@ -132,12 +132,9 @@ class point_materials {
       fail("re-referencing: the rebuilt model has {} quadrature points where the old one had {}; the cells "
            "and the rule must stay the same",
            next.point_count(), m.point_count());
-    const std::vector<block_matrix> total = [&] {
-      std::vector<block_matrix> F(m.point_count());
-      for (index_t q = 0; q < m.point_count(); ++q) F[q] = deformation_block(q);
-      return F;
-    }();
-    reference_.advance(m.point_count(), [&](index_t q) { return total[q]; }, m.points.weight, next.points.weight);
+    // The total F read from the states (or F_), not from reference_, which advance() rewrites.
+    reference_.advance(m.point_count(), [&](index_t q) { return deformation_block(q); }, m.points.weight,
+                       next.points.weight);
     bind(next);
   }
   // What the points read of their model besides the states: its tiles and mean support.
