@@ -33,3 +33,4 @@
 #include <rkpm/solver/checkpoint.hpp>
 #include <rkpm/solver/config.hpp>
 #include <rkpm/solver/make_solver.hpp>
+#include <rkpm/thermal/heat_conduction.hpp>

@@ -131,6 +131,24 @@ class constraint_projector {
     }
   }
 
+  // The same projection for a field of one component per particle (the temperature of
+  // thermal/heat_conduction.hpp, with the heat capacities as the weights M given at
+  // construction): x <- x - M^-1 Lambda^T (Lambda M^-1 Lambda^T)^-1 (Lambda x - target), so that
+  // the physical values Lambda x equal `target` (#rows, in the rows' order). The rows' directions
+  // must all be 0 (one system). No allocation.
+  void project_values(std::span<double> x, std::span<const double> target) {
+    const index_t n = size();
+    if (n == 0) return;
+    for (index_t r = 0; r < n; ++r) {
+      double lx = 0.0;
+      for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) lx += value_[e] * x[column_[e]];
+      rhs_[r] = lx - target[r];
+    }
+    work_ = llt_->solve(rhs_);
+    for (index_t r = 0; r < n; ++r)
+      for (index_t e = offset_[r]; e < offset_[r + 1]; ++e) x[column_[e]] -= value_over_mass_[e] * work_[r];
+  }
+
  private:
   std::vector<velocity_constraint> constraints_;
   std::vector<index_t> offset_, column_, touched_;

@@ -1,0 +1,421 @@
+#pragma once
+// heat_conduction<G>: transient heat conduction in the bodies of a discrete model, the library
+// side of issue 44 (docs/method.md section 5.9, (86)-(93)). The temperature is a field of RK
+// coefficients, T^h(x) = sum_I N_I(x) T_I; Galerkin on the model's quadrature points and shape
+// tables (the force loop's, weights with 2 pi R in axisymmetry), lumped capacities C_I = c_p m_I
+// (88), conduction in the current configuration of the total-Lagrangian model (87), explicit
+// forward Euler (89) sub-cycled under its own stable step (90), boundary sets (91)-(92) and a
+// ledger that balances to round-off (93).
+//
+// Coupling to the mechanical solver (how the explicit step is meant to call it):
+//   heat_conduction<G> heat(solver.model(), {props}, solver.masses(), T0, boundaries);
+//   each mechanical step (or every few, with their summed dt):
+//     s_I = beta * plastic power scattered to coefficients + frictional heat   (W, #particles)
+//     heat.advance(dt, F_of_point, s);   // sub-cycles itself when dt > stable_time_step()
+//     the material update reads heat.temperature_at_point(q)
+//   after a re-reference: heat.rebind(new_model, new_masses), then set_coefficients() from the
+//   temperatures at the particles; contact heat enters through s (or a heat_flux set).
+// F is the deformation gradient at each point (a callable q -> mat3, a std::vector<mat3>, or
+// nullptr for the reference configuration), as time_step_controller::start takes it.
+// One process (a rank's part of a model is refused).
+
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include <rkpm/concepts/geometry.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/io/checkpoint.hpp>
+#include <rkpm/solver/constraints.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/stable_time_step.hpp>
+#include <rkpm/thermal/conduction_operator.hpp>
+#include <rkpm/thermal/heat_ledger.hpp>
+#include <rkpm/thermal/thermal_boundary.hpp>
+#include <rkpm/thermal/thermal_properties.hpp>
+
+namespace rkpm::thermal {
+
+struct heat_options {
+  double time_step_fraction = 0.8;  // alpha of (90), in (0, 1]
+  int first_iterations = 100;       // power iterations of the first measurement of (90)
+  int update_iterations = 20;       // of a warm-started measurement, when the bound (90) drifts
+};
+
+template <Geometry G>
+class heat_conduction {
+ public:
+  // `bodies`: the thermal properties of each body of the model (model_bodies; one for a model of
+  // one body). `mass`: the lumped masses m_I (38) (#particles), the physical ones: not those of
+  // mass scaling (section 5.10), which would scale the heat capacity too. Every coefficient starts
+  // at `initial_temperature` (K), so T^h = T0 everywhere (partition of unity).
+  heat_conduction(const discrete_model& m, std::vector<thermal_properties> bodies, const std::vector<double>& mass,
+                  double initial_temperature, std::vector<thermal_boundary> boundaries = {},
+                  heat_options options = {})
+      : props_(std::move(bodies)), boundaries_(std::move(boundaries)), options_(options) {
+    if (!(options_.time_step_fraction > 0.0 && options_.time_step_fraction <= 1.0))
+      fail("heat conduction: the time step fraction {} must lie in (0, 1]", options_.time_step_fraction);
+    if (!std::isfinite(initial_temperature))
+      fail("heat conduction: the initial temperature {} K is not a number", initial_temperature);
+    for (std::size_t b = 0; b < props_.size(); ++b) {
+      names_.push_back(fmt::format("body {}", b));
+      props_[b].validate(names_[b]);
+    }
+    T_.assign(m.particle_count(), initial_temperature);
+    rebind(m, mass);
+  }
+
+  // Builds everything derived from the model and the masses again (a model rebuilt by a
+  // re-reference, section 5.8, or masses changed by mass scaling) and measures the stable step;
+  // keeps the coefficients (set them afterwards if the particles' values must be carried), the
+  // time and the ledger.
+  void rebind(const discrete_model& m, const std::vector<double>& mass) {
+    if (m.is_part()) fail("heat conduction runs on one process: this is one rank's part of a model");
+    const index_t n = m.particle_count();
+    const auto bodies = static_cast<std::size_t>(std::max<index_t>(1, m.bodies.count()));
+    if (props_.size() != bodies)
+      fail("heat conduction: {} thermal properties for a model of {} bodies: give one per body", props_.size(), bodies);
+    if (static_cast<index_t>(mass.size()) != n || static_cast<index_t>(T_.size()) != n)
+      fail("heat conduction: {} masses and {} temperatures for {} particles", mass.size(), T_.size(), n);
+    m_ = &m;
+    mass_ = mass;
+    R_.assign(n, 0.0);
+    rhs_.assign(n, 0.0);
+    D_.assign(m.point_count(), mat2::Zero());
+    tile_max_.assign(m.traversal.tiles(), 0.0);
+    tile_bad_.assign(m.traversal.tiles(), -1);
+    update_capacities();
+    area_.assign(boundaries_.size(), {});
+    for (std::size_t s = 0; s < boundaries_.size(); ++s) boundaries_[s].validate(n);
+    update_boundary_geometry(m.particles.position);
+    build_fixed_rows();
+    evaluate_conduction(nullptr);
+    measure_stable_step(mode_.empty() ? options_.first_iterations : options_.update_iterations);
+  }
+
+  // Advances the temperature by dt (s) with sub-steps of equal length, n = ceil(dt / step) with
+  // the stable step of (90) at the start, (89). F: the deformation gradient at each point during
+  // the step (held over its sub-steps). heat_rate: W per particle, already in coefficient space
+  // (#particles, or empty), held over the step. Returns the number of sub-steps.
+  template <class PointF = std::nullptr_t>
+  index_t advance(double dt, const PointF& F = nullptr, std::span<const double> heat_rate = {}) {
+    if (!(dt >= 0.0 && std::isfinite(dt))) fail("heat conduction: the step {} s must be finite and not negative", dt);
+    if (!heat_rate.empty() && heat_rate.size() != T_.size())
+      fail("heat conduction: {} heat rates for {} particles", heat_rate.size(), T_.size());
+    if (dt == 0.0) return 0;
+    update_capacities();
+    evaluate_conduction(F);
+    if (scale() > 1.25 || scale() < 0.8) measure_stable_step(options_.update_iterations);
+    const double step = stable_time_step();
+    const auto n = static_cast<index_t>(std::max(1.0, std::ceil(dt / step * (1.0 - 1e-12))));
+    const double h = dt / static_cast<double>(n);
+    for (index_t k = 0; k < n; ++k) {
+      if (k > 0) {
+        update_capacities();
+        evaluate_conduction(F);
+      }
+      sub_step(h, heat_rate);
+    }
+    return n;
+  }
+
+  // The fixed temperatures imposed now (92), e.g. on the initial field; its heat is booked.
+  void impose_fixed_temperatures() { project_fixed(); }
+
+  // The largest sub-step advance() takes now: alpha 2 / lambda_max(C^-1 K), (90).
+  double stable_time_step() const {
+    const double lambda = lambda_ * scale();
+    return lambda > 0.0 ? options_.time_step_fraction * 2.0 / lambda : std::numeric_limits<double>::infinity();
+  }
+  // Measures lambda_max(C^-1 K) again at the last evaluated configuration (power iteration, (90)).
+  void measure_stable_step(int iterations) { power_iteration(iterations); }
+
+  double time() const { return time_; }
+  void set_time(double t) { time_ = t; }
+  const heat_ledger& ledger() const { return ledger_; }
+  void set_ledger(const heat_ledger& l) { ledger_ = l; }
+  // sum_I C_I T_I (J): with capacities independent of T, the ledger's `stored` is its change.
+  double stored_heat() const {
+    double sum = 0.0;
+    for (std::size_t I = 0; I < T_.size(); ++I) sum += capacity_[I] * T_[I];
+    return sum;
+  }
+  const std::vector<double>& capacities() const { return capacity_; }
+
+  // The coefficients T_I (K; not the temperatures at the particles) and their replacement.
+  const std::vector<double>& coefficients() const { return T_; }
+  void set_coefficients(std::vector<double> T) {
+    if (T.size() != T_.size()) fail("heat conduction: {} coefficients for {} particles", T.size(), T_.size());
+    T_ = std::move(T);
+    update_capacities();
+  }
+  // T_I = f(X_I) at the reference positions: exact T^h = f for every linear f (reproduction).
+  void set_temperature_field(const std::function<double(const vec2&)>& f) {
+    for (index_t I = 0; I < m_->particle_count(); ++I) T_[I] = f(m_->particles.position[I]);
+    update_capacities();
+  }
+  // T^h(x_I) and T^h(X_q), K.
+  double temperature_at_particle(index_t I) const { return m_->at_particles.interpolate(I, T_); }
+  std::vector<double> particle_temperatures() const {
+    std::vector<double> out(T_.size());
+    for (index_t I = 0; I < static_cast<index_t>(T_.size()); ++I) out[I] = temperature_at_particle(I);
+    return out;
+  }
+  double temperature_at_point(index_t q) const { return m_->at_points.interpolate(q, T_); }
+
+  const std::vector<thermal_boundary>& boundaries() const { return boundaries_; }
+  // The areas A_J = L_J omega(x_J) from positions x (#particles, current or reference): sets made
+  // on chains measure their lengths again, and in axisymmetry every set takes r_J from x.
+  void update_boundary_geometry(std::span<const vec2> x) {
+    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
+      thermal_boundary& b = boundaries_[s];
+      if (b.from_chain) b.length = tributary_lengths(b.particle, x, b.closed_chain);
+      area_[s].resize(b.particle.size());
+      for (std::size_t k = 0; k < b.particle.size(); ++k) area_[s][k] = b.length[k] * G::weight_factor(x[b.particle[k]]);
+    }
+    if (area_measured_.size() != area_.size()) area_measured_ = area_;
+  }
+
+  // Checkpoint (io/checkpoint.hpp): coefficients, time, ledger, the stable step's measurement and
+  // vector, and the boundary areas.
+  void save(io::checkpoint_writer& w) const { sections(w, *this); }
+  void load(io::checkpoint_reader& r) {
+    sections(r, *this);
+    update_capacities();
+  }
+
+ private:
+  template <class Archive, class Self>
+  static void sections(Archive& a, Self& s) {
+    a.array("heat.T", s.T_);
+    a.value("heat.time", s.time_);
+    a.value("heat.ledger", s.ledger_);
+    a.array("heat.mode", s.mode_);
+    a.value("heat.lambda", s.lambda_);
+    a.array("heat.measured_conductance", s.D_measured_);
+    a.array("heat.measured_capacity", s.capacity_measured_);
+    for (std::size_t k = 0; k < s.area_.size(); ++k) {
+      a.array(fmt::format("heat.area_{}", k), s.area_[k]);
+      a.array(fmt::format("heat.measured_area_{}", k), s.area_measured_[k]);
+    }
+  }
+
+  const std::string& body_name(std::size_t b) const { return names_[b]; }
+
+  // C_I = c_p(T^h(x_I)) m_I, (88), and the capacity part of the bound (90).
+  void update_capacities() {
+    capacity_.resize(T_.size());
+    for (std::size_t I = 0; I < T_.size(); ++I) {
+      const std::size_t b = static_cast<std::size_t>(m_->bodies.of_particle(static_cast<index_t>(I)));
+      const thermal_properties& p = props_[b];
+      const double T = p.capacity_depends_on_T() ? temperature_at_particle(static_cast<index_t>(I)) : 0.0;
+      capacity_[I] = p.c_p(T, body_name(b)) * mass_[I];
+    }
+    capacity_scale_ = 1.0;
+    if (capacity_measured_.size() == capacity_.size()) {
+      capacity_scale_ = 0.0;
+      for (std::size_t I = 0; I < T_.size(); ++I)
+        capacity_scale_ = std::max(capacity_scale_, capacity_measured_[I] / capacity_[I]);
+    }
+  }
+
+  // R = K(T) T with the conductances of configuration F (87), the conductances kept per point
+  // and their growth since the last measurement (90).
+  template <class PointF>
+  void evaluate_conduction(const PointF& F) {
+    const discrete_model& m = *m_;
+    std::fill(tile_max_.begin(), tile_max_.end(), 0.0);
+    std::fill(tile_bad_.begin(), tile_bad_.end(), -1);
+    const bool compare = D_measured_.size() == D_.size();
+    conduction_traversal(m, T_, R_, [&](index_t tile, index_t q, double Tq, const vec2& Gq) -> vec2 {
+      try {
+        const mat2 D = conductance(F, q, Tq);
+        D_[q] = D;
+        if (compare) tile_max_[tile] = std::max(tile_max_[tile], largest_ratio(D, D_measured_[q]));
+        return m.points.weight[q] * (D * Gq);
+      } catch (...) {
+        if (tile_bad_[tile] < 0) tile_bad_[tile] = q;
+        return vec2::Zero();
+      }
+    });
+    for (const index_t q : tile_bad_)
+      if (q >= 0) {
+        conductance(F, q, temperature_at_point(q));  // throws the error serially
+        fail("heat conduction: the conductance at point {} could not be evaluated", q);
+      }
+    conductance_scale_ = compare ? *std::max_element(tile_max_.begin(), tile_max_.end()) : 1.0;
+  }
+
+  template <class PointF>
+  mat2 conductance(const PointF& F, index_t q, double Tq) const {
+    const auto b = static_cast<std::size_t>(m_->bodies.of_point(q));
+    const double k = props_[b].k(Tq, body_name(b));
+    if constexpr (std::is_same_v<PointF, std::nullptr_t>)
+      return k * mat2::Identity();
+    else if constexpr (std::is_invocable_r_v<mat3, const PointF&, index_t>)
+      return k * current_conductance(F(q));
+    else
+      return k * current_conductance(F[q]);
+  }
+
+  // How far the bound of (90) has moved since the measurement: conductances, convection areas
+  // and capacities, each in its worst place.
+  double scale() const {
+    double area = 0.0;
+    for (std::size_t s = 0; s < boundaries_.size(); ++s)
+      if (boundaries_[s].kind == boundary_kind::convection)
+        for (std::size_t k = 0; k < area_[s].size(); ++k)
+          if (area_[s][k] > 0.0)
+            area = std::max(area, area_measured_[s][k] > 0.0 ? area_[s][k] / area_measured_[s][k]
+                                                               : std::numeric_limits<double>::infinity());
+    return std::max(conductance_scale_, area) * capacity_scale_;
+  }
+
+  // y += sum_J h A_J N(x_J) (N(x_J) . x): convection's part of the operator.
+  void add_convection_operator(const std::vector<double>& x, std::vector<double>& y) const {
+    const shape_table<2>& rows = m_->at_particles;
+    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
+      const thermal_boundary& b = boundaries_[s];
+      if (b.kind != boundary_kind::convection) continue;
+      for (std::size_t k = 0; k < b.particle.size(); ++k) {
+        const index_t J = b.particle[k];
+        const double hxJ = b.film_coefficient * area_[s][k] * rows.interpolate(J, x);
+        for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) y[rows.neighbor[e]] += rows.N[e] * hxJ;
+      }
+    }
+  }
+
+  // lambda_max(C^-1 K) by power iteration (90), on the conductances last evaluated, warm-started
+  // after the first measurement with the fixed start vector mixed back in (as section 5.6).
+  void power_iteration(int iterations) {
+    const index_t n = m_->particle_count();
+    const auto start = [&](index_t I) { return power_iteration_start(static_cast<std::size_t>(I))[0]; };
+    if (mode_.size() != static_cast<std::size_t>(n)) {
+      mode_.resize(n);
+      for (index_t I = 0; I < n; ++I) mode_[I] = start(I);
+    } else {
+      double norm = 0.0;
+      for (const double v : mode_) norm = std::max(norm, std::abs(v));
+      for (index_t I = 0; I < n; ++I) mode_[I] = (norm > 0.0 ? mode_[I] / norm : 0.0) + 0.3 * start(I);
+    }
+    const discrete_model& m = *m_;
+    double lambda = 0.0;
+    for (int it = 0; it < iterations; ++it) {
+      conduction_traversal(m, mode_, rhs_, [&](index_t, index_t q, double, const vec2& Gq) -> vec2 {
+        return m.points.weight[q] * (D_[q] * Gq);
+      });
+      add_convection_operator(mode_, rhs_);
+      double xKx = 0.0, xCx = 0.0, norm = 0.0;
+      for (index_t I = 0; I < n; ++I) {
+        xKx += mode_[I] * rhs_[I];
+        xCx += mode_[I] * capacity_[I] * mode_[I];
+        rhs_[I] /= capacity_[I];
+        norm = std::max(norm, std::abs(rhs_[I]));
+      }
+      lambda = xCx > 0.0 ? xKx / xCx : 0.0;
+      if (!(norm > 0.0)) break;  // no conduction and no convection: nothing limits the step
+      for (index_t I = 0; I < n; ++I) mode_[I] = rhs_[I] / norm;
+    }
+    lambda_ = lambda;
+    D_measured_ = D_;
+    capacity_measured_ = capacity_;
+    area_measured_ = area_;
+    conductance_scale_ = capacity_scale_ = 1.0;
+  }
+
+  // The rows of the fixed temperatures: each particle once (the first set that names it).
+  void build_fixed_rows() {
+    std::vector<velocity_constraint> rows;
+    std::vector<char> taken(T_.size(), 0);
+    fixed_set_.clear();
+    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
+      if (boundaries_[s].kind != boundary_kind::fixed_temperature) continue;
+      for (const index_t J : boundaries_[s].particle) {
+        if (taken[J]) continue;
+        taken[J] = 1;
+        rows.push_back({J, 0, {}});
+        fixed_set_.push_back(s);
+      }
+    }
+    projector_ = constraint_projector(std::move(rows), m_->at_particles, capacity_);
+    target_.assign(fixed_set_.size(), 0.0);
+    before_.assign(projector_.touched().size(), 0.0);
+  }
+
+  // T^h(x_J) = T_b(t) through the capacity-weighted projection (92); its heat booked.
+  void project_fixed() {
+    if (fixed_set_.empty()) return;
+    for (std::size_t r = 0; r < fixed_set_.size(); ++r) target_[r] = boundaries_[fixed_set_[r]].value(time_);
+    const std::vector<index_t>& touched = projector_.touched();
+    for (std::size_t k = 0; k < touched.size(); ++k) before_[k] = T_[touched[k]];
+    projector_.project_values(T_, target_);
+    double heat = 0.0;
+    for (std::size_t k = 0; k < touched.size(); ++k) heat += capacity_[touched[k]] * (T_[touched[k]] - before_[k]);
+    ledger_.fixed += heat;
+    ledger_.stored += heat;
+  }
+
+  // One forward Euler step (89) of length h from the conduction residual R_ of T_ at time_.
+  void sub_step(double h, std::span<const double> heat_rate) {
+    const index_t n = m_->particle_count();
+    for (index_t I = 0; I < n; ++I) rhs_[I] = -R_[I];
+    const shape_table<2>& rows = m_->at_particles;
+    double flux = 0.0, convection = 0.0;
+    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
+      const thermal_boundary& b = boundaries_[s];
+      if (b.kind == boundary_kind::fixed_temperature) continue;
+      const double v = b.value(time_);
+      for (std::size_t k = 0; k < b.particle.size(); ++k) {
+        const index_t J = b.particle[k];
+        const double Q = b.kind == boundary_kind::heat_flux
+                             ? v * area_[s][k]
+                             : -b.film_coefficient * area_[s][k] * (rows.interpolate(J, T_) - v);  // (91)
+        (b.kind == boundary_kind::heat_flux ? flux : convection) += Q;
+        for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) rhs_[rows.neighbor[e]] += rows.N[e] * Q;
+      }
+    }
+    double source = 0.0, stored = 0.0;
+    for (index_t I = 0; I < n; ++I) {
+      double r = rhs_[I];
+      if (!heat_rate.empty()) {
+        r += heat_rate[I];
+        source += heat_rate[I];
+      }
+      const double T_new = T_[I] + h * r / capacity_[I];
+      stored += capacity_[I] * (T_new - T_[I]);
+      T_[I] = T_new;
+    }
+    ledger_.flux += h * flux;
+    ledger_.convection += h * convection;
+    ledger_.sources += h * source;
+    ledger_.stored += stored;
+    time_ += h;
+    project_fixed();
+  }
+
+  const discrete_model* m_ = nullptr;
+  std::vector<thermal_properties> props_;
+  std::vector<std::string> names_;
+  std::vector<thermal_boundary> boundaries_;
+  heat_options options_;
+  std::vector<double> mass_, capacity_, T_, R_, rhs_;
+  std::vector<std::vector<double>> area_, area_measured_;  // A_J per set, now and at the measurement
+  std::vector<mat2> D_, D_measured_;                      // point conductances, now and at the measurement
+  std::vector<double> capacity_measured_, mode_;
+  std::vector<double> tile_max_;
+  std::vector<index_t> tile_bad_;
+  double lambda_ = 0.0, conductance_scale_ = 1.0, capacity_scale_ = 1.0;
+  constraint_projector projector_;
+  std::vector<std::size_t> fixed_set_;
+  std::vector<double> target_, before_;
+  double time_ = 0.0;
+  heat_ledger ledger_;
+};
+
+}  // namespace rkpm::thermal
