@@ -99,4 +99,251 @@ TEST_CASE("heat: a suddenly heated surface follows the erfc solution of the semi
   CHECK(std::abs(heat.ledger().imbalance()) < 1e-12 * std::abs(heat.ledger().fixed));
 }
 
+
+TEST_CASE("heat: a bar cooled by convection at one end follows the Biot-number eigenvalue series") {
+  const double L = 0.1, H = 0.01, T0 = 1000.0, T_inf = 300.0, Bi = 1.0, h_f = Bi * k_steel / L;
+  const int nx = 21, ny = 3;
+  const discrete_model m = grid_model<quadrature::q4_vci, plane>(vec2(0, 0), vec2(L, H), nx, ny);
+  heat_conduction<plane> heat(m, {steel}, lumped_masses(m, rho), T0,
+                              {thermal_boundary::on_chain(boundary_kind::convection, column(nx, ny, nx - 1),
+                                                          m.particles.position, false, T_inf, h_f)});
+  const double stored0 = heat.stored_heat();
+  const std::vector<double> zeta = biot_roots(Bi, 40);
+  CHECK(zeta[0] == doctest::Approx(0.8603335890).epsilon(1e-9));  // tabulated (Incropera, Table 5.1)
+  const auto exact = [&](double x, double Fo) {
+    double theta = 0.0;
+    for (const double z : zeta)
+      theta += 4.0 * std::sin(z) / (2.0 * z + std::sin(2.0 * z)) * std::exp(-z * z * Fo) * std::cos(z * x / L);
+    return T_inf + (T0 - T_inf) * theta;
+  };
+  double worst = 0.0;
+  for (const double Fo : {0.05, 0.2, 0.5}) {
+    heat.advance(Fo * L * L / alpha - heat.time());
+    const auto T = heat.particle_temperatures();
+    const double e = max_error(m, T, [&](const vec2& X) { return exact(X[0], Fo); }) / (T0 - T_inf);
+    MESSAGE("Biot bar, Fo = ", Fo, ": largest error ", e, " of T0 - T_inf");
+    worst = std::max(worst, e);
+  }
+  CHECK(worst < 0.008);  // measured 0.0055 (at Fo = 0.05), 0.0043, 0.0033 at 21 x 3, q4+vci
+  // The heat that left is the convected heat, to round-off.
+  const double lost = heat.stored_heat() - stored0;
+  CHECK(lost < 0.0);
+  CHECK(std::abs(lost - heat.ledger().convection) < 1e-13 * std::abs(lost));
+  CHECK(std::abs(heat.ledger().imbalance()) < 1e-13 * std::abs(lost));
+}
+
+TEST_CASE("heat: the steady annulus (axisymmetric hollow cylinder) is A + B ln r") {
+  const double ri = 0.05, ro = 0.1, Hz = 0.02, Ti = 1000.0, To = 300.0;
+  const int nr = 21, nz = 5;
+  const discrete_model m = grid_model<quadrature::q4_vci, axi>(vec2(ri, 0), vec2(ro, Hz), nr, nz);
+  heat_conduction<axi> heat(m, {steel}, lumped_masses(m, rho), To,
+                            {thermal_boundary::fixed_temperature(column(nr, nz, 0), std::vector<double>(nz, 0.0), Ti),
+                             thermal_boundary::fixed_temperature(column(nr, nz, nr - 1), std::vector<double>(nz, 0.0),
+                                                                 To)});
+  heat.set_temperature_field([&](const vec2& X) { return Ti + (To - Ti) * (X[0] - ri) / (ro - ri); });
+  const double tau = (ro - ri) * (ro - ri) / (pi * pi * alpha);  // the slowest mode's time
+  const double stored0 = heat.stored_heat();
+  heat.advance(12.0 * tau);
+  const double B = (To - Ti) / std::log(ro / ri), A = Ti - B * std::log(ri);
+  const auto T = heat.particle_temperatures();
+  const double e = max_error(m, T, [&](const vec2& X) { return A + B * std::log(X[0]); }) / (Ti - To);
+  // The linear field the run started from is 2.7% of Ti - To off the logarithm.
+  MESSAGE("annulus: largest error ", e, " of Ti - To at ", nr, " x ", nz);
+  CHECK(e < 1.5e-3);  // measured 9.3e-4 at 21 x 5, q4+vci
+  CHECK(std::abs(heat.stored_heat() - stored0 - heat.ledger().fixed) < 1e-13 * std::abs(heat.ledger().fixed));
+}
+
+namespace {
+
+// The mode T0 + A cos(pi x / L) cos(pi y / L) on the insulated square, decaying as
+// exp(-2 alpha pi^2 t / L^2): largest nodal error over the amplitude at t = L^2 / (2 alpha pi^2).
+template <class Q>
+double decaying_mode_error(int n) {
+  const double L = 0.02, T0 = 500.0, A = 100.0;
+  const discrete_model m = grid_model<Q, plane>(vec2(0, 0), vec2(L, L), n, n);
+  heat_conduction<plane> heat(m, {steel}, lumped_masses(m, rho), T0);
+  const auto mode = [&](const vec2& X) { return A * std::cos(pi * X[0] / L) * std::cos(pi * X[1] / L); };
+  heat.set_temperature_field([&](const vec2& X) { return T0 + mode(X); });
+  const double t = L * L / (2.0 * alpha * pi * pi);
+  heat.advance(t);
+  return max_error(m, heat.particle_temperatures(), [&](const vec2& X) { return T0 + mode(X) * std::exp(-1.0); }) /
+         (A * std::exp(-1.0));
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("heat: second order in space (a decaying mode at 9, 17, 33 particles per side)", Q,
+                   quadrature::q4_vci, quadrature::q2_vci) {
+  const double e9 = decaying_mode_error<Q>(9), e17 = decaying_mode_error<Q>(17), e33 = decaying_mode_error<Q>(33);
+  const double r1 = std::log2(e9 / e17), r2 = std::log2(e17 / e33);
+  MESSAGE(Q::name, ": errors ", e9, ", ", e17, ", ", e33, "; rates ", r1, ", ", r2);
+  // Measured: q4+vci 1.80 and 1.98, q2+vci 2.02 and 1.94.
+  CHECK(r1 > 1.7);
+  CHECK(r2 > 1.7);
+}
+
+TEST_CASE("heat: the ledger balances to round-off with sources, T-dependent properties and sub-cycling") {
+  const double L = 0.02, T0 = 500.0;
+  const int n = 9;
+  const discrete_model m = grid_model<quadrature::q2, plane>(vec2(0, 0), vec2(L, L), n, n);
+  std::vector<double> rate(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I) rate[I] = 50.0 * (1.0 + 0.8 * std::sin(3.0 * I));
+  SUBCASE("constant properties: stored heat changes by the source work exactly") {
+    heat_conduction<plane> heat(m, {steel}, lumped_masses(m, rho), T0);
+    const double stored0 = heat.stored_heat(), dt = 3.5 * heat.stable_time_step();
+    CHECK(heat.advance(dt, nullptr, rate) == 4);  // ceil(3.5)
+    for (int k = 0; k < 4; ++k) heat.advance(dt, nullptr, rate);
+    double total = 0.0;
+    for (const double r : rate) total += r;
+    CHECK(heat.ledger().sources == doctest::Approx(total * 5.0 * dt).epsilon(1e-13));
+    const double gained = heat.stored_heat() - stored0;
+    MESSAGE("sources: stored ", gained, " J against ", heat.ledger().sources, " J booked");
+    CHECK(std::abs(gained - heat.ledger().sources) < 1e-13 * gained);
+    CHECK(std::abs(heat.ledger().imbalance()) < 1e-13 * gained);
+  }
+  SUBCASE("k(T) and c_p(T): the booked heat still balances") {
+    thermal_properties p;
+    p.conductivity_of_T = [](double T) { return 45.0 - 0.02 * (T - 300.0); };
+    p.specific_heat_of_T = [](double T) { return 460.0 + 0.3 * (T - 300.0); };
+    heat_conduction<plane> heat(m, {p}, lumped_masses(m, rho), T0,
+                                {thermal_boundary::on_chain(boundary_kind::convection, column(n, n, n - 1),
+                                                            m.particles.position, false, 300.0, 500.0),
+                                 thermal_boundary::on_chain(boundary_kind::heat_flux, column(n, n, 0),
+                                                            m.particles.position, false, 2e5)});
+    for (int k = 0; k < 5; ++k) heat.advance(3.0 * heat.stable_time_step(), nullptr, rate);
+    const auto& l = heat.ledger();
+    MESSAGE("T-dependent: stored ", l.stored, ", sources ", l.sources, ", flux ", l.flux, ", convection ",
+            l.convection, " J; relative imbalance ", l.relative_imbalance());
+    CHECK(l.convection < 0.0);
+    CHECK(l.flux == doctest::Approx(2e5 * L * heat.time()).epsilon(1e-12));
+    CHECK(l.relative_imbalance() < 1e-13);
+  }
+}
+
+TEST_CASE("heat: the stable step's power iteration finds lambda_max(C^-1 K) from below, within 1%") {
+  // C^-1 K probed column by column through single steps of advance() (T' = T - h C^-1 K T with no
+  // source, for T = e_J), with a convection set (its part of K), and its spectrum solved densely.
+  const double L = 0.02;
+  const int n = 9;
+  const discrete_model m = grid_model<quadrature::q2, plane>(vec2(0, 0), vec2(L, L), n, n);
+  heat_conduction<plane> heat(m, {steel}, lumped_masses(m, rho), 0.0,
+                              {thermal_boundary::on_chain(boundary_kind::convection, column(n, n, 0),
+                                                          m.particles.position, false, 0.0, 5e4)},
+                              {.time_step_fraction = 1.0});
+  const double h = heat.stable_time_step(), measured = 2.0 / h;
+  const index_t N = m.particle_count();
+  Eigen::MatrixXd A(N, N);
+  for (index_t J = 0; J < N; ++J) {
+    std::vector<double> e(N, 0.0);
+    e[J] = 1.0;
+    heat.set_coefficients(e);
+    REQUIRE(heat.advance(h) == 1);
+    for (index_t I = 0; I < N; ++I) A(I, J) = (e[I] - heat.coefficients()[I]) / h;
+  }
+  const double exact = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues().real().maxCoeff();
+  MESSAGE("lambda_max: measured ", measured, ", dense ", exact, " 1/s");
+  CHECK(measured <= exact * (1.0 + 1e-9));
+  CHECK(measured >= 0.99 * exact);
+}
+
+TEST_CASE("heat: a checkpoint continues bit for bit") {
+  const double L = 0.02;
+  const int n = 7;
+  const discrete_model m = grid_model<quadrature::q2, plane>(vec2(0, 0), vec2(L, L), n, n);
+  const auto make = [&] {
+    return heat_conduction<plane>(m, {steel}, lumped_masses(m, rho), 300.0,
+                                  {thermal_boundary::on_chain(boundary_kind::fixed_temperature, column(n, n, 0),
+                                                              m.particles.position, false, 900.0)});
+  };
+  auto a = make();
+  a.advance(5.0 * a.stable_time_step());
+  io::checkpoint_writer w("unused", io::checkpoint_identity{"heat", m.particle_count(), m.point_count()});
+  w.part(a);
+  std::string bytes = w.close();
+  a.advance(5.0 * a.stable_time_step());
+  auto b = make();
+  io::checkpoint_reader r(std::move(bytes), "memory");
+  r.part(b);
+  b.advance(5.0 * b.stable_time_step());
+  CHECK(b.coefficients() == a.coefficients());
+  CHECK(b.time() == a.time());
+  CHECK(b.ledger().stored == a.ledger().stored);
+}
+
+TEST_CASE("heat: a uniformly stretched strip conducts as the stretched geometry") {
+  // The mode T0 + A cos(pi X / L) of the insulated strip [0, L] x [0, H] under F = diag(lambda, mu, 1):
+  // the current strip is lambda L long with the density rho / (lambda mu), so its diffusivity is
+  // lambda mu alpha and the mode decays as exp(-mu alpha pi^2 t / (lambda L^2)). (Equivalently, in the
+  // steady state the stretched strip carries the flux k mu H dT / (lambda L): its conductance along
+  // X is k J C^-1_11 = k mu / lambda per reference area.) The plain reference form would decay as
+  // F = I does.
+  const double L = 0.05, H = 0.005, T0 = 500.0, A = 100.0;
+  const int nx = 21, ny = 3;
+  const discrete_model m = grid_model<quadrature::q4_vci, plane>(vec2(0, 0), vec2(L, H), nx, ny);
+  const double t = 0.5 * L * L / (alpha * pi * pi);  // F = I: e^-1/2
+  const auto decay = [&](double lambda, double mu) {
+    heat_conduction<plane> heat(m, {steel}, lumped_masses(m, rho), T0);
+    heat.set_temperature_field([&](const vec2& X) { return T0 + A * std::cos(pi * X[0] / L); });
+    mat3 F = mat3::Identity();
+    F(0, 0) = lambda;
+    F(1, 1) = mu;
+    heat.advance(t, [&](index_t) { return F; });
+    // The amplitude, from the ends' mean temperatures (the mode is odd about the middle).
+    double left = 0.0, right = 0.0;
+    for (int j = 0; j < ny; ++j) {
+      left += heat.temperature_at_particle(nx * j) / ny;
+      right += heat.temperature_at_particle(nx - 1 + nx * j) / ny;
+    }
+    return std::pair{0.5 * (left - right) / A, heat.stable_time_step()};
+  };
+  const auto [reference, dt_reference] = decay(1.0, 1.0);
+  const auto [stretched, dt_stretched] = decay(2.0, 1.0);
+  const auto [widened, dt_widened] = decay(2.0, 1.5);
+  MESSAGE("amplitudes: reference ", reference, " (theory ", std::exp(-0.5), "), stretched ", stretched, " (",
+          std::exp(-0.25), "), stretched and widened ", widened, " (", std::exp(-0.375), "); stable steps ",
+          dt_reference, ", ", dt_stretched, ", ", dt_widened, " s");
+  CHECK(reference == doctest::Approx(std::exp(-0.5)).epsilon(0.005));
+  CHECK(stretched == doctest::Approx(std::exp(-0.25)).epsilon(0.005));
+  CHECK(widened == doctest::Approx(std::exp(-0.375)).epsilon(0.005));
+  // The discretization's own error cancels in the ratio of the decay exponents: mu / lambda.
+  CHECK(std::log(stretched) / std::log(reference) == doctest::Approx(0.5).epsilon(2e-3));
+  CHECK(std::log(widened) / std::log(reference) == doctest::Approx(0.75).epsilon(2e-3));
+}
+
+TEST_CASE("heat: wrong thermal properties and boundaries are refused with one line") {
+  const auto refused = [](const auto& f) -> std::string {
+    try {
+      f();
+    } catch (const rkpm::error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(refused([] { thermal_properties{-45.0, 460.0}.validate(); }).find("negative or not a number") !=
+        std::string::npos);
+  CHECK(refused([] { thermal_properties{std::nan(""), 460.0}.validate(); }).find("give k >= 0") != std::string::npos);
+  CHECK(refused([] { thermal_properties{45.0, 0.0}.validate(); }).find("specific heat 0 J/(kg K) must be positive") !=
+        std::string::npos);
+  const discrete_model m = grid_model<quadrature::q2, plane>(vec2(0, 0), vec2(0.01, 0.01), 5, 5);
+  const auto mass = lumped_masses(m, rho);
+  thermal_properties bad_k;
+  bad_k.specific_heat = 460.0;
+  bad_k.conductivity_of_T = [](double T) { return T > 400.0 ? -1.0 : 45.0; };
+  const std::string e = refused([&] { heat_conduction<plane>(m, {bad_k}, mass, 500.0); });
+  MESSAGE(e);
+  CHECK(e.find("conductivity function gives -1 W/(m K) at T = 500 K") != std::string::npos);
+  CHECK(e.find('\n') == std::string::npos);
+  CHECK(refused([&] { heat_conduction<plane>(m, {steel, steel}, mass, 500.0); }).find("2 thermal properties") !=
+        std::string::npos);
+  CHECK(refused([&] {
+          heat_conduction<plane>(m, {steel}, mass, 500.0, {thermal_boundary::heat_flux({0, 1}, {0.001}, 1e4)});
+        }).find("2 particles but 1 lengths") != std::string::npos);
+  CHECK(refused([&] {
+          heat_conduction<plane>(m, {steel}, mass, 500.0,
+                                 {thermal_boundary::convection({0}, {0.001}, -10.0, 300.0)});
+        }).find("film coefficient") != std::string::npos);
+  CHECK(refused([&] { heat_conduction<plane>(m, {steel}, mass, 500.0, {}, {.time_step_fraction = 1.5}); })
+            .find("fraction") != std::string::npos);
+}
+
 }  // namespace test_numeric_heat_conduction
