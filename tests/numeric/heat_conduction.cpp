@@ -153,6 +153,29 @@ TEST_CASE("heat: the steady annulus (axisymmetric hollow cylinder) is A + B ln r
   CHECK(std::abs(heat.stored_heat() - stored0 - heat.ledger().fixed) < 1e-13 * std::abs(heat.ledger().fixed));
 }
 
+TEST_CASE("heat: a flux into the outer surface of a hollow cylinder heats its ring volume (2 pi r)") {
+  // Axisymmetric areas A_J = 2 pi r_J L_J and masses with 2 pi R: a flux q into r = r_o, insulated
+  // elsewhere, brings q 2 pi r_o H t, and the mean temperature rises by that over rho c_p pi
+  // (r_o^2 - r_i^2) H.
+  const double ri = 0.05, ro = 0.1, Hz = 0.02, T0 = 300.0, q = 1e5;
+  const int nr = 11, nz = 5;
+  const discrete_model m = grid_model<quadrature::q2, axi>(vec2(ri, 0), vec2(ro, Hz), nr, nz);
+  const auto outer = column(nr, nz, nr - 1);
+  heat_conduction<axi> heat(m, {steel}, lumped_masses(m, rho), T0,
+                            {thermal_boundary::on_chain(boundary_kind::heat_flux, outer, m.particles.position, false, q)});
+  double length = 0.0;
+  for (const double l : heat.boundaries()[0].length) length += l;
+  CHECK(length == doctest::Approx(Hz).epsilon(1e-14));
+  const double stored0 = heat.stored_heat(), t = 20.0;
+  heat.advance(t);
+  const double Q = q * 2.0 * pi * ro * Hz * t;
+  CHECK(heat.ledger().flux == doctest::Approx(Q).epsilon(1e-13));
+  CHECK(heat.stored_heat() - stored0 == doctest::Approx(Q).epsilon(1e-12));
+  double mass = 0.0;
+  for (const double mI : lumped_masses(m, rho)) mass += mI;
+  CHECK(mass == doctest::Approx(rho * pi * (ro * ro - ri * ri) * Hz).epsilon(1e-12));
+}
+
 namespace {
 
 // The mode T0 + A cos(pi x / L) cos(pi y / L) on the insulated square, decaying as

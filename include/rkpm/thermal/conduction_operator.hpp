@@ -57,6 +57,34 @@ void conduction_traversal(const discrete_model& m, const std::vector<double>& x,
   });
 }
 
+// R = K(T) T, (87): the traversal with the point rule D_q = conductance(q, T_q) (kept in D, #points),
+// returning the largest ratio(q, D_q) (the bound's growth, (90)). A conductance that throws (a
+// property function out of range) is thrown again after the traversal, from one thread.
+//   tile_max, tile_bad  #tiles scratch
+template <class Conductance, class Ratio>
+double conduction_residual(const discrete_model& m, const std::vector<double>& T, std::vector<double>& R,
+                           std::vector<mat2>& D, std::vector<double>& tile_max, std::vector<index_t>& tile_bad,
+                           Conductance&& conductance, Ratio&& ratio) {
+  std::fill(tile_max.begin(), tile_max.end(), 0.0);
+  std::fill(tile_bad.begin(), tile_bad.end(), -1);
+  conduction_traversal(m, T, R, [&](index_t tile, index_t q, double Tq, const vec2& G) -> vec2 {
+    try {
+      D[q] = conductance(q, Tq);
+      tile_max[tile] = std::max(tile_max[tile], ratio(q, D[q]));
+      return m.points.weight[q] * (D[q] * G);
+    } catch (...) {
+      if (tile_bad[tile] < 0) tile_bad[tile] = q;
+      return vec2::Zero();
+    }
+  });
+  for (const index_t q : tile_bad)
+    if (q >= 0) {
+      conductance(q, m.at_points.interpolate(q, T));  // throws the error here
+      fail("heat conduction: the conductance at point {} could not be evaluated", q);
+    }
+  return tile_max.empty() ? 1.0 : *std::max_element(tile_max.begin(), tile_max.end());
+}
+
 // The in-plane conductance per unit k of the current configuration, J C^-1 (F block diagonal:
 // the in-plane 2x2 and F_33), (87).
 inline mat2 current_conductance(const mat3& F) {

@@ -34,11 +34,12 @@
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/solver/constraints.hpp>
 #include <rkpm/solver/discrete_model.hpp>
-#include <rkpm/solver/stable_time_step.hpp>
+#include <rkpm/thermal/boundary_heat.hpp>
 #include <rkpm/thermal/conduction_operator.hpp>
 #include <rkpm/thermal/heat_ledger.hpp>
 #include <rkpm/thermal/thermal_boundary.hpp>
 #include <rkpm/thermal/thermal_properties.hpp>
+#include <rkpm/thermal/thermal_step_bound.hpp>
 
 namespace rkpm::thermal {
 
@@ -94,9 +95,11 @@ class heat_conduction {
     area_.assign(boundaries_.size(), {});
     for (std::size_t s = 0; s < boundaries_.size(); ++s) boundaries_[s].validate(n);
     update_boundary_geometry(m.particles.position);
-    build_fixed_rows();
+    fixed_ = fixed_temperatures(boundaries_, m.at_particles, capacity_);
+    const bool warm = bound_.warm(n);
+    bound_.forget();  // the points may be others: nothing to compare with until measured
     evaluate_conduction(nullptr);
-    measure_stable_step(mode_.empty() ? options_.first_iterations : options_.update_iterations);
+    measure_stable_step(warm ? options_.update_iterations : options_.first_iterations);
   }
 
   // Advances the temperature by dt (s) with sub-steps of equal length, n = ceil(dt / step) with
@@ -126,15 +129,24 @@ class heat_conduction {
   }
 
   // The fixed temperatures imposed now (92), e.g. on the initial field; its heat is booked.
-  void impose_fixed_temperatures() { project_fixed(); }
+  void impose_fixed_temperatures() { book_fixed(fixed_.impose(T_, boundaries_, capacity_, time_)); }
 
   // The largest sub-step advance() takes now: alpha 2 / lambda_max(C^-1 K), (90).
   double stable_time_step() const {
-    const double lambda = lambda_ * scale();
+    const double lambda = bound_.lambda() * scale();
     return lambda > 0.0 ? options_.time_step_fraction * 2.0 / lambda : std::numeric_limits<double>::infinity();
   }
   // Measures lambda_max(C^-1 K) again at the last evaluated configuration (power iteration, (90)).
-  void measure_stable_step(int iterations) { power_iteration(iterations); }
+  void measure_stable_step(int iterations) {
+    const discrete_model& m = *m_;
+    bound_.measure(capacity_, D_, area_, iterations, rhs_, [&](const std::vector<double>& x, std::vector<double>& y) {
+      conduction_traversal(m, x, y, [&](index_t, index_t q, double, const vec2& grad) -> vec2 {
+        return m.points.weight[q] * (D_[q] * grad);
+      });
+      add_convection_operator(m.at_particles, boundaries_, area_, x, y);
+    });
+    conductance_scale_ = capacity_scale_ = 1.0;
+  }
 
   double time() const { return time_; }
   void set_time(double t) { time_ = t; }
@@ -179,7 +191,6 @@ class heat_conduction {
       area_[s].resize(b.particle.size());
       for (std::size_t k = 0; k < b.particle.size(); ++k) area_[s][k] = b.length[k] * G::weight_factor(x[b.particle[k]]);
     }
-    if (area_measured_.size() != area_.size()) area_measured_ = area_;
   }
 
   // Checkpoint (io/checkpoint.hpp): coefficients, time, ledger, the stable step's measurement and
@@ -196,14 +207,8 @@ class heat_conduction {
     a.array("heat.T", s.T_);
     a.value("heat.time", s.time_);
     a.value("heat.ledger", s.ledger_);
-    a.array("heat.mode", s.mode_);
-    a.value("heat.lambda", s.lambda_);
-    a.array("heat.measured_conductance", s.D_measured_);
-    a.array("heat.measured_capacity", s.capacity_measured_);
-    for (std::size_t k = 0; k < s.area_.size(); ++k) {
-      a.array(fmt::format("heat.area_{}", k), s.area_[k]);
-      a.array(fmt::format("heat.measured_area_{}", k), s.area_measured_[k]);
-    }
+    for (std::size_t k = 0; k < s.area_.size(); ++k) a.array(fmt::format("heat.area_{}", k), s.area_[k]);
+    thermal_step_bound::sections(a, s.bound_, s.area_.size());
   }
 
   const std::string& body_name(std::size_t b) const { return names_[b]; }
@@ -217,39 +222,16 @@ class heat_conduction {
       const double T = p.capacity_depends_on_T() ? temperature_at_particle(static_cast<index_t>(I)) : 0.0;
       capacity_[I] = p.c_p(T, body_name(b)) * mass_[I];
     }
-    capacity_scale_ = 1.0;
-    if (capacity_measured_.size() == capacity_.size()) {
-      capacity_scale_ = 0.0;
-      for (std::size_t I = 0; I < T_.size(); ++I)
-        capacity_scale_ = std::max(capacity_scale_, capacity_measured_[I] / capacity_[I]);
-    }
+    capacity_scale_ = bound_.capacity_ratio(capacity_);
   }
 
-  // R = K(T) T with the conductances of configuration F (87), the conductances kept per point
-  // and their growth since the last measurement (90).
+  // R = K(T) T with the conductances of configuration F (87), and their growth since the last
+  // measurement (90).
   template <class PointF>
   void evaluate_conduction(const PointF& F) {
-    const discrete_model& m = *m_;
-    std::fill(tile_max_.begin(), tile_max_.end(), 0.0);
-    std::fill(tile_bad_.begin(), tile_bad_.end(), -1);
-    const bool compare = D_measured_.size() == D_.size();
-    conduction_traversal(m, T_, R_, [&](index_t tile, index_t q, double Tq, const vec2& Gq) -> vec2 {
-      try {
-        const mat2 D = conductance(F, q, Tq);
-        D_[q] = D;
-        if (compare) tile_max_[tile] = std::max(tile_max_[tile], largest_ratio(D, D_measured_[q]));
-        return m.points.weight[q] * (D * Gq);
-      } catch (...) {
-        if (tile_bad_[tile] < 0) tile_bad_[tile] = q;
-        return vec2::Zero();
-      }
-    });
-    for (const index_t q : tile_bad_)
-      if (q >= 0) {
-        conductance(F, q, temperature_at_point(q));  // throws the error serially
-        fail("heat conduction: the conductance at point {} could not be evaluated", q);
-      }
-    conductance_scale_ = compare ? *std::max_element(tile_max_.begin(), tile_max_.end()) : 1.0;
+    conductance_scale_ = conduction_residual(
+        *m_, T_, R_, D_, tile_max_, tile_bad_, [&](index_t q, double Tq) { return conductance(F, q, Tq); },
+        [&](index_t q, const mat2& D) { return bound_.conductance_ratio(q, D); });
   }
 
   template <class PointF>
@@ -267,119 +249,14 @@ class heat_conduction {
   // How far the bound of (90) has moved since the measurement: conductances, convection areas
   // and capacities, each in its worst place.
   double scale() const {
-    double area = 0.0;
-    for (std::size_t s = 0; s < boundaries_.size(); ++s)
-      if (boundaries_[s].kind == boundary_kind::convection)
-        for (std::size_t k = 0; k < area_[s].size(); ++k)
-          if (area_[s][k] > 0.0)
-            area = std::max(area, area_measured_[s][k] > 0.0 ? area_[s][k] / area_measured_[s][k]
-                                                               : std::numeric_limits<double>::infinity());
-    return std::max(conductance_scale_, area) * capacity_scale_;
-  }
-
-  // y += sum_J h A_J N(x_J) (N(x_J) . x): convection's part of the operator.
-  void add_convection_operator(const std::vector<double>& x, std::vector<double>& y) const {
-    const shape_table<2>& rows = m_->at_particles;
-    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
-      const thermal_boundary& b = boundaries_[s];
-      if (b.kind != boundary_kind::convection) continue;
-      for (std::size_t k = 0; k < b.particle.size(); ++k) {
-        const index_t J = b.particle[k];
-        const double hxJ = b.film_coefficient * area_[s][k] * rows.interpolate(J, x);
-        for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) y[rows.neighbor[e]] += rows.N[e] * hxJ;
-      }
-    }
-  }
-
-  // lambda_max(C^-1 K) by power iteration (90), on the conductances last evaluated, warm-started
-  // after the first measurement with the fixed start vector mixed back in (as section 5.6).
-  void power_iteration(int iterations) {
-    const index_t n = m_->particle_count();
-    const auto start = [&](index_t I) { return power_iteration_start(static_cast<std::size_t>(I))[0]; };
-    if (mode_.size() != static_cast<std::size_t>(n)) {
-      mode_.resize(n);
-      for (index_t I = 0; I < n; ++I) mode_[I] = start(I);
-    } else {
-      double norm = 0.0;
-      for (const double v : mode_) norm = std::max(norm, std::abs(v));
-      for (index_t I = 0; I < n; ++I) mode_[I] = (norm > 0.0 ? mode_[I] / norm : 0.0) + 0.3 * start(I);
-    }
-    const discrete_model& m = *m_;
-    double lambda = 0.0;
-    for (int it = 0; it < iterations; ++it) {
-      conduction_traversal(m, mode_, rhs_, [&](index_t, index_t q, double, const vec2& Gq) -> vec2 {
-        return m.points.weight[q] * (D_[q] * Gq);
-      });
-      add_convection_operator(mode_, rhs_);
-      double xKx = 0.0, xCx = 0.0, norm = 0.0;
-      for (index_t I = 0; I < n; ++I) {
-        xKx += mode_[I] * rhs_[I];
-        xCx += mode_[I] * capacity_[I] * mode_[I];
-        rhs_[I] /= capacity_[I];
-        norm = std::max(norm, std::abs(rhs_[I]));
-      }
-      lambda = xCx > 0.0 ? xKx / xCx : 0.0;
-      if (!(norm > 0.0)) break;  // no conduction and no convection: nothing limits the step
-      for (index_t I = 0; I < n; ++I) mode_[I] = rhs_[I] / norm;
-    }
-    lambda_ = lambda;
-    D_measured_ = D_;
-    capacity_measured_ = capacity_;
-    area_measured_ = area_;
-    conductance_scale_ = capacity_scale_ = 1.0;
-  }
-
-  // The rows of the fixed temperatures: each particle once (the first set that names it).
-  void build_fixed_rows() {
-    std::vector<velocity_constraint> rows;
-    std::vector<char> taken(T_.size(), 0);
-    fixed_set_.clear();
-    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
-      if (boundaries_[s].kind != boundary_kind::fixed_temperature) continue;
-      for (const index_t J : boundaries_[s].particle) {
-        if (taken[J]) continue;
-        taken[J] = 1;
-        rows.push_back({J, 0, {}});
-        fixed_set_.push_back(s);
-      }
-    }
-    projector_ = constraint_projector(std::move(rows), m_->at_particles, capacity_);
-    target_.assign(fixed_set_.size(), 0.0);
-    before_.assign(projector_.touched().size(), 0.0);
-  }
-
-  // T^h(x_J) = T_b(t) through the capacity-weighted projection (92); its heat booked.
-  void project_fixed() {
-    if (fixed_set_.empty()) return;
-    for (std::size_t r = 0; r < fixed_set_.size(); ++r) target_[r] = boundaries_[fixed_set_[r]].value(time_);
-    const std::vector<index_t>& touched = projector_.touched();
-    for (std::size_t k = 0; k < touched.size(); ++k) before_[k] = T_[touched[k]];
-    projector_.project_values(T_, target_);
-    double heat = 0.0;
-    for (std::size_t k = 0; k < touched.size(); ++k) heat += capacity_[touched[k]] * (T_[touched[k]] - before_[k]);
-    ledger_.fixed += heat;
-    ledger_.stored += heat;
+    return std::max(conductance_scale_, bound_.area_ratio(boundaries_, area_)) * capacity_scale_;
   }
 
   // One forward Euler step (89) of length h from the conduction residual R_ of T_ at time_.
   void sub_step(double h, std::span<const double> heat_rate) {
     const index_t n = m_->particle_count();
     for (index_t I = 0; I < n; ++I) rhs_[I] = -R_[I];
-    const shape_table<2>& rows = m_->at_particles;
-    double flux = 0.0, convection = 0.0;
-    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
-      const thermal_boundary& b = boundaries_[s];
-      if (b.kind == boundary_kind::fixed_temperature) continue;
-      const double v = b.value(time_);
-      for (std::size_t k = 0; k < b.particle.size(); ++k) {
-        const index_t J = b.particle[k];
-        const double Q = b.kind == boundary_kind::heat_flux
-                             ? v * area_[s][k]
-                             : -b.film_coefficient * area_[s][k] * (rows.interpolate(J, T_) - v);  // (91)
-        (b.kind == boundary_kind::heat_flux ? flux : convection) += Q;
-        for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e) rhs_[rows.neighbor[e]] += rows.N[e] * Q;
-      }
-    }
+    const auto [flux, convection] = add_boundary_heat(m_->at_particles, boundaries_, area_, T_, time_, rhs_);
     double source = 0.0, stored = 0.0;
     for (index_t I = 0; I < n; ++I) {
       double r = rhs_[I];
@@ -396,7 +273,12 @@ class heat_conduction {
     ledger_.sources += h * source;
     ledger_.stored += stored;
     time_ += h;
-    project_fixed();
+    book_fixed(fixed_.impose(T_, boundaries_, capacity_, time_));
+  }
+
+  void book_fixed(double heat) {
+    ledger_.fixed += heat;
+    ledger_.stored += heat;
   }
 
   const discrete_model* m_ = nullptr;
@@ -405,15 +287,13 @@ class heat_conduction {
   std::vector<thermal_boundary> boundaries_;
   heat_options options_;
   std::vector<double> mass_, capacity_, T_, R_, rhs_;
-  std::vector<std::vector<double>> area_, area_measured_;  // A_J per set, now and at the measurement
-  std::vector<mat2> D_, D_measured_;                      // point conductances, now and at the measurement
-  std::vector<double> capacity_measured_, mode_;
+  boundary_areas area_;  // A_J per set
+  std::vector<mat2> D_;  // each point's conductance, last evaluated
+  thermal_step_bound bound_;
   std::vector<double> tile_max_;
   std::vector<index_t> tile_bad_;
-  double lambda_ = 0.0, conductance_scale_ = 1.0, capacity_scale_ = 1.0;
-  constraint_projector projector_;
-  std::vector<std::size_t> fixed_set_;
-  std::vector<double> target_, before_;
+  double conductance_scale_ = 1.0, capacity_scale_ = 1.0;
+  fixed_temperatures fixed_;
   double time_ = 0.0;
   heat_ledger ledger_;
 };
