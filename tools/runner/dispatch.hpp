@@ -54,6 +54,7 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   options.end_time = Case::end_time(p);
   options.max_steps = r.max_steps;
   options.rereference = r.rereference;
+  options.mass_scaling = r.mass_scaling;
   const rkpm::method_names method{r.kernel, r.correction, r.quadrature};
   const std::function<problem<M, Ct>()> make_problem = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);

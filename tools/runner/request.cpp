@@ -89,6 +89,13 @@ void add_run_options(CLI::App* sub, run_request& r) {
   sub->add_option("--rereference-every", r.rereference.every_steps,
                   "rebuild the kernels in the current configuration every N steps (1: updated Lagrangian)")
       ->check(CLI::Range(index_t{1}, index_t{1'000'000'000}));
+  sub->add_option("--mass-scaling-factor", r.mass_scaling.factor,
+                  "multiply every mass by this (>= 1) for a process slower than the waves: the step grows by its "
+                  "square root (docs/method.md section 5.10); the summary reports the added mass")
+      ->check(CLI::Range(1.0, 1e12));
+  sub->add_option("--mass-scaling-dt", r.mass_scaling.target_time_step,
+                  "scale every mass by the factor that makes the time step this (s)")
+      ->check(CLI::Range(1e-15, 1.0));
   sub->add_option("--out", r.out_dir, "output directory (default results/CASE-QUADRATURE)");
   sub->add_option_function<std::string>(
          "--checkpoint-interval", [&r](const std::string& t) { r.checkpoint_interval = std::stod(t); },
@@ -223,6 +230,20 @@ void adopt_checkpoint_run(run_request& r, const nlohmann::ordered_json& descript
     fail("--rereference-*: the checkpoint was run with other re-referencing, and a restart continues the same "
          "run (drop them)");
   r.rereference = theirs;
+  // The mass scaling the run had (none when the description names none).
+  mass_scaling_policy scaled;
+  if (const auto k = description.find("mass_scaling"); k != description.end()) {
+    scaled.factor = k->at("factor").get<double>();
+    scaled.target_time_step = k->at("target_dt_s").get<double>();
+    scaled.max_kinetic_to_internal = k->at("max_kinetic_to_internal").get<double>();
+  }
+  const bool scaling_given = std::ranges::find(r.given, "--mass-scaling-factor") != r.given.end() ||
+                             std::ranges::find(r.given, "--mass-scaling-dt") != r.given.end();
+  if (scaling_given &&
+      (r.mass_scaling.factor != scaled.factor || r.mass_scaling.target_time_step != scaled.target_time_step))
+    fail("--mass-scaling-*: the checkpoint was run with other mass scaling, and a restart continues the same run "
+         "(drop them)");
+  r.mass_scaling = scaled;
   if (!r.sets.empty())
     fail("--set {}={}: a restart continues the checkpoint's problem with the parameters it was started with "
          "(only --end-time may change)",

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/solver/rereference.hpp>
 #include <rkpm/io/vtu_encoding.hpp>
 
@@ -38,6 +39,7 @@ struct run_request {
   bool with_rank_0 = true;
   long max_steps = 50'000'000;     // run_options::max_steps: longer runs are refused before they start
   rereference_policy rereference;  // run_options::rereference (--rereference-stretch, --rereference-every)
+  mass_scaling_policy mass_scaling;  // run_options::mass_scaling (--mass-scaling-factor, --mass-scaling-dt)
   std::string out_dir;             // default results/CASE-QUADRATURE
   bool plots = true;
   bool quiet = false;              // no progress line

@@ -38,6 +38,7 @@ run_outcome run_case_file(const run_request& request) {
     if (!given("--quadrature")) r.quadrature = c.method.quadrature;
     if (!given("--enforcement")) r.contact = c.method.contact;
     if (!given("--rereference-stretch") && !given("--rereference-every")) r.rereference = c.rereference;
+    if (!given("--mass-scaling-factor") && !given("--mass-scaling-dt")) r.mass_scaling = c.mass_scaling;
   }
   if (r.end_time) {
     c.end_time = *r.end_time;

@@ -13,10 +13,13 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/progress.hpp>
 #include <rkpm/io/solver_output.hpp>
+#include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/io/pvd_series.hpp>
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/checkpoint.hpp>
@@ -183,6 +186,7 @@ class run_observer {
     }
     for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
       columns.emplace_back(name);
+    if (s.options().mass_scaling.enabled()) columns.emplace_back("kinetic_to_internal");
     return columns;
   }
 
@@ -214,10 +218,27 @@ class run_observer {
     }
     for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
       row.push_back(value);
+    if (s.options().mass_scaling.enabled()) {
+      row.push_back(s.energy().internal > 0.0 ? s.energy().kinetic / s.energy().internal : 0.0);
+      warn_if_dynamic(s);
+    }
     history_.row(row);
     record_.history_rows.push_back(std::move(row));
   }
 
+  // One line, once, when a mass-scaled run has left the quasi-static regime (85).
+  void warn_if_dynamic(const Solver& s) {
+    const quasi_static_check& q = s.quasi_static();
+    if (!q.left() || warned_dynamic_) return;
+    warned_dynamic_ = true;
+    fmt::print(stderr,
+               "rkpm_run: warning: the mass-scaled run left the quasi-static regime at t = {:.6g} s: its kinetic energy "
+               "exceeded {:g}% of its internal energy (mass scaling factor {:.4g}); lower the factor or the target "
+               "step, or read the results as dynamic\n",
+               q.left_at, 100.0 * s.options().mass_scaling.max_kinetic_to_internal, s.mass_scaling_factor());
+  }
+
+  bool warned_dynamic_ = false;
   std::filesystem::path dir_;
   typename Case::parameters params_;
   run_record record_;

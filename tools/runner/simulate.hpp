@@ -73,6 +73,10 @@ json run_identity(const run_request& request, const typename Case::parameters& p
   if (request.rereference.enabled())
     id["rereference"] = {{"max_stretch", request.rereference.max_stretch},
                          {"every_steps", request.rereference.every_steps}};
+  if (request.mass_scaling.enabled())
+    id["mass_scaling"] = {{"factor", request.mass_scaling.factor},
+                          {"target_dt_s", request.mass_scaling.target_time_step},
+                          {"max_kinetic_to_internal", request.mass_scaling.max_kinetic_to_internal}};
   if constexpr (is_file_case<Case>) id["case_file"] = std::filesystem::absolute(params.file).string();
   id["parameters"] = case_parameters<Case>(params);
   return id;
@@ -229,6 +233,21 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   energy = json::object();
   for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
     energy[std::string(name)] = value;
+  if (s.options().mass_scaling.enabled()) {
+    // The mass added per body (kg per metre of depth in plane strain, kg axisymmetric) and how
+    // far the run stayed from dynamics (85).
+    std::vector<double> added(static_cast<std::size_t>(s.bodies()), 0.0);
+    for (index_t I = 0; I < s.model().particle_count(); ++I)
+      added[static_cast<std::size_t>(s.body_of_particle(I))] += s.mass()[I] - s.physical_mass()[I];
+    const quasi_static_check& q = s.quasi_static();
+    json& m = summary["scaled_masses"];
+    m["factor"] = s.mass_scaling_factor();
+    m["added_mass_per_body"] = added;
+    m["max_kinetic_to_internal"] = std::isfinite(q.worst_ratio) ? q.worst_ratio : 1e300;
+    m["max_kinetic_to_internal_at_s"] = q.worst_time;
+    m["quasi_static"] = !q.left();
+    if (q.left()) m["left_quasi_static_at_s"] = q.left_at;
+  }
   if (s.options().rereference.enabled()) {
     summary["rereferences"] = s.rereferences();
     summary["rereference_times_s"] = s.rereference_times();

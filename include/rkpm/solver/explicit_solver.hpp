@@ -33,6 +33,7 @@
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/energy.hpp>
 #include <rkpm/solver/fields.hpp>
+#include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/solver/point_materials.hpp>
 #include <rkpm/solver/problem.hpp>
 #include <rkpm/solver/step_timeline.hpp>
@@ -71,7 +72,7 @@ class explicit_solver {
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) {
     sections(r, *this);
-    f_ext_.restore(timeline_.time, initial_positions(), mass_);
+    f_ext_.restore(timeline_.time, initial_positions(), physical_mass());
   }
   bool between_steps() const { return timeline_.between_steps(); }
 
@@ -114,7 +115,14 @@ class explicit_solver {
   // Each tool's impulse since t = 0 (N s): the mean force over [t1, t2] is (I(t2) - I(t1)) / (t2 - t1).
   const std::vector<vec2>& tool_impulses() const { return contact_.impulse; }
   double max_penetration() const { return contact_.max_penetration; }
+  // The lumped masses the step moves (scaled, with mass scaling: options().mass_scaling), and
+  // the physical ones (the same vector without scaling).
   const std::vector<double>& mass() const { return mass_; }
+  const std::vector<double>& physical_mass() const { return physical_mass_.empty() ? mass_ : physical_mass_; }
+  // The mass scaling factor (84) (1 without), and the kinetic to internal energy ratio (85) seen
+  // so far.
+  double mass_scaling_factor() const { return mass_factor_; }
+  const quasi_static_check& quasi_static() const { return quasi_static_; }
   const std::vector<vec2>& coefficients() const { return d_; }
   const std::vector<vec2>& coefficient_velocities() const { return v_; }
   const std::vector<vec2>& internal_force() const { return f_int_; }
@@ -161,6 +169,7 @@ class explicit_solver {
     a.part(s.points_);    // material states
     a.part(s.clock_);
     a.part(s.contact_);   // what the run reports of contact, then the policy's state
+    if (s.options_.mass_scaling.enabled()) a.value("solver.quasi_static", s.quasi_static_);
   }
 
   template <class Archive, class Self>
@@ -171,6 +180,7 @@ class explicit_solver {
   void derive_from_model(std::vector<velocity_constraint> constraints,
                          std::optional<std::vector<index_t>> slaves = std::nullopt);
   bool rereference_due() const;
+  void scale_masses();
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).
   // On several processes an error of the force loop on one rank (an inverted point) is thrown on
@@ -192,6 +202,9 @@ class explicit_solver {
   contact_stage<Ct> contact_;
   run_options options_;
   std::vector<double> mass_;
+  std::vector<double> physical_mass_;  // empty without mass scaling
+  double mass_factor_ = 1.0;
+  quasi_static_check quasi_static_;
   body_forces f_ext_;
   std::vector<vec2> d_, v_, a_, v_half_prev_, f_int_;
   std::vector<vec2> d_start_;  // d(n) at the particles the constraints touch (constraints_.touched())

@@ -35,8 +35,9 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
   mass_ = materials_.lumped_masses(model_);
   d_.assign(model_.particle_count(), vec2::Zero());
   v_ = a_ = v_half_prev_ = f_int_ = d_;
-  f_ext_ = body_forces(prob.body_force, std::move(prob.body_force_field), model_.particles.position, mass_);
   points_ = point_materials<G, M>(model_, materials_);
+  if (options_.mass_scaling.enabled()) scale_masses();
+  f_ext_ = body_forces(prob.body_force, std::move(prob.body_force_field), model_.particles.position, physical_mass());
   // A rank's part of a model has them already: the whole model's (parallel/distributed_problem.hpp).
   if (!model_.is_part()) add_axis_constraints<G>(model_, options_.axis_tolerance, prob.constraints);
   derive_from_model(std::move(prob.constraints), std::move(prob.slave_particles));
@@ -44,7 +45,7 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
   constraints_.apply(0.0, v_);
   v_half_prev_ = v_;
   compute_internal_force();
-  for (index_t I = 0; I < model_.particle_count(); ++I) a_[I] = (f_ext_.at(I, mass_) - f_int_[I]) / mass_[I];
+  for (index_t I = 0; I < model_.particle_count(); ++I) a_[I] = (f_ext_.at(I, physical_mass()) - f_int_[I]) / mass_[I];
   timeline_.dt = clock_.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
   timeline_.check_budget(options_);
   energy_.initial_kinetic = energy_.kinetic = kinetic_energy();
@@ -75,21 +76,22 @@ void explicit_solver<G, M, Ct>::step() {
   exec::exchange(exchange_point::after_contact, model_.own, d_, v_);
   // The ghosts' v(n+1/2) as well, for the constraints' work at the step's end.
   exec::parallel_for(model_.own.ghost_particles, [&](index_t I) { v_half_prev_[I] = v_[I]; });
-  f_ext_.advance(timeline_.time + dt, initial_positions(), mass_);
+  const std::vector<double>& weighed = physical_mass();
+  f_ext_.advance(timeline_.time + dt, initial_positions(), weighed);
   // v(n+1/2) is final: keep it, and book the work of f_int(n) and f_ext over d(n+1) - d(n) =
   // dt v(n+1/2) (the trapezoidal rule's first half; the second follows f_int(n+1)).
   const auto [work_before, external] = sums_([&](index_t I, block_sums<2>::sums& s) {
     v_half_prev_[I] = v_[I];
     const vec2 dd = dt * v_[I];
     s[0] += 0.5 * f_int_[I].dot(dd);
-    s[1] += f_ext_.over_step(I, mass_).dot(dd);
+    s[1] += f_ext_.over_step(I, weighed).dot(dd);
   });
   compute_internal_force();
   // The kinetic energy here unless the constraints change v(n+1) afterwards.
   const bool constrained_end = constraints_.size() > 0;
   const auto [work_after, kinetic] = sums_([&](index_t I, block_sums<2>::sums& s) {
     s[0] += 0.5 * f_int_[I].dot(dt * v_[I]);
-    a_[I] = (f_ext_.at(I, mass_) - f_int_[I]) / mass_[I];
+    a_[I] = (f_ext_.at(I, weighed) - f_int_[I]) / mass_[I];
     v_[I] += 0.5 * dt * a_[I];
     if (!constrained_end) s[1] += 0.5 * mass_[I] * v_[I].squaredNorm();
   });
@@ -103,10 +105,28 @@ void explicit_solver<G, M, Ct>::step() {
   }
   timeline_.finish_step();
   energy_.record();
+  if (options_.mass_scaling.enabled())
+    quasi_static_.observe(options_.mass_scaling, timeline_.time, options_.end_time, energy_.kinetic, energy_.internal);
   if (rereference_due()) rereference();
   else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);
+}
+
+// Mass scaling (84): every mass times one factor, given or found from the unscaled step (a power
+// iteration on the unscaled masses); the physical masses kept for the body forces.
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::scale_masses() {
+  const mass_scaling_policy& p = options_.mass_scaling;
+  double dt0 = 0.0;
+  if (p.target_time_step > 0.0) {
+    time_step_controller<G> unscaled;
+    unscaled.start(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_);
+    dt0 = options_.time_step_fraction * unscaled.reference_stable_step();
+  }
+  mass_factor_ = p.factor_for(dt0);
+  physical_mass_ = mass_;
+  for (double& m : mass_) m *= mass_factor_;
 }
 
 template <Geometry G, Material M, Contact Ct>

@@ -15,6 +15,7 @@
 #include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/solver/constraints.hpp>
+#include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/solver/rereference.hpp>
 
 namespace rkpm {
@@ -75,6 +76,7 @@ struct run_options {
   double axis_tolerance = 1e-9;        // relative to the body size: particles with r below lie on the axis
   index_t max_steps = 50'000'000;      // a run needing more steps is refused (a wrong constant, not a long run)
   rereference_policy rereference;      // when the kernels are rebuilt in the current configuration (never by default)
+  mass_scaling_policy mass_scaling;    // masses scaled for a slow process (none by default)
 
   void validate() const;
 };
@@ -88,6 +90,7 @@ inline void run_options::validate() const {
   if (time_step_update_interval < 1) fail("time step update interval must be at least 1 step");
   if (max_steps < 1) fail("max_steps {} must be at least 1", max_steps);
   rereference.validate();
+  mass_scaling.validate();
 }
 
 }  // namespace rkpm

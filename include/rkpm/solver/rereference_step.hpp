@@ -90,7 +90,7 @@ void explicit_solver<G, M, Ct>::rereference() {
 
   // 4. The step's other ingredients at the new reference.
   compute_internal_force();
-  for (index_t I = 0; I < model_.particle_count(); ++I) a_[I] = (f_ext_.at(I, mass_) - f_int_[I]) / mass_[I];
+  for (index_t I = 0; I < model_.particle_count(); ++I) a_[I] = (f_ext_.at(I, physical_mass()) - f_int_[I]) / mass_[I];
   timeline_.dt = clock_.rereference(model_, materials_.moduli(), mass_, points_.deformation_gradients(), options_,
                                     timeline_.time, timeline_.steps);
   energy_.kinetic = kinetic_energy();

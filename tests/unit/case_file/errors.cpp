@@ -229,3 +229,29 @@ TEST_CASE("re-referencing keys: read, and refused with the fix when they cannot 
 }
 
 }  // namespace test_unit_case_file_errors
+
+namespace test_unit_case_file_errors {
+
+TEST_CASE("mass scaling keys: read, and refused with the fix when they cannot mean anything") {
+  case_json doc = taylor();
+  doc["mass_scaling"] = {{"factor", 100.0}};
+  CHECK(test::load_document(doc).mass_scaling.factor == 100.0);
+  doc["mass_scaling"] = {{"target_dt_s", 2e-6}, {"max_kinetic_to_internal", 0.1}};
+  const auto read = test::load_document(doc).mass_scaling;
+  CHECK(read.target_time_step == 2e-6);
+  CHECK(read.max_kinetic_to_internal == 0.1);
+  doc["mass_scaling"] = {{"factor", 0.5}};
+  CHECK(reports(load_error(doc), "/mass_scaling/factor", "is below 1"));
+  doc["mass_scaling"] = {{"target_dt_s", -1.0}};
+  CHECK(reports(load_error(doc), "/mass_scaling/target_dt_s", "is not positive"));
+  doc["mass_scaling"] = {{"factor", 10.0}, {"max_kinetic_to_internal", 0.0}};
+  CHECK(reports(load_error(doc), "/mass_scaling/max_kinetic_to_internal", "is not positive"));
+  doc["mass_scaling"] = {{"factor", 10.0}, {"target_dt_s", 1e-6}};
+  CHECK(reports(load_error(doc), "/mass_scaling", "not both"));
+  doc["mass_scaling"] = case_json::object();
+  CHECK(reports(load_error(doc), "/mass_scaling", "give \"factor\""));
+  doc["mass_scaling"] = {{"factr", 100.0}};
+  CHECK(contains(load_error(doc), "factor"));
+}
+
+}  // namespace test_unit_case_file_errors

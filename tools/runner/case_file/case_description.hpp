@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/solver/rereference.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/gmsh_body.hpp>
@@ -183,6 +184,7 @@ struct case_description {
   std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
   int snapshots = 20, history_rows = 400;
   rereference_policy rereference;  // "rereference": {"max_stretch": 1.8} or {"every_steps": 50}
+  mass_scaling_policy mass_scaling;  // "mass_scaling": {"factor": 100} or {"target_dt_s": 2e-6}
   std::vector<history_description> histories;
 };
 

@@ -63,7 +63,7 @@ inline case_description read_case(diagnostics& d, const json& document, const st
   c.document = document;
   object_reader r(d, document, "", {"name", "description", "constants", "geometry", "method", "support_factor",
                                     "end_time_s", "bodies", "tools", "contact", "output", "histories",
-                                    "rereference"});
+                                    "rereference", "mass_scaling"});
   if (!r.valid()) return c;
   c.name = r.text("name", "taylor_bar").value_or("");
   if (c.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
@@ -128,6 +128,27 @@ inline case_description read_case(diagnostics& d, const json& document, const st
                                                 c.rereference.every_steps));
     if (!rr.find("max_stretch") && !rr.find("every_steps"))
       d.error(r.at("rereference"), "give \"max_stretch\" (e.g. 1.8) or \"every_steps\" (e.g. 50)");
+  }
+  if (const json* k = r.find("mass_scaling")) {
+    // Masses scaled for a process slower than the waves (docs/method.md section 5.10).
+    object_reader mr(d, *k, r.at("mass_scaling"), {"factor", "target_dt_s", "max_kinetic_to_internal"});
+    mass_scaling_policy& m = c.mass_scaling;
+    m.factor = mr.number_or("factor", 1.0);
+    m.target_time_step = mr.number_or("target_dt_s", 0.0);
+    m.max_kinetic_to_internal = mr.number_or("max_kinetic_to_internal", m.max_kinetic_to_internal);
+    if (mr.find("factor") && !(m.factor >= 1.0))
+      d.error(mr.at("factor"), fmt::format("{} is below 1; give the factor on every mass, e.g. 100", m.factor));
+    if (mr.find("target_dt_s") && !(m.target_time_step > 0.0))
+      d.error(mr.at("target_dt_s"), fmt::format("{} s is not positive; give the time step wanted, e.g. 2e-6",
+                                                m.target_time_step));
+    if (mr.find("max_kinetic_to_internal") && !(m.max_kinetic_to_internal > 0.0))
+      d.error(mr.at("max_kinetic_to_internal"),
+              fmt::format("{} is not positive; give the bound of the quasi-static regime, e.g. 0.05",
+                          m.max_kinetic_to_internal));
+    if (mr.find("factor") && mr.find("target_dt_s"))
+      d.error(r.at("mass_scaling"), "give \"factor\" or \"target_dt_s\", not both");
+    if (!mr.find("factor") && !mr.find("target_dt_s"))
+      d.error(r.at("mass_scaling"), "give \"factor\" (e.g. 100) or \"target_dt_s\" (e.g. 2e-6)");
   }
   return c;
 }
