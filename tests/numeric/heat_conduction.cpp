@@ -269,6 +269,32 @@ TEST_CASE("heat: the stable step's power iteration finds lambda_max(C^-1 K) from
   CHECK(measured >= 0.99 * exact);
 }
 
+TEST_CASE("heat: a uniform heat per volume, scattered from the points, heats every particle alike") {
+  // p W/m^3 at every point of an insulated axisymmetric body: s_I = p V_I and C_I = rho c_p V_I,
+  // so T^h rises by p t / (rho c_p) everywhere (R = 0 for a uniform field); a particle's heat Q_J
+  // distributed through its row keeps its total.
+  const double p = 5e7, t = 2.0, T0 = 300.0;
+  const discrete_model m = grid_model<quadrature::q2, axi>(vec2(0.0, 0.0), vec2(0.02, 0.01), 9, 5);
+  heat_conduction<axi> heat(m, {steel}, lumped_masses(m, rho), T0);
+  std::vector<double> s(m.particle_count(), 0.0);
+  thermal::add_point_heat(m, std::vector<double>(m.point_count(), p), s);
+  double total = 0.0, volume = 0.0;
+  for (const double v : s) total += v;
+  for (index_t q = 0; q < m.point_count(); ++q) volume += m.points.weight[q];
+  CHECK(total == doctest::Approx(p * volume).epsilon(1e-13));
+  heat.advance(t, nullptr, s);
+  std::vector<double> Tq;
+  heat.point_temperatures(Tq);
+  const double rise = p * t / (rho * cp_steel);
+  CHECK(max_error(m, heat.particle_temperatures(), [&](const vec2&) { return T0 + rise; }) < 1e-11 * (T0 + rise));
+  for (const double T : Tq) CHECK(T == doctest::Approx(T0 + rise).epsilon(1e-12));
+  std::vector<double> s2(m.particle_count(), 0.0);
+  thermal::add_particle_heat(m, 17, 250.0, s2);
+  double total2 = 0.0;
+  for (const double v : s2) total2 += v;
+  CHECK(total2 == doctest::Approx(250.0).epsilon(1e-14));
+}
+
 TEST_CASE("heat: a checkpoint continues bit for bit") {
   const double L = 0.02;
   const int n = 7;

@@ -10,7 +10,8 @@
 // Coupling to the mechanical solver (how the explicit step is meant to call it):
 //   heat_conduction<G> heat(solver.model(), {props}, solver.masses(), T0, boundaries);
 //   each mechanical step (or every few, with their summed dt):
-//     s_I = beta * plastic power scattered to coefficients + frictional heat   (W, #particles)
+//     s = 0; add_point_heat(model, beta * plastic power per volume, s);      (W, #particles;
+//     add_particle_heat(model, J, frictional heat at slave J, s);             thermal/heat_sources.hpp)
 //     heat.advance(dt, F_of_point, s);   // sub-cycles itself when dt > stable_time_step()
 //     the material update reads heat.temperature_at_point(q)
 //   after a re-reference: heat.rebind(new_model, new_masses), then set_coefficients() from the
@@ -37,6 +38,7 @@
 #include <rkpm/thermal/boundary_heat.hpp>
 #include <rkpm/thermal/conduction_operator.hpp>
 #include <rkpm/thermal/heat_ledger.hpp>
+#include <rkpm/thermal/heat_sources.hpp>
 #include <rkpm/thermal/thermal_boundary.hpp>
 #include <rkpm/thermal/thermal_properties.hpp>
 #include <rkpm/thermal/thermal_step_bound.hpp>
@@ -180,6 +182,11 @@ class heat_conduction {
     return out;
   }
   double temperature_at_point(index_t q) const { return m_->at_points.interpolate(q, T_); }
+  // T^h(X_q) at every point (#points), for the material update.
+  void point_temperatures(std::vector<double>& out) const {
+    out.resize(m_->point_count());
+    exec::parallel_for(m_->point_count(), [&](index_t q) { out[q] = temperature_at_point(q); });
+  }
 
   const std::vector<thermal_boundary>& boundaries() const { return boundaries_; }
   // The areas A_J = L_J omega(x_J) from positions x (#particles, current or reference): sets made
