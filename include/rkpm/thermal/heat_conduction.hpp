@@ -8,7 +8,7 @@
 // ledger that balances to round-off (93).
 //
 // Coupling to the mechanical solver (how the explicit step is meant to call it):
-//   heat_conduction<G> heat(solver.model(), {props}, solver.masses(), T0, boundaries);
+//   heat_conduction<G> heat(solver.model(), {props}, solver.physical_mass(), T0, boundaries);
 //   each mechanical step (or every few, with their summed dt):
 //     s = 0; add_point_heat(model, beta * plastic power per volume, s);      (W, #particles;
 //     add_particle_heat(model, J, frictional heat at slave J, s);             thermal/heat_sources.hpp)
@@ -69,6 +69,7 @@ class heat_conduction {
     for (std::size_t b = 0; b < props_.size(); ++b) {
       names_.push_back(fmt::format("body {}", b));
       props_[b].validate(names_[b]);
+      k_of_T_ = k_of_T_ || static_cast<bool>(props_[b].conductivity_of_T);
     }
     T_.assign(m.particle_count(), initial_temperature);
     rebind(m, mass);
@@ -234,17 +235,25 @@ class heat_conduction {
 
   // R = K(T) T with the conductances of configuration F (87), and their growth since the last
   // measurement (90).
+  // A k(T) is evaluated here, point by point on one thread (a function of the user's, such as a
+  // parsed expression, need not be thread-safe), before the parallel traversal.
   template <class PointF>
   void evaluate_conduction(const PointF& F) {
+    if (k_of_T_) {
+      point_k_.resize(m_->point_count());
+      for (index_t q = 0; q < m_->point_count(); ++q) {
+        const auto b = static_cast<std::size_t>(m_->bodies.of_point(q));
+        point_k_[q] = props_[b].k(temperature_at_point(q), body_name(b));
+      }
+    }
     conductance_scale_ = conduction_residual(
-        *m_, T_, R_, D_, tile_max_, tile_bad_, [&](index_t q, double Tq) { return conductance(F, q, Tq); },
+        *m_, T_, R_, D_, tile_max_, tile_bad_, [&](index_t q, double) { return conductance(F, q); },
         [&](index_t q, const mat2& D) { return bound_.conductance_ratio(q, D); });
   }
 
   template <class PointF>
-  mat2 conductance(const PointF& F, index_t q, double Tq) const {
-    const auto b = static_cast<std::size_t>(m_->bodies.of_point(q));
-    const double k = props_[b].k(Tq, body_name(b));
+  mat2 conductance(const PointF& F, index_t q) const {
+    const double k = k_of_T_ ? point_k_[q] : props_[static_cast<std::size_t>(m_->bodies.of_point(q))].conductivity;
     if constexpr (std::is_same_v<PointF, std::nullptr_t>)
       return k * mat2::Identity();
     else if constexpr (std::is_invocable_r_v<mat3, const PointF&, index_t>)
@@ -297,6 +306,8 @@ class heat_conduction {
   boundary_areas area_;  // A_J per set
   std::vector<mat2> D_;  // each point's conductance, last evaluated
   thermal_step_bound bound_;
+  bool k_of_T_ = false;
+  std::vector<double> point_k_;  // k(T^h(X_q)) when a body's k depends on T
   std::vector<double> tile_max_;
   std::vector<index_t> tile_bad_;
   double conductance_scale_ = 1.0, capacity_scale_ = 1.0;

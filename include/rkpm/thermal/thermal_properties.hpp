@@ -2,7 +2,8 @@
 // thermal_properties: a body's conductivity k (W/(m K)) and specific heat c_p (J/(kg K)) for heat
 // conduction (docs/method.md section 5.9, (86)), constant or functions of the temperature in kelvin.
 // The density is the mechanical body's: the heat capacity of particle I is c_p m_I with the lumped
-// mass m_I of (38), (88).
+// mass m_I of (38), (88). heat_conduction calls the functions from one thread (a parsed
+// expression need not be thread-safe), k at every quadrature point and c_p at every particle.
 
 #include <cmath>
 #include <functional>
