@@ -295,6 +295,33 @@ TEST_CASE("heat: a uniform heat per volume, scattered from the points, heats eve
   CHECK(total2 == doctest::Approx(250.0).epsilon(1e-14));
 }
 
+TEST_CASE("heat: boundary sets from the body's surface chain (a named edge's particles, by index)") {
+  const double ri = 0.05, ro = 0.1, Hz = 0.02;
+  const int nr = 11, nz = 5;
+  const discrete_model m = grid_model<quadrature::q2, axi>(vec2(ri, 0), vec2(ro, Hz), nr, nz);
+  const auto& surface = m.bodies.surface("heat test");
+  REQUIRE(surface.size() == 1);
+  // The outer edge's particles, given in descending order: one run, in the chain's order.
+  auto outer = column(nr, nz, nr - 1);
+  std::reverse(outer.begin(), outer.end());
+  const auto runs = thermal::chain_runs(surface[0], outer);
+  REQUIRE(runs.size() == 1);
+  CHECK(runs[0].particle == column(nr, nz, nr - 1));  // counter-clockwise: bottom to top at r = r_o
+  CHECK_FALSE(runs[0].closed);
+  // The whole surface: one closed run whose lengths add up to the perimeter.
+  const auto whole = thermal::chain_runs(surface[0], surface[0].node);
+  REQUIRE(whole.size() == 1);
+  CHECK(whole[0].closed);
+  const auto b = thermal_boundary::on_chain(boundary_kind::heat_flux, whole[0].particle, m.particles.position, true, 1.0);
+  double perimeter = 0.0;
+  for (const double l : b.length) perimeter += l;
+  CHECK(perimeter == doctest::Approx(2.0 * (ro - ri) + 2.0 * Hz).epsilon(1e-14));
+  // The first two particles of the bottom edge, its right corner and one of the top: three runs.
+  const std::vector<index_t> scattered{0, 1, nr - 1, nr * (nz - 1) + 5};
+  const auto parts = thermal::chain_runs(surface[0], scattered);
+  CHECK(parts.size() == 3);
+}
+
 TEST_CASE("heat: a checkpoint continues bit for bit") {
   const double L = 0.02;
   const int n = 7;

@@ -13,6 +13,7 @@
 //   particle  #J particle indices
 //   length    #J tributary lengths, m
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <span>
@@ -21,6 +22,7 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
 
 namespace rkpm::thermal {
 
@@ -50,6 +52,34 @@ inline std::vector<double> tributary_lengths(std::span<const index_t> chain, std
     length[b] += half;
   }
   return length;
+}
+
+// The parts of a body's boundary chain (model_bodies::surface(), whose nodes are the particles)
+// that a set of particles covers, each as an ordered run of consecutive chain nodes: a named edge
+// of a case file (its particles by index, tools/runner/case_file/body_edges.hpp) becomes runs for
+// on_chain(). A run covers whole segments only (a lone particle is a run of one, no length); a
+// closed chain all of whose nodes are in the set is one closed run.
+struct chain_run {
+  std::vector<index_t> particle;
+  bool closed = false;
+};
+inline std::vector<chain_run> chain_runs(const boundary_chain& chain, std::span<const index_t> particles) {
+  const auto n = static_cast<index_t>(chain.node.size());
+  std::vector<char> in(n, 0);
+  for (index_t k = 0; k < n; ++k) in[k] = std::find(particles.begin(), particles.end(), chain.node[k]) != particles.end();
+  if (chain.closed && std::all_of(in.begin(), in.end(), [](char c) { return c != 0; })) return {{chain.node, true}};
+  // A closed chain is read from a node outside the set, so that no run is cut at the chain's start.
+  index_t first = 0;
+  if (chain.closed)
+    while (in[first]) ++first;
+  std::vector<chain_run> runs;
+  for (index_t j = 0; j < n; ++j) {
+    const index_t k = (first + j) % n;
+    if (!in[k]) continue;
+    if (j == 0 || !in[(k + n - 1) % n]) runs.emplace_back();
+    runs.back().particle.push_back(chain.node[k]);
+  }
+  return runs;
 }
 
 struct thermal_boundary {
