@@ -211,6 +211,14 @@ class johnson_cook {
     return hencky_stress(e.frame, e.volumetric, e.dev, bulk_, mu_);
   }
 
+  // The point at temperature T (K), from a conducted field (thermal/heat_coupling.hpp), with the
+  // flow stress at rest and T*^m that the state keeps for it.
+  void set_temperature(state_type& s, double T) const {
+    s.temperature = T;
+    s.homologous_power = flow_.homologous_power(T);
+    s.flow_stress_at_rest = flow_.flow_stress(s.equivalent_plastic_strain, flow_point{0.0, T});
+  }
+
   double density() const { return constants_.density; }
   double dilatational_wave_speed() const { return constants_.dilatational_wave_speed(); }
   const elastic_constants& constants() const { return constants_; }

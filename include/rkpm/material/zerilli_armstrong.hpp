@@ -137,6 +137,11 @@ class zerilli_armstrong {
   const elastic_constants& constants() const { return constants_; }
   const flow_type& flow() const { return flow_; }
   const zerilli_armstrong_heating& heating() const { return heating_; }
+  // The point at temperature T (K), from a conducted field (thermal/heat_coupling.hpp).
+  template <class State>
+  void set_temperature(State& s, double T) const {
+    s.temperature = T;
+  }
   // K per J/m^3 of plastic work: beta / (rho0 c_p).
   double heat_per_work() const { return heat_per_work_; }
 

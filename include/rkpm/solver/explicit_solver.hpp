@@ -59,14 +59,27 @@ class explicit_solver {
   template <class Observer>
   void run(Observer&& observe, index_t every = 0) {
     observe(*this);
-    while (timeline_.before(options_.end_time)) {
-      timeline_.approach_end(options_);
-      step();
-      if (every > 0 && timeline_.steps % every == 0 && timeline_.before(options_.end_time)) observe(*this);
+    while (before_end()) {
+      step_to_end();
+      if (every > 0 && timeline_.steps % every == 0 && before_end()) observe(*this);
     }
     observe(*this);
   }
   void run() { run([](const explicit_solver&) {}); }
+  // Whether the run has yet to reach options().end_time, and one step toward it as run() takes
+  // them (the last one or two shortened to land on it).
+  bool before_end() const { return timeline_.before(options_.end_time); }
+  void step_to_end() {
+    timeline_.approach_end(options_);
+    step();
+  }
+  // Sets every point's temperature, T(q) in K, between steps (coupled heat conduction,
+  // thermal/heat_coupling.hpp): the material's set_temperature keeps what the state derives from it.
+  template <class PointTemperature>
+  void set_point_temperatures(PointTemperature&& T) {
+    if (!between_steps()) fail("set_point_temperatures() between steps only");
+    points_.update_states([&](index_t q, state_type& s) { materials_.at_point(q).set_temperature(s, T(q)); });
+  }
   // Checkpoint sections (io/checkpoint.hpp; solver/checkpoint.hpp writes and reads the files),
   // whole only between steps: between_steps() is false after an error thrown inside step().
   void save(io::checkpoint_writer& w) const { sections(w, *this); }

@@ -98,6 +98,11 @@ class point_materials {
   // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
   double plastic_work() const { return plastic_work_; }
   const std::vector<state_type>& states() const { return state_; }
+  // f(q, state) on every point's state, between steps (explicit_solver::set_point_temperatures).
+  template <class F>
+  void update_states(F&& f) {
+    for (index_t q = 0; q < static_cast<index_t>(state_.size()); ++q) f(q, state_[q]);
+  }
   // F, det F and tau at point q at the last evaluation (tau from the material, given `material`,
   // when it can recompute it).
   mat3 deformation_gradient(index_t q) const { return deformation_block(q).full(); }

@@ -366,4 +366,23 @@ TEST_CASE("johnson_cook: the return converges when the root lies just past the r
   }
 }
 
+TEST_CASE("johnson_cook::set_temperature: a point at a conducted temperature is the point that starts there") {
+  // A conducted field sets T between steps (thermal/heat_coupling.hpp): the state must then be the
+  // one initial_state gives at T, with the same plastic strain (its cached flow stress and T*^m).
+  const mat::johnson_cook jc(copper, copper_flow, mat::johnson_cook_heating{383.0, 0.9, 294.0});
+  for (const double T : {294.0, 600.0, 1000.0}) {
+    auto s = jc.initial_state(0.2);
+    jc.set_temperature(s, T);
+    const mat::johnson_cook there(copper, copper_flow, mat::johnson_cook_heating{383.0, 0.9, T});
+    const auto fresh = there.initial_state(0.2);
+    CHECK(s.temperature == T);
+    CHECK(s.homologous_power == fresh.homologous_power);
+    CHECK(s.flow_stress_at_rest == fresh.flow_stress_at_rest);
+  }
+  auto s = jc.initial_state(0.2);
+  const double cold = s.flow_stress_at_rest;
+  jc.set_temperature(s, 900.0);
+  CHECK(s.flow_stress_at_rest < 0.8 * cold);  // (1 - T*^m) with T* = 0.57
+}
+
 }  // namespace test_unit_material_johnson_cook

@@ -1,0 +1,220 @@
+#pragma once
+// heat_coupling<Solver>: heat conduction coupled to the explicit solver (docs/method.md section
+// 5.11, (98)-(101)): the mechanical step runs as before, and every few steps the heat of those
+// steps goes into the conduction field (thermal/heat_conduction.hpp), which then gives every
+// quadrature point its temperature back:
+//   plastic heat   beta times the plastic work of each point since the last exchange (98),
+//                  scattered to the coefficients through the point's row N_I(x_q);
+//   friction       at each slave in contact with a tool, -f_t . v_T (the tangential force
+//                  against the slip), a fraction to the body at the slave's row, the rest to
+//                  the tool (99);
+//   tool contact   h_c (T_tool - T^h(x_J)) A_J at each slave in contact with a tool (100), A_J the
+//                  slave's share of the body's boundary in the current configuration;
+//   temperatures   T_q = T^h(x_q) written into the point states (the material's
+//                  set_temperature, which keeps what the state derives from it), so the flow
+//                  stress of the next steps follows the field (101).
+// The exchange interval is the largest whole number of mechanical steps within the conduction's
+// stable step (at most max_interval): conduction costs a pass over the points per exchange, not
+// per step. Between exchanges a material with a temperature heats its points adiabatically, as
+// without conduction; the exchange replaces that by the conducted field, whose heat includes it.
+// One process, a Lagrangian run (no re-referencing), particles at the mesh nodes.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/solver/fields.hpp>
+#include <rkpm/thermal/heat_conduction.hpp>
+#include <rkpm/thermal/heat_sources.hpp>
+
+namespace rkpm::thermal {
+
+// Heat exchanged with the rigid tools (100) and made by friction on them (99).
+struct tool_heat {
+  std::vector<time_value> temperature;  // K, one per tool (empty: no conduction to the tools)
+  double conductance = 0.0;             // h_c, W/(m^2 K)
+  double friction_to_body = 0.5;        // the share of the frictional heat that enters the body
+
+  void validate(std::size_t tools) const {
+    if (!temperature.empty() && temperature.size() != tools)
+      fail("tool heat: {} tool temperatures for {} tools: give one per tool (or none)", temperature.size(), tools);
+    if (!(conductance >= 0.0) || !std::isfinite(conductance))
+      fail("tool heat: the interface conductance {} W/(m^2 K) must be finite and not negative", conductance);
+    if (!(friction_to_body >= 0.0 && friction_to_body <= 1.0))
+      fail("tool heat: the share of the frictional heat that enters the body, {}, must lie in [0, 1]",
+           friction_to_body);
+  }
+};
+
+// The heat flows of the coupling, J since the start, beside the conduction's ledger: plastic +
+// friction_to_body + from_tools are its `sources`.
+struct coupling_ledger {
+  double plastic = 0.0;          // beta W_p (98)
+  double friction = 0.0;         // made by friction (99), body and tools together
+  double friction_to_body = 0.0;
+  double from_tools = 0.0;       // conducted from the tools into the body (100)
+};
+
+template <class Solver>
+class heat_coupling {
+ public:
+  using geometry_type = typename Solver::geometry_type;
+
+  // bodies: one thermal_properties per body; taylor_quinney: beta per body (98).
+  heat_coupling(const Solver& s, std::vector<thermal_properties> bodies, std::vector<double> taylor_quinney,
+                double initial_temperature, std::vector<thermal_boundary> boundaries = {}, tool_heat tools = {},
+                index_t max_interval = 50)
+      : heat_(s.model(), std::move(bodies), s.physical_mass(), initial_temperature, std::move(boundaries)),
+        beta_(std::move(taylor_quinney)),
+        tools_(std::move(tools)),
+        max_interval_(max_interval) {
+    const discrete_model& m = s.model();
+    if (s.options().rereference.enabled())
+      fail("heat conduction with re-referencing is not available yet: run without \"rereference\"");
+    if (!m.bodies.nodes_are_particles())
+      fail("heat conduction's contact areas need the particles at the mesh nodes (make_grid_particles with "
+           "make_grid_mesh, or particles from the mesh)");
+    if (beta_.size() != static_cast<std::size_t>(std::max<index_t>(1, s.bodies())))
+      fail("heat coupling: {} Taylor-Quinney fractions for {} bodies: give one per body", beta_.size(), s.bodies());
+    for (double b : beta_)
+      if (!(b >= 0.0 && b <= 1.0)) fail("heat coupling: a Taylor-Quinney fraction of {} must lie in [0, 1]", b);
+    tools_.validate(std::ranges::size(s.contact().tools()));
+    if (max_interval_ < 1) fail("heat coupling: max_interval {} must be at least 1", max_interval_);
+    heat_.impose_fixed_temperatures();
+    last_work_.assign(m.point_count(), 0.0);
+    for (index_t q = 0; q < m.point_count(); ++q) last_work_[q] = plastic_work(s, q);
+    point_heat_.assign(m.point_count(), 0.0);
+    rate_.assign(m.particle_count(), 0.0);
+    heat_in_.assign(m.particle_count(), 0.0);
+    touching_.assign(m.particle_count(), 0);
+    area_.assign(m.particle_count(), 0.0);
+    boundary_edges_ = m.mesh.boundary_edges();
+  }
+
+  // One mechanical step, and the exchange when its interval is complete.
+  void step(Solver& s) {
+    if (steps_since_ == 0) write_temperatures(s);
+    const double start = s.time();
+    s.step_to_end();
+    const double dt = s.time() - start;
+    ++steps_since_;
+    since_ += dt;
+    contact_heat(s, dt);
+    if (steps_since_ >= interval(s)) exchange(s);
+  }
+  // Steps to the solver's end time.
+  void run(Solver& s) {
+    while (s.before_end()) step(s);
+    if (steps_since_ > 0) exchange(s);
+  }
+
+  const heat_conduction<geometry_type>& conduction() const { return heat_; }
+  const coupling_ledger& ledger() const { return ledger_; }
+  // The temperatures at the particles, T^h(x_I) (K).
+  std::vector<double> particle_temperatures() const { return heat_.particle_temperatures(); }
+  index_t exchanges() const { return exchanges_; }
+
+ private:
+  static double plastic_work(const Solver& s, index_t q) {
+    if constexpr (requires { s.point_states()[q].plastic_work; }) return s.point_states()[q].plastic_work;
+    else return 0.0;
+  }
+
+  index_t interval(const Solver& s) const {
+    const double bound = heat_.stable_time_step() / s.time_step();
+    return std::clamp<index_t>(static_cast<index_t>(std::floor(bound)), 1, max_interval_);
+  }
+
+  // (101): every point at the field's temperature, when the material has one.
+  void write_temperatures(Solver& s) const {
+    if constexpr (requires(typename Solver::state_type& st) { st.temperature = 0.0; })
+      s.set_point_temperatures([&](index_t q) { return heat_.temperature_at_point(q); });
+  }
+
+  // (99)-(100) of the step just taken, as heat (J) on the coefficients. A slave's area is half of
+  // each boundary edge whose two ends touch the same tool, in the current configuration, times
+  // omega (16): the body's contact length, without the sides at its corners.
+  void contact_heat(const Solver& s, double dt) {
+    if constexpr (requires { s.contact().active_pairs(); }) {
+      const auto pairs = s.contact().active_pairs();
+      if (pairs.empty()) return;
+      const discrete_model& m = s.model();
+      const double t = s.time();
+      const std::vector<vec2> x = s.particle_positions();
+      const std::vector<vec2>& v = s.coefficient_velocities();
+      for (const auto& p : pairs) {
+        const index_t J = s.slave_particles()[p.slave];
+        const auto& tool = s.contact().tools()[p.tool];
+        const vec2 v_tool = (tool.displacement(t) - tool.displacement(t - dt)) / dt;
+        const vec2 rel = m.at_particles.interpolate(J, v) - v_tool;
+        const vec2 slip = rel - rel.dot(p.normal) * p.normal;
+        const double friction = std::max(0.0, -p.tangential_force.dot(slip)) * dt;
+        ledger_.friction += friction;
+        ledger_.friction_to_body += tools_.friction_to_body * friction;
+        add_particle_heat(m, J, tools_.friction_to_body * friction, heat_in_);
+        touching_[J] = p.tool + 1;
+      }
+      if (!tools_.temperature.empty()) {
+        for (const auto& [a, b] : boundary_edges_)
+          if (touching_[a] != 0 && touching_[a] == touching_[b]) {
+            const double half = 0.5 * (x[b] - x[a]).norm();
+            area_[a] += half * geometry_type::weight_factor(x[a]);
+            area_[b] += half * geometry_type::weight_factor(x[b]);
+          }
+        for (const auto& p : pairs) {
+          const index_t J = s.slave_particles()[p.slave];
+          const double T_tool = tools_.temperature[p.tool](t);
+          const double conducted = tools_.conductance * (T_tool - heat_.temperature_at_particle(J)) * area_[J] * dt;
+          ledger_.from_tools += conducted;
+          add_particle_heat(m, J, conducted, heat_in_);
+        }
+      }
+      for (const auto& p : pairs) {
+        const index_t J = s.slave_particles()[p.slave];
+        touching_[J] = 0;
+        area_[J] = 0.0;
+      }
+    }
+  }
+
+  // (98) and the conduction over the interval; then the points' temperatures (101).
+  void exchange(Solver& s) {
+    const discrete_model& m = s.model();
+    for (index_t q = 0; q < m.point_count(); ++q) {
+      const double W = plastic_work(s, q);
+      const double beta = beta_[beta_.size() == 1 ? 0 : static_cast<std::size_t>(m.bodies.of_point(q))];
+      point_heat_[q] = beta * (W - last_work_[q]);  // J per reference volume
+      ledger_.plastic += point_heat_[q] * m.points.weight[q];
+      last_work_[q] = W;
+    }
+    add_point_heat(m, point_heat_, heat_in_);
+    for (std::size_t I = 0; I < rate_.size(); ++I) {
+      rate_[I] = heat_in_[I] / since_;
+      heat_in_[I] = 0.0;
+    }
+    heat_.update_boundary_geometry(s.particle_positions());
+    heat_.advance(since_, [&](index_t q) { return s.point_relative_deformation_gradient(q); }, rate_);
+    since_ = 0.0;
+    steps_since_ = 0;
+    ++exchanges_;
+  }
+
+  heat_conduction<geometry_type> heat_;
+  std::vector<double> beta_;
+  tool_heat tools_;
+  index_t max_interval_;
+  std::vector<double> last_work_;  // W_p per point at the last exchange (J/m^3)
+  std::vector<double> point_heat_;  // beta (W_p - W_p^last) per point (J/m^3)
+  std::vector<index_t> touching_;   // per particle: 1 + the tool it touches this step, or 0
+  std::vector<double> area_;        // per particle: its contact area this step
+  std::vector<double> heat_in_;    // J per coefficient since the last exchange
+  std::vector<double> rate_;       // W per coefficient over the interval
+  std::vector<std::array<index_t, 2>> boundary_edges_;
+  coupling_ledger ledger_;
+  double since_ = 0.0;
+  index_t steps_since_ = 0;
+  index_t exchanges_ = 0;
+};
+
+}  // namespace rkpm::thermal

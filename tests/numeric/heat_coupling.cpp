@@ -1,0 +1,143 @@
+// Heat conduction coupled to the mechanics (thermal/heat_coupling.hpp, docs/method.md section
+// 5.11), against theory:
+//   - plastic heat (98): a block in homogeneous uniaxial strain, insulated: the heat is beta
+//     times the solver's plastic work, and the capacity-weighted mean temperature rises by
+//     beta W_p / (M c_p), to round-off;
+//   - friction (99): a block sliding on a fixed tool under a body force g decelerates at mu g;
+//     friction makes mu M g integral v dt of heat, the contact's lost work, and the body keeps the
+//     stated share;
+//   - tool contact (100): a block resting on a tool at T_t with conductance h and a small Biot
+//     number h H / k cools as one lump, T = T_t + (T0 - T_t) exp(-h W t / (M c_p)).
+// The constants are chosen for short runs (a specific heat of 1 J/(kg K) in the contact test),
+// not for a material.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include <rkpm/thermal/heat_coupling.hpp>
+
+#include "support/solver_fixtures.hpp"
+
+namespace test_numeric_heat_coupling {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
+using namespace rkpm;
+
+namespace {
+
+// The capacity-weighted mean temperature sum C_I T_I / sum C_I (K).
+template <class Coupling>
+double mean_temperature(const Coupling& h) {
+  const auto& C = h.conduction().capacities();
+  const auto& T = h.conduction().coefficients();
+  double ct = 0.0, c = 0.0;
+  for (std::size_t I = 0; I < C.size(); ++I) ct += C[I] * T[I], c += C[I];
+  return ct / c;
+}
+
+const material::elastic_constants steel{200e9, 0.3, 7800.0};
+
+}  // namespace
+
+TEST_CASE("plastic heat (98): beta times the plastic work, the mean temperature up by beta W_p / (M c_p)") {
+  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
+                     material::j2_plasticity<material::hardening::linear>, contact::none>;
+  const double L = 10e-3, H = 6e-3, V = 20.0, c_p = 460.0, beta = 0.9, T0 = 300.0;
+  problem_for<cfg> p{.particles = make_grid_particles<2>(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7), 2.0),
+                     .mesh = make_grid_mesh(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7)),
+                     .material = material::j2_plasticity<material::hardening::linear>(steel, {400e6, 2e9}),
+                     .contact = {},
+                     .initial_velocity = [&](const vec2& X) { return vec2(V * X[0] / L, 0.0); }};
+  for (index_t I = 0; I < p.particles.size(); ++I) {
+    const double vx = V * p.particles.position[I][0] / L;
+    p.constraints.push_back({I, 0, [vx](double) { return vx; }});
+    p.constraints.push_back({I, 1, {}});
+  }
+  run_options o;
+  o.end_time = 0.01 * L / V;  // 1% strain: several times the yield strain
+  auto s = make_solver<cfg>(std::move(p), o);
+  thermal::heat_coupling<decltype(s)> heat(s, {{.conductivity = 50.0, .specific_heat = c_p}}, {beta}, T0);
+  heat.run(s);
+  const double M = std::accumulate(s.physical_mass().begin(), s.physical_mass().end(), 0.0);
+  MESSAGE("plastic work ", s.energy().plastic, " J/m, heat ", heat.ledger().plastic, " J/m over ",
+          heat.exchanges(), " exchanges; mean T ", mean_temperature(heat), " K");
+  REQUIRE(s.energy().plastic > 0.0);
+  CHECK(heat.ledger().plastic == doctest::Approx(beta * s.energy().plastic).epsilon(1e-12));
+  CHECK(heat.conduction().ledger().sources == doctest::Approx(heat.ledger().plastic).epsilon(1e-12));
+  CHECK(heat.conduction().ledger().relative_imbalance() < 1e-12);
+  CHECK(mean_temperature(heat) - T0 == doctest::Approx(beta * s.energy().plastic / (M * c_p)).epsilon(1e-9));
+}
+
+TEST_CASE("friction (99) and tool contact (100)") {
+  using contact_t = contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>;
+  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain, material::elastic,
+                     contact_t>;
+  const double W = 20e-3, H = 5e-3, mu = 0.3, g = 2000.0;
+  const auto block = [&](vec2 v0, double friction) {
+    problem_for<cfg> p{.particles = make_grid_particles<2>(vec2(0, 0), vec2(W, H), Eigen::Vector2i(21, 6), 2.0),
+                       .mesh = make_grid_mesh(vec2(0, 0), vec2(W, H), Eigen::Vector2i(21, 6)),
+                       .material = material::elastic(steel),
+                       .contact = contact_t({contact::rigid_tool("floor", {vec2(-1.0, 0.0), vec2(1.0, 0.0)},
+                                                                 contact::side::left)},
+                                            contact::friction::coulomb{friction}),
+                       .initial_velocity = [v0](const vec2&) { return v0; }};
+    p.body_force = vec2(0.0, -g);
+    return p;
+  };
+
+  SUBCASE("a block sliding at v0 = 2 m/s heats at mu M g v, and keeps the stated share") {
+    const double v0 = 2.0, T = 2e-4, share = 0.6;
+    run_options o;
+    o.end_time = T;
+    auto s = make_solver<cfg>(block(vec2(v0, 0.0), mu), o);
+    thermal::heat_coupling<decltype(s)> heat(s, {{.conductivity = 50.0, .specific_heat = 460.0}}, {0.0}, 300.0, {},
+                                             {.friction_to_body = share});
+    heat.run(s);
+    const double M = std::accumulate(s.physical_mass().begin(), s.physical_mass().end(), 0.0);
+    const double exact = mu * M * g * (v0 * T - 0.5 * mu * g * T * T);
+    MESSAGE("friction heat ", heat.ledger().friction, " J/m (mu M g integral v dt ", exact, "), contact work ",
+            s.energy().contact, ", to the body ", heat.ledger().friction_to_body);
+    CHECK(heat.ledger().friction == doctest::Approx(exact).epsilon(0.03));
+    CHECK(heat.ledger().friction == doctest::Approx(-s.energy().contact).epsilon(0.03));
+    CHECK(heat.ledger().friction_to_body == doctest::Approx(share * heat.ledger().friction).epsilon(1e-12));
+    CHECK(heat.conduction().ledger().sources == doctest::Approx(heat.ledger().friction_to_body).epsilon(1e-12));
+  }
+
+  SUBCASE("a block on a cold tool cools as one lump at the interface conductance") {
+    const double h = 2e5, c_p = 1.0, k = h * H / 0.01, T0 = 1000.0, Tt = 300.0;  // Biot number 0.01
+    const double M0 = steel.density * W * H, tau = M0 * c_p / (h * W);
+    run_options o;
+    o.end_time = tau;
+    auto s = make_solver<cfg>(block(vec2::Zero(), 0.0), o);
+    thermal::heat_coupling<decltype(s)> heat(s, {{.conductivity = k, .specific_heat = c_p}}, {0.0}, T0, {},
+                                             {.temperature = {Tt}, .conductance = h});
+    heat.run(s);
+    const double exact = Tt + (T0 - Tt) * std::exp(-s.time() / tau);
+    MESSAGE("mean T after one time constant ", mean_temperature(heat), " K (lumped ", exact, "), heat from the tool ",
+            heat.ledger().from_tools, " J/m, ", heat.exchanges(), " exchanges, ", s.steps(), " steps");
+    CHECK(mean_temperature(heat) == doctest::Approx(exact).epsilon(0.02));
+    CHECK(heat.conduction().ledger().stored == doctest::Approx(heat.ledger().from_tools).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("heat coupling's errors name the fix") {
+  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain, material::elastic,
+                     contact::none>;
+  problem_for<cfg> p{.particles = make_grid_particles<2>(vec2(0, 0), vec2(1, 1), Eigen::Vector2i(5, 5), 2.0),
+                     .mesh = make_grid_mesh(vec2(0, 0), vec2(1, 1), Eigen::Vector2i(5, 5)),
+                     .material = material::elastic(steel),
+                     .contact = {}};
+  run_options o;
+  o.end_time = 1e-3;
+  auto s = make_solver<cfg>(std::move(p), o);
+  using coupling = thermal::heat_coupling<decltype(s)>;
+  const thermal::thermal_properties props{.conductivity = 50.0, .specific_heat = 460.0};
+  CHECK_THROWS_WITH_AS(coupling(s, {props}, {1.5}, 300.0), doctest::Contains("must lie in [0, 1]"), error);
+  CHECK_THROWS_WITH_AS(coupling(s, {props}, {0.9, 0.9}, 300.0), doctest::Contains("give one per body"), error);
+  CHECK_THROWS_WITH_AS(coupling(s, {props}, {0.9}, 300.0, {}, {.temperature = {300.0}}),
+                       doctest::Contains("1 tool temperatures for 0 tools"), error);
+  CHECK_THROWS_WITH_AS(coupling(s, {props}, {0.9}, 300.0, {}, {.conductance = -1.0}),
+                       doctest::Contains("must be finite and not negative"), error);
+}
+
+}  // namespace test_numeric_heat_coupling
