@@ -322,6 +322,64 @@ TEST_CASE("heat: boundary sets from the body's surface chain (a named edge's par
   CHECK(parts.size() == 3);
 }
 
+TEST_CASE("heat: two bodies keep their own properties and exchange no heat through the kernels") {
+  // Steel and copper strips side by side (kernels kept apart, solver/body_models.hpp), each with the
+  // mode cos(pi (X - X0) / L) on T0: each decays at its own alpha, and each keeps its heat.
+  const double L = 0.02, H = 0.004, gap = 0.002, T0 = 500.0, A = 50.0;
+  const thermal_properties copper{400.0, 385.0};
+  const double rho_cu = 8930.0, alpha_cu = 400.0 / (rho_cu * 385.0);
+  particle_set<2> particles;
+  background_mesh mesh;
+  const int nx = 21, ny = 3;
+  for (const double x0 : {0.0, L + gap})
+    append_body(particles, mesh, make_grid_particles<2>(vec2(x0, 0), vec2(x0 + L, H), Eigen::Vector2i(nx, ny), 2.0),
+                make_grid_mesh(vec2(x0, 0), vec2(x0 + L, H), Eigen::Vector2i(nx, ny)));
+  const discrete_model m = build_model_of_bodies<K, C, quadrature::q4_vci, plane>(particles, mesh);
+  REQUIRE(m.bodies.count() == 2);
+  std::vector<double> mass(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I)
+    mass[I] = (m.bodies.of_particle(I) == 0 ? rho : rho_cu) * m.lumped_volume[I];
+  heat_conduction<plane> heat(m, {steel, copper}, mass, T0);
+  heat.set_temperature_field([&](const vec2& X) {
+    const double x0 = X[0] < L + 0.5 * gap ? 0.0 : L + gap;
+    return T0 + A * std::cos(pi * (X[0] - x0) / L);
+  });
+  const auto body_heat = [&](index_t b) {
+    double sum = 0.0;
+    for (index_t I = 0; I < m.particle_count(); ++I)
+      if (m.bodies.of_particle(I) == b) sum += heat.capacities()[I] * heat.coefficients()[I];
+    return sum;
+  };
+  const double heat0 = body_heat(0), heat1 = body_heat(1);
+  // The mode's amplitude in body b: the capacity-weighted projection of the coefficients on it
+  // (orthogonal to the other modes, which the initial field holds at O(h^2) and which decay faster).
+  const auto amplitude = [&](index_t b) {
+    double num = 0.0, den = 0.0;
+    for (index_t I = 0; I < m.particle_count(); ++I) {
+      if (m.bodies.of_particle(I) != b) continue;
+      const double x0 = b == 0 ? 0.0 : L + gap, phi = std::cos(pi * (m.particles.position[I][0] - x0) / L);
+      num += heat.capacities()[I] * (heat.coefficients()[I] - T0) * phi;
+      den += heat.capacities()[I] * phi * phi;
+    }
+    return num / den;
+  };
+  // The decay rates between two times (the initial field's O(h^2) offset cancels).
+  const double tau = L * L / (alpha_cu * pi * pi), t1 = 0.1 * tau, t2 = tau;
+  heat.advance(t1);
+  const double steel1 = amplitude(0), copper1 = amplitude(1);
+  heat.advance(t2 - t1);
+  const double steel_rate = std::log(steel1 / amplitude(0)) / (t2 - t1),
+               copper_rate = std::log(copper1 / amplitude(1)) / (t2 - t1);
+  MESSAGE("decay rates: steel ", steel_rate, " 1/s (theory ", alpha * pi * pi / (L * L), "), copper ", copper_rate,
+          " (", alpha_cu * pi * pi / (L * L), ")");
+  // Measured: steel 0.72% slow (the spatial error at 21 particles along), copper 0.08% fast (the
+  // same, and the forward Euler error of copper's step, which sets the step of both).
+  CHECK(steel_rate == doctest::Approx(alpha * pi * pi / (L * L)).epsilon(0.015));
+  CHECK(copper_rate == doctest::Approx(alpha_cu * pi * pi / (L * L)).epsilon(0.015));
+  CHECK(std::abs(body_heat(0) - heat0) < 1e-13 * heat0);
+  CHECK(std::abs(body_heat(1) - heat1) < 1e-13 * heat1);
+}
+
 TEST_CASE("heat: a checkpoint continues bit for bit") {
   const double L = 0.02;
   const int n = 7;
