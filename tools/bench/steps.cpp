@@ -5,9 +5,11 @@
 //   BM_contact_enforce<Q>/threads contact().enforce alone, on copies of the predicted state
 //   BM_step_material/m            q2, one thread: m = 0 J2 with linear hardening (the case's),
 //                                 m = 1 Johnson-Cook with the same curve at the reference rate
-//                                 and copper's rate and heating terms; the ratio prices its update
-//   BM_material_ratio             the two stepped in turn: jc_over_j2, the median of the ratios
-//                                 of steps taken side by side (the number to quote)
+//                                 and copper's rate and heating terms, m = 2 Zerilli-Armstrong fcc
+//                                 with the case's yield stress as C0 and copper's other constants
+//   BM_material_ratio/m           J2 and law m (1 Johnson-Cook, 2 Zerilli-Armstrong) stepped in
+//                                 turn: over_j2, the median of the ratios of steps taken side by
+//                                 side (the number to quote)
 // Every benchmark builds a fresh solver and advances it by warm_up_steps() before timing, and
 // runs a fixed number of iterations, so each repetition times the same window of the impact.
 // Wall-clock time (the work is spread over OpenMP threads).
@@ -79,25 +81,34 @@ void BM_step_material(benchmark::State& state) {
     for (auto _ : state) s.step();
     set_counters(state, s);
     state.SetLabel("j2+linear");
-  } else {
+  } else if (state.range(0) == 1) {
     auto s = make_johnson_cook_solver<quadrature::q2>(1);
     warm_up(s, 1);
     for (auto _ : state) s.step();
     set_counters(state, s);
     state.SetLabel("johnson_cook");
+  } else {
+    auto s = make_zerilli_armstrong_solver<quadrature::q2>(1);
+    warm_up(s, 1);
+    for (auto _ : state) s.step();
+    set_counters(state, s);
+    state.SetLabel("zerilli_armstrong");
   }
 }
 
-// The same two materials stepped in turn, each step timed apart (manual time: the Johnson-Cook
-// step), so that every J2 step has a Johnson-Cook step at the same moment of the impact and of
-// the host's load beside it: the counter jc_over_j2 is the median over the pairs of their ratio,
-// which a burst of load on a noisy host moves far less than two separate timings.
-void BM_material_ratio(benchmark::State& state) {
+// J2 and another law stepped in turn, each step timed apart (manual time: the other law's step),
+// so that every J2 step has a step of the other law at the same moment of the impact and of the
+// host's load beside it: the counter over_j2 is the median over the pairs of their ratio, which
+// a burst of load on a noisy host moves far less than two separate timings.
+// make() builds the other law's solver in place (a solver is not moved: its parts refer to each
+// other).
+template <class Make>
+void material_ratio(benchmark::State& state, Make make, const char* label) {
   omp_set_num_threads(1);
   auto j2 = make_wall_solver<quadrature::q2>(1);
-  auto jc = make_johnson_cook_solver<quadrature::q2>(1);
+  auto law = make();
   warm_up(j2, 1);
-  warm_up(jc, 1);
+  warm_up(law, 1);
   std::vector<double> ratios;
   const auto timed = [](auto& s) {
     const auto start = std::chrono::steady_clock::now();
@@ -106,14 +117,23 @@ void BM_material_ratio(benchmark::State& state) {
   };
   for (auto _ : state) {
     const double t_j2 = timed(j2);
-    const double t_jc = timed(jc);
-    ratios.push_back(t_jc / t_j2);
-    state.SetIterationTime(t_jc);
+    const double t_law = timed(law);
+    ratios.push_back(t_law / t_j2);
+    state.SetIterationTime(t_law);
   }
   std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
-  state.counters["jc_over_j2"] = ratios[ratios.size() / 2];
-  set_counters(state, jc);
-  state.SetLabel("johnson_cook / j2+linear, step by step");
+  state.counters["over_j2"] = ratios[ratios.size() / 2];
+  set_counters(state, law);
+  state.SetLabel(label);
+}
+
+void BM_material_ratio(benchmark::State& state) {
+  if (state.range(0) == 1)
+    material_ratio(state, [] { return make_johnson_cook_solver<quadrature::q2>(1); },
+                   "johnson_cook / j2+linear, step by step");
+  else
+    material_ratio(state, [] { return make_zerilli_armstrong_solver<quadrature::q2>(1); },
+                   "zerilli_armstrong / j2+linear, step by step");
 }
 
 // enforce() corrects d and v in place, so every call gets fresh copies of the state it would
@@ -153,8 +173,8 @@ constexpr int step_iterations = 300;
 BENCHMARK(BM_step<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step<quadrature::q9>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_step_material)->Arg(0)->Arg(1)->Arg(0)->Arg(1)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_material_ratio)->Iterations(step_iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_step_material)->Arg(0)->Arg(1)->Arg(2)->Arg(0)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_material_ratio)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step_resolution)->Arg(1)->Arg(2)->Arg(3)->Iterations(100)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step_rolling<quadrature::q2>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_step_rolling<quadrature::q4>)->Arg(1)->Arg(2)->Iterations(step_iterations)->UseRealTime()->Unit(benchmark::kMillisecond);

@@ -12,6 +12,7 @@
 #include <rkpm/correction/polynomial_bases.hpp>
 #include <rkpm/kernel/cubic_spline.hpp>
 #include <rkpm/material/johnson_cook.hpp>
+#include <rkpm/material/zerilli_armstrong.hpp>
 #include <rkpm/quadrature/cell_rules.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
@@ -86,6 +87,32 @@ solver_for<johnson_cook_method<Q>> make_johnson_cook_solver(int resolution) {
       .initial_velocity = std::move(p.initial_velocity),
   };
   return make_solver<johnson_cook_method<Q>>(std::move(q), bench_options());
+}
+
+// The same bar with Zerilli-Armstrong fcc plasticity (docs/method.md section 4.6): the athermal
+// stress C0 is the case's yield stress, so that the same points yield first, with OFHC copper's
+// hardening, thermal and rate constants (C2 = 890 MPa, C3 = 0.0028 /K, C4 = 0.000115 /K; Zerilli &
+// Armstrong, J. Appl. Phys. 61 (1987) 1816) and heating (c_p = 383 J/(kg K), 294 K at the start).
+template <class Q>
+using zerilli_armstrong_method = typename wall_method<Q>::template with_material<material::zerilli_armstrong>;
+
+template <class Q>
+solver_for<zerilli_armstrong_method<Q>> make_zerilli_armstrong_solver(int resolution) {
+  const bar::parameters b{};
+  auto p = bar::build<wall_contact>(b, resolution);
+  using za = material::hardening::zerilli_armstrong;
+  problem<material::zerilli_armstrong, wall_contact> q{
+      .particles = std::move(p.particles),
+      .mesh = std::move(p.mesh),
+      .material = material::zerilli_armstrong(
+          p.material.constants(),
+          za{.lattice = za::lattice_type::fcc, .C0 = b.yield_stress_Pa, .C1 = 0.0, .C2 = 890e6, .C3 = 0.0028,
+             .C4 = 0.000115, .C5 = 0.0, .n = 0.0, .reference_rate = 1.0, .melt_temperature = 1356.0},
+          material::zerilli_armstrong_heating{.specific_heat = 383.0, .initial_temperature = 294.0}),
+      .contact = std::move(p.contact),
+      .initial_velocity = std::move(p.initial_velocity),
+  };
+  return make_solver<zerilli_armstrong_method<Q>>(std::move(q), bench_options());
 }
 
 // Steps taken before timing, 200 per unit of resolution (the step shrinks with the spacing), so
