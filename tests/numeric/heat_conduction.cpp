@@ -380,6 +380,34 @@ TEST_CASE("heat: two bodies keep their own properties and exchange no heat throu
   CHECK(std::abs(body_heat(1) - heat1) < 1e-13 * heat1);
 }
 
+TEST_CASE("heat: rebind takes new masses and keeps the field, the time and the ledger") {
+  // Twice the masses: twice the capacities, so lambda_max(C^-1 K) halves and the stable step doubles
+  // (a warm-started measurement), and a source heats half as fast.
+  const double L = 0.02;
+  const int n = 9;
+  const discrete_model m = grid_model<quadrature::q2, plane>(vec2(0, 0), vec2(L, L), n, n);
+  const std::vector<double> mass = lumped_masses(m, rho);
+  heat_conduction<plane> heat(m, {steel}, mass, 300.0);
+  std::vector<double> rate(m.particle_count(), 0.0);  // 1e6 W/m^3 everywhere: the field stays uniform
+  thermal::add_point_heat(m, std::vector<double>(m.point_count(), 1e6), rate);
+  heat.advance(1.0, nullptr, rate);
+  const double step = heat.stable_time_step(), time = heat.time(), sources = heat.ledger().sources;
+  const std::vector<double> T = heat.coefficients();
+  std::vector<double> heavier = mass;
+  for (double& v : heavier) v *= 2.0;
+  heat.rebind(m, heavier);
+  CHECK(heat.coefficients() == T);
+  CHECK(heat.time() == time);
+  CHECK(heat.ledger().sources == sources);
+  MESSAGE("stable step ", step, " s, with twice the masses ", heat.stable_time_step(), " s");
+  CHECK(heat.stable_time_step() == doctest::Approx(2.0 * step).epsilon(1e-3));
+  heat.advance(1.0, nullptr, rate);
+  double worst = 0.0;
+  for (index_t I = 0; I < m.particle_count(); ++I)
+    worst = std::max(worst, std::abs(heat.coefficients()[I] - T[I] - 1e6 / (2.0 * rho * cp_steel)));
+  CHECK(worst < 1e-10);
+}
+
 TEST_CASE("heat: a checkpoint continues bit for bit") {
   const double L = 0.02;
   const int n = 7;
