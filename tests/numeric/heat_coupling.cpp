@@ -13,8 +13,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <memory>
+#include <type_traits>
 #include <numeric>
 
+#include <rkpm/solver/checkpoint.hpp>
 #include <rkpm/thermal/heat_coupling.hpp>
 
 #include "support/solver_fixtures.hpp"
@@ -24,16 +28,6 @@ namespace test_numeric_heat_coupling {  // compiled with its neighbours in one p
 using namespace rkpm;
 
 namespace {
-
-// The capacity-weighted mean temperature sum C_I T_I / sum C_I (K).
-template <class Coupling>
-double mean_temperature(const Coupling& h) {
-  const auto& C = h.conduction().capacities();
-  const auto& T = h.conduction().coefficients();
-  double ct = 0.0, c = 0.0;
-  for (std::size_t I = 0; I < C.size(); ++I) ct += C[I] * T[I], c += C[I];
-  return ct / c;
-}
 
 const material::elastic_constants steel{200e9, 0.3, 7800.0};
 
@@ -56,16 +50,18 @@ TEST_CASE("plastic heat (98): beta times the plastic work, the mean temperature 
   run_options o;
   o.end_time = 0.01 * L / V;  // 1% strain: several times the yield strain
   auto s = make_solver<cfg>(std::move(p), o);
-  thermal::heat_coupling<decltype(s)> heat(s, {{.conductivity = 50.0, .specific_heat = c_p}}, {beta}, T0);
-  heat.run(s);
+  auto heat = std::make_shared<thermal::heat_coupling<decltype(s)>>(
+      s, std::vector<thermal::thermal_properties>{{.conductivity = 50.0, .specific_heat = c_p}}, std::vector{beta}, T0);
+  s.attach(heat);
+  s.run();
   const double M = std::accumulate(s.physical_mass().begin(), s.physical_mass().end(), 0.0);
-  MESSAGE("plastic work ", s.energy().plastic, " J/m, heat ", heat.ledger().plastic, " J/m over ",
-          heat.exchanges(), " exchanges; mean T ", mean_temperature(heat), " K");
+  MESSAGE("plastic work ", s.energy().plastic, " J/m, heat ", heat->ledger().plastic, " J/m over ",
+          heat->exchanges(), " exchanges; mean T ", heat->mean_temperature(), " K");
   REQUIRE(s.energy().plastic > 0.0);
-  CHECK(heat.ledger().plastic == doctest::Approx(beta * s.energy().plastic).epsilon(1e-12));
-  CHECK(heat.conduction().ledger().sources == doctest::Approx(heat.ledger().plastic).epsilon(1e-12));
-  CHECK(heat.conduction().ledger().relative_imbalance() < 1e-12);
-  CHECK(mean_temperature(heat) - T0 == doctest::Approx(beta * s.energy().plastic / (M * c_p)).epsilon(1e-9));
+  CHECK(heat->ledger().plastic == doctest::Approx(beta * s.energy().plastic).epsilon(1e-12));
+  CHECK(heat->conduction().ledger().sources == doctest::Approx(heat->ledger().plastic).epsilon(1e-12));
+  CHECK(heat->conduction().ledger().relative_imbalance() < 1e-12);
+  CHECK(heat->mean_temperature() - T0 == doctest::Approx(beta * s.energy().plastic / (M * c_p)).epsilon(1e-9));
 }
 
 TEST_CASE("friction (99) and tool contact (100)") {
@@ -90,17 +86,20 @@ TEST_CASE("friction (99) and tool contact (100)") {
     run_options o;
     o.end_time = T;
     auto s = make_solver<cfg>(block(vec2(v0, 0.0), mu), o);
-    thermal::heat_coupling<decltype(s)> heat(s, {{.conductivity = 50.0, .specific_heat = 460.0}}, {0.0}, 300.0, {},
-                                             {.friction_to_body = share});
-    heat.run(s);
+    auto heat = std::make_shared<thermal::heat_coupling<decltype(s)>>(
+        s, std::vector<thermal::thermal_properties>{{.conductivity = 50.0, .specific_heat = 460.0}},
+        std::vector{0.0}, 300.0, std::vector<thermal::thermal_boundary>{},
+        thermal::tool_heat{.friction_to_body = share});
+    s.attach(heat);
+    s.run();
     const double M = std::accumulate(s.physical_mass().begin(), s.physical_mass().end(), 0.0);
     const double exact = mu * M * g * (v0 * T - 0.5 * mu * g * T * T);
-    MESSAGE("friction heat ", heat.ledger().friction, " J/m (mu M g integral v dt ", exact, "), contact work ",
-            s.energy().contact, ", to the body ", heat.ledger().friction_to_body);
-    CHECK(heat.ledger().friction == doctest::Approx(exact).epsilon(0.03));
-    CHECK(heat.ledger().friction == doctest::Approx(-s.energy().contact).epsilon(0.03));
-    CHECK(heat.ledger().friction_to_body == doctest::Approx(share * heat.ledger().friction).epsilon(1e-12));
-    CHECK(heat.conduction().ledger().sources == doctest::Approx(heat.ledger().friction_to_body).epsilon(1e-12));
+    MESSAGE("friction heat ", heat->ledger().friction, " J/m (mu M g integral v dt ", exact, "), contact work ",
+            s.energy().contact, ", to the body ", heat->ledger().friction_to_body);
+    CHECK(heat->ledger().friction == doctest::Approx(exact).epsilon(0.03));
+    CHECK(heat->ledger().friction == doctest::Approx(-s.energy().contact).epsilon(0.03));
+    CHECK(heat->ledger().friction_to_body == doctest::Approx(share * heat->ledger().friction).epsilon(1e-12));
+    CHECK(heat->conduction().ledger().sources == doctest::Approx(heat->ledger().friction_to_body).epsilon(1e-12));
   }
 
   SUBCASE("a block on a cold tool cools as one lump at the interface conductance") {
@@ -109,15 +108,64 @@ TEST_CASE("friction (99) and tool contact (100)") {
     run_options o;
     o.end_time = tau;
     auto s = make_solver<cfg>(block(vec2::Zero(), 0.0), o);
-    thermal::heat_coupling<decltype(s)> heat(s, {{.conductivity = k, .specific_heat = c_p}}, {0.0}, T0, {},
-                                             {.temperature = {Tt}, .conductance = h});
-    heat.run(s);
+    auto heat = std::make_shared<thermal::heat_coupling<decltype(s)>>(
+        s, std::vector<thermal::thermal_properties>{{.conductivity = k, .specific_heat = c_p}}, std::vector{0.0}, T0,
+        std::vector<thermal::thermal_boundary>{}, thermal::tool_heat{.temperature = {Tt}, .conductance = h});
+    s.attach(heat);
+    s.run();
     const double exact = Tt + (T0 - Tt) * std::exp(-s.time() / tau);
-    MESSAGE("mean T after one time constant ", mean_temperature(heat), " K (lumped ", exact, "), heat from the tool ",
-            heat.ledger().from_tools, " J/m, ", heat.exchanges(), " exchanges, ", s.steps(), " steps");
-    CHECK(mean_temperature(heat) == doctest::Approx(exact).epsilon(0.02));
-    CHECK(heat.conduction().ledger().stored == doctest::Approx(heat.ledger().from_tools).epsilon(1e-9));
+    MESSAGE("mean T after one time constant ", heat->mean_temperature(), " K (lumped ", exact, "), heat from the tool ",
+            heat->ledger().from_tools, " J/m, ", heat->exchanges(), " exchanges, ", s.steps(), " steps");
+    CHECK(heat->mean_temperature() == doctest::Approx(exact).epsilon(0.02));
+    CHECK(heat->conduction().ledger().stored == doctest::Approx(heat->ledger().from_tools).epsilon(1e-9));
   }
+}
+
+TEST_CASE("heat coupling across a checkpoint: the run continued from it is the uninterrupted one, bit for bit") {
+  using contact_t = contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>;
+  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain, material::elastic,
+                     contact_t>;
+  const auto sliding = [] {
+    problem_for<cfg> p{
+        .particles = make_grid_particles<2>(vec2(0, 0), vec2(20e-3, 5e-3), Eigen::Vector2i(11, 4), 2.0),
+        .mesh = make_grid_mesh(vec2(0, 0), vec2(20e-3, 5e-3), Eigen::Vector2i(11, 4)),
+        .material = material::elastic(steel),
+        .contact = contact_t({contact::rigid_tool("floor", {vec2(-1.0, 0.0), vec2(1.0, 0.0)}, contact::side::left)},
+                             contact::friction::coulomb{0.3}),
+        .initial_velocity = [](const vec2&) { return vec2(2.0, 0.0); }};
+    p.body_force = vec2(0.0, -2000.0);
+    run_options o;
+    o.end_time = 1e-4;
+    return make_solver<cfg>(std::move(p), o);
+  };
+  const auto attach = [](auto& s) {
+    auto heat = std::make_shared<thermal::heat_coupling<std::remove_reference_t<decltype(s)>>>(
+        s, std::vector<thermal::thermal_properties>{{.conductivity = 50.0, .specific_heat = 460.0}},
+        std::vector{0.0}, 300.0, std::vector<thermal::thermal_boundary>{},
+        thermal::tool_heat{.temperature = {900.0}, .conductance = 1e6, .friction_to_body = 0.5});
+    s.attach(heat);
+    return heat;
+  };
+  auto whole = sliding();
+  auto whole_heat = attach(whole);
+  whole.run();
+
+  auto first = sliding();
+  auto first_heat = attach(first);
+  for (int n = 0; n < 37; ++n) first.step_to_end();
+  const auto path = std::filesystem::temp_directory_path() / "rkpm_heat_coupling_restart.rkpmcp";
+  write_checkpoint(first, path, cfg::name());
+  auto second = sliding();
+  auto second_heat = attach(second);
+  read_checkpoint(second, path, cfg::name());
+  std::filesystem::remove(path);
+  second.run();
+  REQUIRE(whole_heat->ledger().from_tools > 0.0);
+  CHECK(second.steps() == whole.steps());
+  CHECK(second_heat->conduction().coefficients() == whole_heat->conduction().coefficients());
+  CHECK(second_heat->ledger().friction == whole_heat->ledger().friction);
+  CHECK(second_heat->ledger().from_tools == whole_heat->ledger().from_tools);
+  CHECK(second.coefficients() == whole.coefficients());
 }
 
 TEST_CASE("heat coupling's errors name the fix") {
@@ -131,12 +179,13 @@ TEST_CASE("heat coupling's errors name the fix") {
   o.end_time = 1e-3;
   auto s = make_solver<cfg>(std::move(p), o);
   using coupling = thermal::heat_coupling<decltype(s)>;
-  const thermal::thermal_properties props{.conductivity = 50.0, .specific_heat = 460.0};
-  CHECK_THROWS_WITH_AS(coupling(s, {props}, {1.5}, 300.0), doctest::Contains("must lie in [0, 1]"), error);
-  CHECK_THROWS_WITH_AS(coupling(s, {props}, {0.9, 0.9}, 300.0), doctest::Contains("give one per body"), error);
-  CHECK_THROWS_WITH_AS(coupling(s, {props}, {0.9}, 300.0, {}, {.temperature = {300.0}}),
+  const std::vector<thermal::thermal_properties> props{{.conductivity = 50.0, .specific_heat = 460.0}};
+  const std::vector<thermal::thermal_boundary> none;
+  CHECK_THROWS_WITH_AS(coupling(s, props, {1.5}, 300.0), doctest::Contains("must lie in [0, 1]"), error);
+  CHECK_THROWS_WITH_AS(coupling(s, props, {0.9, 0.9}, 300.0), doctest::Contains("give one per body"), error);
+  CHECK_THROWS_WITH_AS(coupling(s, props, {0.9}, 300.0, none, thermal::tool_heat{.temperature = {300.0}}),
                        doctest::Contains("1 tool temperatures for 0 tools"), error);
-  CHECK_THROWS_WITH_AS(coupling(s, {props}, {0.9}, 300.0, {}, {.conductance = -1.0}),
+  CHECK_THROWS_WITH_AS(coupling(s, props, {0.9}, 300.0, none, thermal::tool_heat{.conductance = -1.0}),
                        doctest::Contains("must be finite and not negative"), error);
 }
 

@@ -16,6 +16,7 @@
 // exchanges ghost values: after the prediction, after contact and constraints, after the scatter.
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -36,6 +37,7 @@
 #include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/solver/point_materials.hpp>
 #include <rkpm/solver/problem.hpp>
+#include <rkpm/solver/step_companion.hpp>
 #include <rkpm/solver/step_timeline.hpp>
 #include <rkpm/solver/time_step_controller.hpp>
 
@@ -73,6 +75,10 @@ class explicit_solver {
     timeline_.approach_end(options_);
     step();
   }
+  // A component stepped with the solver (solver/step_companion.hpp): after every step, in the
+  // checkpoints (attach it before reading one), in the runner's history and summary.
+  void attach(std::shared_ptr<step_companion<explicit_solver>> c) { companions_.push_back(std::move(c)); }
+  const std::vector<std::shared_ptr<step_companion<explicit_solver>>>& companions() const { return companions_; }
   // Sets every point's temperature, T(q) in K, between steps (coupled heat conduction,
   // thermal/heat_coupling.hpp): the material's set_temperature keeps what the state derives from it.
   template <class PointTemperature>
@@ -183,6 +189,7 @@ class explicit_solver {
     a.part(s.clock_);
     a.part(s.contact_);   // what the run reports of contact, then the policy's state
     if (s.options_.mass_scaling.enabled()) a.value("solver.quasi_static", s.quasi_static_);
+    for (const auto& c : s.companions_) a.part(*c);
   }
 
   template <class Archive, class Self>
@@ -230,6 +237,7 @@ class explicit_solver {
   std::vector<double> rereference_times_;
   index_t last_rereference_step_ = 0;
   std::vector<vec2> initial_position_;  // empty until the first re-reference
+  std::vector<std::shared_ptr<step_companion<explicit_solver>>> companions_;
 };
 
 }  // namespace rkpm

@@ -111,6 +111,7 @@ void explicit_solver<G, M, Ct>::step() {
   else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);
+  for (const auto& c : companions_) c->after_step(*this);
 }
 
 // Mass scaling (84): every mass times one factor, given or found from the unscaled step (a power

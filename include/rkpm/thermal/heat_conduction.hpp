@@ -190,6 +190,8 @@ class heat_conduction {
   }
 
   const std::vector<thermal_boundary>& boundaries() const { return boundaries_; }
+  // The model, found again at its address (a solver that holds it was moved): the same model.
+  void use_model(const discrete_model& m) { m_ = &m; }
   // The areas A_J = L_J omega(x_J) from positions x (#particles, current or reference): sets made
   // on chains measure their lengths again, and in axisymmetry every set takes r_J from x.
   void update_boundary_geometry(std::span<const vec2> x) {

@@ -17,6 +17,11 @@
 // stable step (at most max_interval): conduction costs a pass over the points per exchange, not
 // per step. Between exchanges a material with a temperature heats its points adiabatically, as
 // without conduction; the exchange replaces that by the conducted field, whose heat includes it.
+// Attached to the solver (explicit_solver::attach, solver/step_companion.hpp), it is stepped by
+// every step, saved in the solver's checkpoints and reported in the runner's history:
+//   auto heat = std::make_shared<thermal::heat_coupling<Solver>>(solver, bodies, betas, T0, ...);
+//   solver.attach(heat);
+//   solver.run();
 // One process, a Lagrangian run (no re-referencing), particles at the mesh nodes.
 
 #include <algorithm>
@@ -25,6 +30,7 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/solver/fields.hpp>
+#include <rkpm/solver/step_companion.hpp>
 #include <rkpm/thermal/heat_conduction.hpp>
 #include <rkpm/thermal/heat_sources.hpp>
 
@@ -57,12 +63,12 @@ struct coupling_ledger {
 };
 
 template <class Solver>
-class heat_coupling {
+class heat_coupling : public step_companion<Solver> {
  public:
   using geometry_type = typename Solver::geometry_type;
 
   // bodies: one thermal_properties per body; taylor_quinney: beta per body (98).
-  heat_coupling(const Solver& s, std::vector<thermal_properties> bodies, std::vector<double> taylor_quinney,
+  heat_coupling(Solver& s, std::vector<thermal_properties> bodies, std::vector<double> taylor_quinney,
                 double initial_temperature, std::vector<thermal_boundary> boundaries = {}, tool_heat tools = {},
                 index_t max_interval = 50)
       : heat_(s.model(), std::move(bodies), s.physical_mass(), initial_temperature, std::move(boundaries)),
@@ -90,26 +96,65 @@ class heat_coupling {
     touching_.assign(m.particle_count(), 0);
     area_.assign(m.particle_count(), 0.0);
     boundary_edges_ = m.mesh.boundary_edges();
+    last_time_ = s.time();
+    write_temperatures(s);
   }
 
-  // One mechanical step, and the exchange when its interval is complete.
-  void step(Solver& s) {
-    if (steps_since_ == 0) write_temperatures(s);
-    const double start = s.time();
-    s.step_to_end();
-    const double dt = s.time() - start;
+  // The heat of the step just taken; the exchange when its interval is complete or the run has
+  // reached its end time.
+  void after_step(Solver& s) override {
+    heat_.use_model(s.model());
+    const double dt = s.time() - last_time_;
+    last_time_ = s.time();
     ++steps_since_;
     since_ += dt;
     contact_heat(s, dt);
-    if (steps_since_ >= interval(s)) exchange(s);
-  }
-  // Steps to the solver's end time.
-  void run(Solver& s) {
-    while (s.before_end()) step(s);
-    if (steps_since_ > 0) exchange(s);
+    if (steps_since_ >= interval(s) || !s.before_end()) {
+      exchange(s);
+      write_temperatures(s);
+    }
   }
 
+  void save(io::checkpoint_writer& w) const override { sections(w, *this); }
+  void load(io::checkpoint_reader& r) override { sections(r, *this); }
+
+  // The heat flows (J) and the temperatures at the particles (K).
+  std::vector<std::pair<std::string, double>> report(const Solver& s) const override {
+    heat_.use_model(s.model());
+    const heat_ledger& l = heat_.ledger();
+    const std::vector<double> T = heat_.particle_temperatures();
+    const auto [lo, hi] = std::minmax_element(T.begin(), T.end());
+    return {{"heat_stored_J", l.stored},
+            {"heat_plastic_J", ledger_.plastic},
+            {"heat_friction_J", ledger_.friction},
+            {"heat_friction_to_body_J", ledger_.friction_to_body},
+            {"heat_from_tools_J", ledger_.from_tools},
+            {"heat_convection_J", l.convection},
+            {"heat_flux_J", l.flux},
+            {"heat_fixed_J", l.fixed},
+            {"heat_balance_error", l.relative_imbalance()},
+            {"temperature_min_K", *lo},
+            {"temperature_mean_K", mean_temperature()},
+            {"temperature_max_K", *hi}};
+  }
+
+  // A field other than the initial temperature's, T_I at each particle (K; a body's value on
+  // all of its particles is that value everywhere in it), the fixed temperatures imposed on it.
+  void set_temperatures(Solver& s, std::vector<double> T) {
+    heat_.use_model(s.model());
+    heat_.set_coefficients(std::move(T));
+    heat_.impose_fixed_temperatures();
+    write_temperatures(s);
+  }
   const heat_conduction<geometry_type>& conduction() const { return heat_; }
+  // The capacity-weighted mean temperature, sum C_I T_I / sum C_I (K).
+  double mean_temperature() const {
+    const std::vector<double>& C = heat_.capacities();
+    const std::vector<double>& T = heat_.coefficients();
+    double ct = 0.0, c = 0.0;
+    for (std::size_t I = 0; I < C.size(); ++I) ct += C[I] * T[I], c += C[I];
+    return ct / c;
+  }
   const coupling_ledger& ledger() const { return ledger_; }
   // The temperatures at the particles, T^h(x_I) (K).
   std::vector<double> particle_temperatures() const { return heat_.particle_temperatures(); }
@@ -124,6 +169,18 @@ class heat_coupling {
   index_t interval(const Solver& s) const {
     const double bound = heat_.stable_time_step() / s.time_step();
     return std::clamp<index_t>(static_cast<index_t>(std::floor(bound)), 1, max_interval_);
+  }
+
+  template <class Archive, class Self>
+  static void sections(Archive& a, Self& s) {
+    a.part(s.heat_);
+    a.value("heat.coupling_ledger", s.ledger_);
+    a.array("heat.last_plastic_work", s.last_work_);
+    a.array("heat.pending", s.heat_in_);
+    for (auto [name, field] : {std::pair{"heat.since", &s.since_}, {"heat.last_time", &s.last_time_}})
+      a.value(name, *field);
+    for (auto [name, field] : {std::pair{"heat.steps_since", &s.steps_since_}, {"heat.exchanges", &s.exchanges_}})
+      a.value(name, *field);
   }
 
   // (101): every point at the field's temperature, when the material has one.
@@ -200,7 +257,7 @@ class heat_coupling {
     ++exchanges_;
   }
 
-  heat_conduction<geometry_type> heat_;
+  mutable heat_conduction<geometry_type> heat_;  // mutable: its model pointer follows the solver
   std::vector<double> beta_;
   tool_heat tools_;
   index_t max_interval_;
@@ -212,7 +269,8 @@ class heat_coupling {
   std::vector<double> rate_;       // W per coefficient over the interval
   std::vector<std::array<index_t, 2>> boundary_edges_;
   coupling_ledger ledger_;
-  double since_ = 0.0;
+  double since_ = 0.0;      // s since the last exchange
+  double last_time_ = 0.0;  // the solver's time at the last step
   index_t steps_since_ = 0;
   index_t exchanges_ = 0;
 };
