@@ -20,6 +20,19 @@ namespace rkpm::thermal {
 
 using boundary_areas = std::vector<std::vector<double>>;
 
+// The areas A_J = L_J omega(x_J) of every set at positions x (#particles, current or reference):
+// sets made on chains measure their lengths again, and in axisymmetry r_J is taken from x.
+template <class G>
+void boundary_areas_at(std::vector<thermal_boundary>& sets, std::span<const vec2> x, boundary_areas& area) {
+  area.resize(sets.size());
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    thermal_boundary& b = sets[s];
+    if (b.from_chain) b.length = tributary_lengths(b.particle, x, b.closed_chain);
+    area[s].resize(b.particle.size());
+    for (std::size_t k = 0; k < b.particle.size(); ++k) area[s][k] = b.length[k] * G::weight_factor(x[b.particle[k]]);
+  }
+}
+
 // B_I += sum_J N_I(x_J) Q_J of the flux and convection sets at time t for the coefficients T
 // (89), (91); returns the heat rates (W) of each kind, {flux, convection}.
 inline std::pair<double, double> add_boundary_heat(const shape_table<2>& rows, const std::vector<thermal_boundary>& sets,

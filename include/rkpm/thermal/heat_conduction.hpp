@@ -66,11 +66,6 @@ class heat_conduction {
       fail("heat conduction: the time step fraction {} must lie in (0, 1]", options_.time_step_fraction);
     if (!std::isfinite(initial_temperature))
       fail("heat conduction: the initial temperature {} K is not a number", initial_temperature);
-    for (std::size_t b = 0; b < props_.size(); ++b) {
-      names_.push_back(fmt::format("body {}", b));
-      props_[b].validate(names_[b]);
-      k_of_T_ = k_of_T_ || static_cast<bool>(props_[b].conductivity_of_T);
-    }
     T_.assign(m.particle_count(), initial_temperature);
     rebind(m, mass);
   }
@@ -95,8 +90,7 @@ class heat_conduction {
     tile_max_.assign(m.traversal.tiles(), 0.0);
     tile_bad_.assign(m.traversal.tiles(), -1);
     update_capacities();
-    area_.assign(boundaries_.size(), {});
-    for (std::size_t s = 0; s < boundaries_.size(); ++s) boundaries_[s].validate(n);
+    for (const thermal_boundary& b : boundaries_) b.validate(n);
     update_boundary_geometry(m.particles.position);
     fixed_ = fixed_temperatures(boundaries_, m.at_particles, capacity_);
     const bool warm = bound_.warm(n);
@@ -194,14 +188,7 @@ class heat_conduction {
   void use_model(const discrete_model& m) { m_ = &m; }
   // The areas A_J = L_J omega(x_J) from positions x (#particles, current or reference): sets made
   // on chains measure their lengths again, and in axisymmetry every set takes r_J from x.
-  void update_boundary_geometry(std::span<const vec2> x) {
-    for (std::size_t s = 0; s < boundaries_.size(); ++s) {
-      thermal_boundary& b = boundaries_[s];
-      if (b.from_chain) b.length = tributary_lengths(b.particle, x, b.closed_chain);
-      area_[s].resize(b.particle.size());
-      for (std::size_t k = 0; k < b.particle.size(); ++k) area_[s][k] = b.length[k] * G::weight_factor(x[b.particle[k]]);
-    }
-  }
+  void update_boundary_geometry(std::span<const vec2> x) { boundary_areas_at<G>(boundaries_, x, area_); }
 
   // Checkpoint (io/checkpoint.hpp): coefficients, time, ledger, the stable step's measurement and
   // vector, and the boundary areas.
@@ -221,16 +208,12 @@ class heat_conduction {
     thermal_step_bound::sections(a, s.bound_, s.area_.size());
   }
 
-  const std::string& body_name(std::size_t b) const { return names_[b]; }
-
   // C_I = c_p(T^h(x_I)) m_I, (88), and the capacity part of the bound (90).
   void update_capacities() {
     capacity_.resize(T_.size());
-    for (std::size_t I = 0; I < T_.size(); ++I) {
-      const std::size_t b = static_cast<std::size_t>(m_->bodies.of_particle(static_cast<index_t>(I)));
-      const thermal_properties& p = props_[b];
-      const double T = p.capacity_depends_on_T() ? temperature_at_particle(static_cast<index_t>(I)) : 0.0;
-      capacity_[I] = p.c_p(T, body_name(b)) * mass_[I];
+    for (index_t I = 0; I < static_cast<index_t>(T_.size()); ++I) {
+      const auto b = static_cast<std::size_t>(m_->bodies.of_particle(I));
+      capacity_[I] = props_.c_p(b, props_.capacity_depends_on_T(b) ? temperature_at_particle(I) : 0.0) * mass_[I];
     }
     capacity_scale_ = bound_.capacity_ratio(capacity_);
   }
@@ -241,12 +224,10 @@ class heat_conduction {
   // parsed expression, need not be thread-safe), before the parallel traversal.
   template <class PointF>
   void evaluate_conduction(const PointF& F) {
-    if (k_of_T_) {
+    if (props_.conductivity_depends_on_T()) {
       point_k_.resize(m_->point_count());
-      for (index_t q = 0; q < m_->point_count(); ++q) {
-        const auto b = static_cast<std::size_t>(m_->bodies.of_point(q));
-        point_k_[q] = props_[b].k(temperature_at_point(q), body_name(b));
-      }
+      for (index_t q = 0; q < m_->point_count(); ++q)
+        point_k_[q] = props_.k(static_cast<std::size_t>(m_->bodies.of_point(q)), temperature_at_point(q));
     }
     conductance_scale_ = conduction_residual(
         *m_, T_, R_, D_, tile_max_, tile_bad_, [&](index_t q, double) { return conductance(F, q); },
@@ -255,7 +236,7 @@ class heat_conduction {
 
   template <class PointF>
   mat2 conductance(const PointF& F, index_t q) const {
-    const double k = k_of_T_ ? point_k_[q] : props_[static_cast<std::size_t>(m_->bodies.of_point(q))].conductivity;
+    const double k = props_.conductivity_depends_on_T() ? point_k_[q] : props_.k(m_->bodies.of_point(q), 0.0);
     if constexpr (std::is_same_v<PointF, std::nullptr_t>)
       return k * mat2::Identity();
     else if constexpr (std::is_invocable_r_v<mat3, const PointF&, index_t>)
@@ -300,15 +281,13 @@ class heat_conduction {
   }
 
   const discrete_model* m_ = nullptr;
-  std::vector<thermal_properties> props_;
-  std::vector<std::string> names_;
+  body_properties props_;
   std::vector<thermal_boundary> boundaries_;
   heat_options options_;
   std::vector<double> mass_, capacity_, T_, R_, rhs_;
   boundary_areas area_;  // A_J per set
   std::vector<mat2> D_;  // each point's conductance, last evaluated
   thermal_step_bound bound_;
-  bool k_of_T_ = false;
   std::vector<double> point_k_;  // k(T^h(X_q)) when a body's k depends on T
   std::vector<double> tile_max_;
   std::vector<index_t> tile_bad_;

@@ -7,7 +7,11 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 #include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include <rkpm/core/error.hpp>
 
@@ -54,6 +58,30 @@ struct thermal_properties {
            "in J/(kg K) (steel about 460, copper about 385)",
            body, specific_heat);
   }
+};
+
+// The properties of each body of a model (model_bodies' numbering), validated, with the names the
+// messages give them ("body 1").
+class body_properties {
+ public:
+  body_properties() = default;
+  explicit body_properties(std::vector<thermal_properties> bodies) : props_(std::move(bodies)) {
+    for (std::size_t b = 0; b < props_.size(); ++b) {
+      names_.push_back(fmt::format("body {}", b));
+      props_[b].validate(names_[b]);
+      k_of_T_ = k_of_T_ || static_cast<bool>(props_[b].conductivity_of_T);
+    }
+  }
+  std::size_t size() const { return props_.size(); }
+  bool conductivity_depends_on_T() const { return k_of_T_; }
+  bool capacity_depends_on_T(std::size_t b) const { return props_[b].capacity_depends_on_T(); }
+  double k(std::size_t b, double T) const { return props_[b].k(T, names_[b]); }
+  double c_p(std::size_t b, double T) const { return props_[b].c_p(T, names_[b]); }
+
+ private:
+  std::vector<thermal_properties> props_;
+  std::vector<std::string> names_;
+  bool k_of_T_ = false;
 };
 
 }  // namespace rkpm::thermal
