@@ -19,6 +19,7 @@
 #include "cases/block_forging.hpp"
 #include "cases/taylor_bar.hpp"
 #include "cases/wheel_forging.hpp"
+#include "support/case_file_solver_instance.hpp"
 #include "support/case_files.hpp"
 #include "support/solver_fixtures.hpp"
 #include "tools/runner/case_file/build_problem.hpp"
