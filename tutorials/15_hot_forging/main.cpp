@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -136,9 +137,13 @@ int main(int argc, char** argv) {
     for (const auto& run : thermal::chain_runs(m.bodies.surface("hot forging")[0], sides))
       boundaries.push_back(thermal::thermal_boundary::on_chain(thermal::boundary_kind::convection, run.particle, X,
                                                                run.closed, T_air, h_air));
-    thermal::heat_coupling<decltype(solver)> heat(
-        solver, {{.conductivity = conductivity, .specific_heat = c_p}}, {taylor_quinney}, T_billet, boundaries,
-        {.temperature = {T_die, T_die}, .conductance = h_contact, .friction_to_body = friction_to_billet});
+    // Attached, the coupling is stepped by every step of the solver (and saved in its checkpoints).
+    const auto heat = std::make_shared<thermal::heat_coupling<decltype(solver)>>(
+        solver, std::vector<thermal::thermal_properties>{{.conductivity = conductivity, .specific_heat = c_p}},
+        std::vector{taylor_quinney}, T_billet, boundaries,
+        thermal::tool_heat{.temperature = {T_die, T_die}, .conductance = h_contact,
+                           .friction_to_body = friction_to_billet});
+    solver.attach(heat);
 
     // Particles to watch: the middle of the bottom face (on the die from the start) and the core.
     auto nearest = [&](vec2 p) {
@@ -150,18 +155,12 @@ int main(int argc, char** argv) {
     const index_t face = nearest(vec2(0.0, 0.0)), core = nearest(vec2(0.0, 0.5 * height));
 
     // -------------------------------------------------------------------------------------
-    // The run: heat_coupling steps the solver; the die force averaged over windows
+    // The run: each step also steps the heat; the die force averaged over windows
     // -------------------------------------------------------------------------------------
     io::csv_writer history(dir / "history.csv", {"time_s", "reduction_percent", "force_MN_per_m", "T_mean_K",
                                                  "T_min_K", "T_max_K", "T_face_K", "T_core_K",
                                                  "kinetic_to_internal"});
-    auto mean_T = [&] {
-      const auto& C = heat.conduction().capacities();
-      const auto& T = heat.conduction().coefficients();
-      double ct = 0.0, c = 0.0;
-      for (std::size_t I = 0; I < C.size(); ++I) ct += C[I] * T[I], c += C[I];
-      return ct / c;
-    };
+    auto mean_T = [&] { return heat->mean_temperature(); };
     double window_impulse = 0.0, window_start = 0.0, next_report = 0.0, peak_force = 0.0, last_force = 0.0;
     auto record = [&] {
       const double t = solver.time();
@@ -173,7 +172,7 @@ int main(int argc, char** argv) {
       window_start = t;
       peak_force = std::max(peak_force, force);
       last_force = force;
-      const auto T = heat.particle_temperatures();
+      const auto T = heat->particle_temperatures();
       const auto [lo_T, hi_T] = std::minmax_element(T.begin(), T.end());
       const auto& e = solver.energy();
       history.row({t, 100.0 * 2 * die_speed * t / height, force * 1e-6, mean_T(), *lo_T, *hi_T, T[face], T[core],
@@ -187,18 +186,17 @@ int main(int argc, char** argv) {
       }
     };
     while (solver.before_end()) {
-      heat.step(solver);
+      solver.step_to_end();
       if (solver.time() - window_start >= 0.01 * end_time) record();
     }
-    heat.run(solver);  // the last exchange
     if (solver.time() > window_start) record();
 
     // -------------------------------------------------------------------------------------
     // Results and checks
     // -------------------------------------------------------------------------------------
-    const auto T = heat.particle_temperatures();
-    const auto& ledger = heat.conduction().ledger();
-    const auto& coupled = heat.ledger();
+    const auto T = heat->particle_temperatures();
+    const auto& ledger = heat->conduction().ledger();
+    const auto& coupled = heat->ledger();
     const auto& qs = solver.quasi_static();
     fmt::print("\nafter {} steps, {:.3f} s ({:.0f}% reduction):\n", solver.steps(), solver.time(),
                100.0 * 2 * die_speed * solver.time() / height);
@@ -233,7 +231,7 @@ int main(int argc, char** argv) {
                coupled.from_tools * 1e-3, ledger.convection * 1e-3, ledger.relative_imbalance());
     fmt::print("  plastic work {:.4f} kJ/m, friction heat {:.4f} kJ/m (half to the billet), {} exchanges, "
                "energy balance error {:.1e}\n",
-               solver.energy().plastic * 1e-3, coupled.friction * 1e-3, heat.exchanges(),
+               solver.energy().plastic * 1e-3, coupled.friction * 1e-3, heat->exchanges(),
                solver.energy().balance_error());
 
     // The final field at the particles, for the figure.
