@@ -15,6 +15,7 @@
 #include <rkpm/core/types.hpp>
 #include <rkpm/solver/problem.hpp>
 
+#include "case_file/build_heat.hpp"
 #include "case_file/build_problem.hpp"
 #include "case_file/case_description.hpp"
 #include "case_file/measure.hpp"
@@ -34,6 +35,15 @@ struct file_case {
   template <class Contact>
   static problem<material_type, Contact> build(const parameters& c, int resolution) {
     return case_file::build_problem<Contact, material_type>(c, resolution);
+  }
+
+  // What runs beside the solver (the file's "heat"), attached once the solver is in its place and
+  // before a checkpoint is read into it. Heat conduction runs on one process.
+  template <class Solver>
+  static void attach(Solver& s, const parameters& c, bool several_processes) {
+    if (c.heat.enabled && several_processes)
+      case_file::fail_at(c, c.heat.at, "heat conduction runs on one process: run without mpiexec, or without \"heat\"");
+    case_file::attach_heat(s, c);
   }
 
   template <class Solver>

@@ -187,6 +187,8 @@ class run_observer {
     for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
       columns.emplace_back(name);
     if (s.options().mass_scaling.enabled()) columns.emplace_back("kinetic_to_internal");
+    for (const auto& companion : s.companions())
+      for (const auto& [name, value] : companion->report(s)) columns.push_back(name);
     return columns;
   }
 
@@ -222,6 +224,8 @@ class run_observer {
       row.push_back(s.energy().internal > 0.0 ? s.energy().kinetic / s.energy().internal : 0.0);
       warn_if_dynamic(s);
     }
+    for (const auto& companion : s.companions())
+      for (const auto& [name, value] : companion->report(s)) row.push_back(value);
     history_.row(row);
     record_.history_rows.push_back(std::move(row));
   }

@@ -13,6 +13,7 @@
 // summary.json; one stopped between steps (by the step limit, or by Ctrl-C or SIGTERM, see
 // interrupt.hpp) also writes a checkpoint to continue from. The loop itself does no I/O between output times.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -82,7 +83,7 @@ json run_identity(const run_request& request, const typename Case::parameters& p
   return id;
 }
 
-// final_plastic_strain.png: the equivalent plastic strain on the deformed cells at the run's
+// final_plastic_strain.png (and final_temperature.png): the equivalent plastic strain on the deformed cells at the run's
 // end, with the tools (io/field_figure.hpp); the cells entry by entry, so that the figure holds
 // no arrays of them beside the solver (41 MB at 10^6 particles).
 template <class Solver>
@@ -95,6 +96,15 @@ void final_plastic_strain_png(const std::filesystem::path& dir, const std::strin
   io::field_png(dir / "final_plastic_strain.png", s.particle_positions(), cells, eps, tools,
                 {.title = fmt::format("{}: equivalent plastic strain at t = {:.4g} us", name, s.time() * 1e6),
                  .label = "equivalent plastic strain"});
+  // final_temperature.png: the points' temperature (the conducted one with "heat"), when they have one.
+  if constexpr (requires { s.point_states()[0].temperature; }) {
+    const auto T = s.template project_to_particles<double>(
+        [&](index_t q) { return static_cast<double>(s.point_states()[q].temperature); });
+    if (std::ranges::all_of(T, [](double v) { return std::isfinite(v); }))
+      io::field_png(dir / "final_temperature.png", s.particle_positions(), cells, T, tools,
+                    {.title = fmt::format("{}: temperature at t = {:.4g} us", name, s.time() * 1e6),
+                     .label = "temperature (K)"});
+  }
 }
 
 // The runner's snapshots: appended arrays, compressed as the request says.
@@ -128,6 +138,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   run_record record;
   try {
     holder.emplace(make());
+    if constexpr (requires { Case::attach(*holder, params, true); }) Case::attach(*holder, params, steps != nullptr);
     if (restart) {
       if (steps)
         steps->read_checkpoint(restart->file, &*holder);
@@ -233,6 +244,9 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   energy = json::object();
   for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
     energy[std::string(name)] = value;
+  // What ran beside the solver (a case file's "heat": the heat flows and temperatures at the end).
+  for (const auto& companion : s.companions())
+    for (const auto& [name, value] : companion->report(s)) summary["coupled"][name] = value;
   if (s.options().mass_scaling.enabled()) {
     // The mass added per body (kg per metre of depth in plane strain, kg axisymmetric) and how
     // far the run stayed from dynamics (85).

@@ -128,6 +128,34 @@ def step_budget(rkpm_run, work):
     r = run([rkpm_run, "taylor_bar", "--end-time", "1e-7", "--out", out, "--no-plots", "--quiet"])
     check("warning" not in r.stderr, f"a memory warning on a small run: {r.stderr!r}")
     mass_scaling(rkpm_run, work)
+    hot_forging(rkpm_run, work)
+
+
+def hot_forging(rkpm_run, work):
+    """cases/hot_forging.json for its first tenth (5% reduction): the heat ledger balances, the
+    dies chill the billet (heat flows to them, the coldest particle below the start), the plastic
+    work heats it, history.csv has the heat columns, final_temperature.png is drawn."""
+    case = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases", "hot_forging.json")
+    out = os.path.join(work, "hot_forging")
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, case, "--end-time", "0.05", "--out", out, "--quiet"])
+    check(r.returncode == 0, f"hot_forging: exit status {r.returncode}: {r.stderr!r}")
+    with open(os.path.join(out, "summary.json")) as f:
+        s = strict_json(f)
+    c = s.get("coupled", {})
+    check(c.get("heat_balance_error", 1.0) < 1e-9, f"hot_forging: heat ledger {c}")
+    check(c.get("heat_from_tools_J", 0.0) < 0.0 and c.get("temperature_min_K", 2000.0) < 1373.0, f"hot_forging: no die chill {c}")
+    check(c.get("heat_plastic_J", 0.0) > 0.0 and c.get("heat_friction_J", -1.0) >= 0.0, f"hot_forging: sources {c}")
+    stored = c.get("heat_plastic_J", 0) + c.get("heat_friction_to_body_J", 0) + c.get("heat_from_tools_J", 0) + \
+        c.get("heat_convection_J", 0)
+    check(abs(stored - c.get("heat_stored_J", 1e30)) <= 1e-9 * abs(c.get("heat_from_tools_J", 1.0)),
+          f"hot_forging: stored heat {c.get('heat_stored_J')} against the flows' sum {stored}")
+    check(s.get("scaled_masses", {}).get("quasi_static") is True, f"hot_forging: {s.get('scaled_masses')}")
+    with open(os.path.join(out, "history.csv")) as f:
+        header = f.readline().strip().split(",")
+    check("heat_from_tools_J" in header and "temperature_min_K" in header, f"hot_forging: history columns {header}")
+    check(os.path.isfile(os.path.join(out, "final_temperature.png")), "hot_forging: no final_temperature.png")
+    print(f"ok  {'hot_forging to 0.05 s':50} -> T min {c.get('temperature_min_K')}, from dies {c.get('heat_from_tools_J')} J")
 
 
 def mass_scaling(rkpm_run, work):

@@ -255,3 +255,43 @@ TEST_CASE("mass scaling keys: read, and refused with the fix when they cannot me
 }
 
 }  // namespace test_unit_case_file_errors
+
+namespace test_unit_case_file_errors {
+
+TEST_CASE("heat keys: read, and refused with the fix when they cannot mean anything") {
+  case_json doc = taylor();
+  doc["heat"] = {{"bodies", {{"bar", {{"conductivity_W_mK", 400.0}}}}},
+                 {"tools", {{"wall", 300.0}}},
+                 {"conductance_W_m2K", 1e4},
+                 {"edges", case_json::array({{{"body", "bar"}, {"edge", "right"},
+                                              {"convection", {{"h_W_m2K", 30.0}, {"ambient_K", 300.0}}}}})}};
+  const auto read = test::load_document(doc).heat;
+  CHECK(read.enabled);
+  CHECK(read.bodies.at("bar").conductivity == 400.0);
+  CHECK(read.tool_temperature.at("wall") == 300.0);
+  CHECK(read.edges.at(0).kind == "convection");
+  CHECK(read.edges.at(0).film_coefficient == 30.0);
+  case_json bad = doc;
+  bad["heat"]["bodies"]["bar"]["conductivity_W_mK"] = -1.0;
+  CHECK(reports(load_error(bad), "/heat/bodies/bar/conductivity_W_mK", "is negative"));
+  bad = doc;
+  bad["heat"]["bodies"]["bar"]["taylor_quinney"] = 1.5;
+  CHECK(reports(load_error(bad), "/heat/bodies/bar/taylor_quinney", "is not a fraction"));
+  bad = doc;
+  bad["heat"]["tools"]["wall"] = -5.0;
+  CHECK(reports(load_error(bad), "/heat/tools/wall", "temperature in kelvin"));
+  bad = doc;
+  bad["heat"].erase("conductance_W_m2K");
+  CHECK(reports(load_error(bad), "/heat", "conductance_W_m2K"));
+  bad = doc;
+  bad["heat"]["edges"][0]["temperature_K"] = 500.0;
+  CHECK(reports(load_error(bad), "/heat/edges/0", "give one of"));
+  bad = doc;
+  bad["heat"]["friction_heat_to_body"] = 2.0;
+  CHECK(reports(load_error(bad), "/heat/friction_heat_to_body", "is not a fraction"));
+  bad = doc;
+  bad["heat"]["bodys"] = 1;
+  CHECK(contains(load_error(bad), "bodies"));
+}
+
+}  // namespace test_unit_case_file_errors

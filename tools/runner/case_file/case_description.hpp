@@ -22,6 +22,7 @@
 
 #include "../json.hpp"
 #include "case_material.hpp"
+#include "read_heat.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -185,13 +186,14 @@ struct case_description {
   int snapshots = 20, history_rows = 400;
   rereference_policy rereference;  // "rereference": {"max_stretch": 1.8} or {"every_steps": 50}
   mass_scaling_policy mass_scaling;  // "mass_scaling": {"factor": 100} or {"target_dt_s": 2e-6}
+  heat_description heat;             // "heat": conduction coupled to the run (read_heat.hpp)
   std::vector<history_description> histories;
 };
 
 // Whether a body of the file carries a temperature (Johnson-Cook or Zerilli-Armstrong), so that
 // its run needs material_type's state (case_material.hpp).
 inline bool uses_temperature(const case_description& c) {
-  return std::ranges::any_of(c.bodies, [](const body_description& b) {
+  return c.heat.enabled || std::ranges::any_of(c.bodies, [](const body_description& b) {
     return b.material.johnson_cook.has_value() || b.material.zerilli_armstrong.has_value();
   });
 }

@@ -157,6 +157,15 @@ class basic_material_type {
     return j2_.current_kirchhoff_stress(F, s);
   }
 
+  // The point at a conducted temperature T (K) (thermal/heat_coupling.hpp): Johnson-Cook's keeps
+  // its flow stress at rest and T*^m with it; a J2 point records T (its flow stress ignores it).
+  void set_temperature(state_type& s, double T) const
+    requires holds_johnson_cook
+  {
+    if (johnson_cook_) johnson_cook_->set_temperature(s, T);
+    else s.temperature = T;
+  }
+
   double density() const { return j2_.density(); }
   double dilatational_wave_speed() const { return j2_.dilatational_wave_speed(); }
   const material::elastic_constants& constants() const { return j2_.constants(); }

@@ -63,7 +63,7 @@ inline case_description read_case(diagnostics& d, const json& document, const st
   c.document = document;
   object_reader r(d, document, "", {"name", "description", "constants", "geometry", "method", "support_factor",
                                     "end_time_s", "bodies", "tools", "contact", "output", "histories",
-                                    "rereference", "mass_scaling"});
+                                    "rereference", "mass_scaling", "heat"});
   if (!r.valid()) return c;
   c.name = r.text("name", "taylor_bar").value_or("");
   if (c.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
@@ -129,6 +129,7 @@ inline case_description read_case(diagnostics& d, const json& document, const st
     if (!rr.find("max_stretch") && !rr.find("every_steps"))
       d.error(r.at("rereference"), "give \"max_stretch\" (e.g. 1.8) or \"every_steps\" (e.g. 50)");
   }
+  if (const json* k = r.find("heat")) c.heat = read_heat(d, *k, r.at("heat"));
   if (const json* k = r.find("mass_scaling")) {
     // Masses scaled for a process slower than the waves (docs/method.md section 5.10).
     object_reader mr(d, *k, r.at("mass_scaling"), {"factor", "target_dt_s", "max_kinetic_to_internal"});
