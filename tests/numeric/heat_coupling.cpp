@@ -121,6 +121,69 @@ TEST_CASE("friction (99) and tool contact (100)") {
   }
 }
 
+TEST_CASE("contact between bodies (100): a hot block on a cold slab, the two exchange h (T1 - T2) per area") {
+  // A block at 1000 K resting (a body force g) on a slab at 300 K fixed at its bottom; both
+  // conduct fast (Biot number 0.01 each), so each is one lump and their difference decays as
+  // exp(-h W t (1 / C_block + 1 / C_slab)) while in contact. Nothing leaves the two: their heat
+  // changes only by the frictional heat of their contact, to round-off.
+  using Ct = contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::coulomb>;
+  using Cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
+                     material::elastic, Ct>;
+  const double W = 20e-3, H = 5e-3, h = 2e5, c_p = 1.0, k = h * H / 0.01, g = 2000.0;
+  problem_for<Cfg> p{.particles = {}, .mesh = {}, .material = material::elastic(steel),
+                     .contact = Ct({}, {contact::body_pair{1, 0}}, contact::friction::coulomb{0.3})};
+  const Eigen::Vector2i n(21, 6);
+  append_body(p.particles, p.mesh, make_grid_particles<2>(vec2(0, -H), vec2(W, 0), n, 2.0),
+              make_grid_mesh(vec2(0, -H), vec2(W, 0), n));  // body 0: the slab
+  const index_t slab = p.particles.size();
+  append_body(p.particles, p.mesh, make_grid_particles<2>(vec2(0, 0), vec2(W, H), n, 2.0),
+              make_grid_mesh(vec2(0, 0), vec2(W, H), n));  // body 1: the block
+  for (index_t I = 0; I < slab; ++I)
+    if (p.particles.position[I][1] < -H + 1e-9)
+      for (int dir : {0, 1}) p.constraints.push_back({I, dir, [](double) { return 0.0; }});
+  p.body_force = vec2(0.0, -g);
+  const double C = steel.density * W * H * c_p, tau = C / (2.0 * h * W);  // each body's heat capacity
+  run_options o;
+  o.end_time = tau;
+  auto s = make_solver<Cfg>(std::move(p), o);
+  const std::vector<thermal::thermal_properties> props(2, {.conductivity = k, .specific_heat = c_p});
+  auto heat = std::make_shared<thermal::heat_coupling<decltype(s)>>(
+      s, props, std::vector{0.0, 0.0}, 300.0, std::vector<thermal::thermal_boundary>{},
+      thermal::tool_heat{.conductance = h});
+  std::vector<double> T0(s.model().particle_count(), 300.0);
+  for (index_t I = slab; I < s.model().particle_count(); ++I) T0[I] = 1000.0;
+  heat->set_temperatures(s, T0);
+  s.attach(heat);
+  const double stored0 = heat->conduction().stored_heat();
+  // The block was set down unloaded and rings on the slab: a slave is in contact in most steps, not
+  // all (about 93% here), and exchanges heat in those only.
+  double in_contact = 0.0;
+  while (s.before_end()) {
+    s.step_to_end();
+    in_contact += static_cast<double>(s.contact().bodies().active_pairs().size()) / static_cast<double>(n[0]);
+  }
+  in_contact /= static_cast<double>(s.steps());
+  const auto& Cap = heat->conduction().capacities();
+  const auto& T = heat->conduction().coefficients();
+  double mean[2] = {0.0, 0.0}, cap[2] = {0.0, 0.0};
+  for (index_t I = 0; I < s.model().particle_count(); ++I) {
+    const int b = I < slab ? 0 : 1;
+    mean[b] += Cap[I] * T[I];
+    cap[b] += Cap[I];
+  }
+  const double difference = mean[1] / cap[1] - mean[0] / cap[0], exact = 700.0 * std::exp(-s.time() / tau);
+  MESSAGE("block - slab after one time constant: ", difference, " K (lumped, always in contact: ", exact,
+          "; bottom particles in contact ", in_contact, " of the steps); conducted ",
+          heat->ledger().between_bodies, " J/m; heat kept to ", heat->conduction().stored_heat() / stored0 - 1.0,
+          " (friction ", heat->ledger().friction, " J/m)");
+  // Between the lumped decay in full contact and the one at 85% of it.
+  CHECK(difference > 0.99 * exact);
+  CHECK(difference < 700.0 * std::exp(-0.85 * s.time() / tau));
+  CHECK(in_contact > 0.85);
+  CHECK(heat->ledger().between_bodies < 0.0);  // from the master (slab) to the slave (block): negative
+  CHECK(heat->conduction().stored_heat() - stored0 == doctest::Approx(heat->ledger().friction_to_body).epsilon(1e-9));
+}
+
 TEST_CASE("heat coupling across a checkpoint: the run continued from it is the uninterrupted one, bit for bit") {
   using contact_t = contact::particle_to_segment<contact::enforcement::paper, contact::friction::coulomb>;
   using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain, material::elastic,

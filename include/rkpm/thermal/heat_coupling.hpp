@@ -10,6 +10,9 @@
 //                  the tool (99);
 //   tool contact   h_c (T_tool - T^h(x_J)) A_J at each slave in contact with a tool (100), A_J the
 //                  slave's share of the body's boundary in the current configuration;
+//   body contact   h_c (T^h(x_c) - T^h(x_J)) A_J from a master body's contact point x_c to a slave
+//                  in contact with it, and the frictional heat half to each (100), so that
+//                  what one body gains the other loses;
 //   temperatures   T_q = T^h(x_q) written into the point states (the material's
 //                  set_temperature, which keeps what the state derives from it), so the flow
 //                  stress of the next steps follows the field (101).
@@ -36,7 +39,8 @@
 
 namespace rkpm::thermal {
 
-// Heat exchanged with the rigid tools (100) and made by friction on them (99).
+// Heat exchanged with the rigid tools (100) and made by friction on them (99); the conductance
+// applies between bodies in contact too.
 struct tool_heat {
   std::vector<time_value> temperature;  // K, one per tool (empty: no conduction to the tools)
   double conductance = 0.0;             // h_c, W/(m^2 K)
@@ -60,6 +64,7 @@ struct coupling_ledger {
   double friction = 0.0;         // made by friction (99), body and tools together
   double friction_to_body = 0.0;
   double from_tools = 0.0;       // conducted from the tools into the body (100)
+  double between_bodies = 0.0;   // conducted from master bodies into slave bodies (100)
 };
 
 template <class Solver>
@@ -129,6 +134,7 @@ class heat_coupling : public step_companion<Solver> {
             {"heat_friction_J", ledger_.friction},
             {"heat_friction_to_body_J", ledger_.friction_to_body},
             {"heat_from_tools_J", ledger_.from_tools},
+            {"heat_between_bodies_J", ledger_.between_bodies},
             {"heat_convection_J", l.convection},
             {"heat_flux_J", l.flux},
             {"heat_fixed_J", l.fixed},
@@ -193,45 +199,86 @@ class heat_coupling : public step_companion<Solver> {
   // each boundary edge whose two ends touch the same tool, in the current configuration, times
   // omega (16): the body's contact length, without the sides at its corners.
   void contact_heat(const Solver& s, double dt) {
-    if constexpr (requires { s.contact().active_pairs(); }) {
-      const auto pairs = s.contact().active_pairs();
-      if (pairs.empty()) return;
-      const discrete_model& m = s.model();
-      const double t = s.time();
-      const std::vector<vec2> x = s.particle_positions();
-      const std::vector<vec2>& v = s.coefficient_velocities();
-      for (const auto& p : pairs) {
-        const index_t J = s.slave_particles()[p.slave];
-        const auto& tool = s.contact().tools()[p.tool];
-        const vec2 v_tool = (tool.displacement(t) - tool.displacement(t - dt)) / dt;
-        const vec2 rel = m.at_particles.interpolate(J, v) - v_tool;
-        const vec2 slip = rel - rel.dot(p.normal) * p.normal;
-        const double friction = std::max(0.0, -p.tangential_force.dot(slip)) * dt;
-        ledger_.friction += friction;
-        ledger_.friction_to_body += tools_.friction_to_body * friction;
-        add_particle_heat(m, J, tools_.friction_to_body * friction, heat_in_);
-        touching_[J] = p.tool + 1;
-      }
-      if (!tools_.temperature.empty()) {
-        for (const auto& [a, b] : boundary_edges_)
-          if (touching_[a] != 0 && touching_[a] == touching_[b]) {
-            const double half = 0.5 * (x[b] - x[a]).norm();
-            area_[a] += half * geometry_type::weight_factor(x[a]);
-            area_[b] += half * geometry_type::weight_factor(x[b]);
-          }
-        for (const auto& p : pairs) {
-          const index_t J = s.slave_particles()[p.slave];
-          const double T_tool = tools_.temperature[p.tool](t);
-          const double conducted = tools_.conductance * (T_tool - heat_.temperature_at_particle(J)) * area_[J] * dt;
-          ledger_.from_tools += conducted;
-          add_particle_heat(m, J, conducted, heat_in_);
+    if constexpr (requires { s.contact().active_pairs(); }) tool_contact_heat(s, dt);
+    if constexpr (requires { s.contact().bodies().active_pairs(); }) body_contact_heat(s, dt);
+  }
+
+  void tool_contact_heat(const Solver& s, double dt) {
+    const auto pairs = s.contact().active_pairs();
+    if (pairs.empty()) return;
+    const discrete_model& m = s.model();
+    const double t = s.time();
+    const std::vector<vec2> x = s.particle_positions();
+    const std::vector<vec2>& v = s.coefficient_velocities();
+    for (const auto& p : pairs) {
+      const index_t J = s.slave_particles()[p.slave];
+      const auto& tool = s.contact().tools()[p.tool];
+      const vec2 v_tool = (tool.displacement(t) - tool.displacement(t - dt)) / dt;
+      const vec2 rel = m.at_particles.interpolate(J, v) - v_tool;
+      const vec2 slip = rel - rel.dot(p.normal) * p.normal;
+      const double friction = std::max(0.0, -p.tangential_force.dot(slip)) * dt;
+      ledger_.friction += friction;
+      ledger_.friction_to_body += tools_.friction_to_body * friction;
+      add_particle_heat(m, J, tools_.friction_to_body * friction, heat_in_);
+      touching_[J] = p.tool + 1;
+    }
+    if (!tools_.temperature.empty()) {
+      for (const auto& [a, b] : boundary_edges_)
+        if (touching_[a] != 0 && touching_[a] == touching_[b]) {
+          const double half = 0.5 * (x[b] - x[a]).norm();
+          area_[a] += half * geometry_type::weight_factor(x[a]);
+          area_[b] += half * geometry_type::weight_factor(x[b]);
         }
-      }
       for (const auto& p : pairs) {
         const index_t J = s.slave_particles()[p.slave];
-        touching_[J] = 0;
-        area_[J] = 0.0;
+        const double T_tool = tools_.temperature[p.tool](t);
+        const double conducted = tools_.conductance * (T_tool - heat_.temperature_at_particle(J)) * area_[J] * dt;
+        ledger_.from_tools += conducted;
+        add_particle_heat(m, J, conducted, heat_in_);
       }
+    }
+    for (const auto& p : pairs) {
+      const index_t J = s.slave_particles()[p.slave];
+      touching_[J] = 0;
+      area_[J] = 0.0;
+    }
+  }
+
+  // (99)-(100) between deformable bodies: each slave J against its master segment (a, b) at the
+  // contact point (1 - lambda) x_a + lambda x_b; the slave's area as for the tools.
+  void body_contact_heat(const Solver& s, double dt) {
+    const auto pairs = s.contact().bodies().active_pairs();
+    if (pairs.empty()) return;
+    const discrete_model& m = s.model();
+    const std::vector<vec2> x = s.particle_positions();
+    const std::vector<vec2>& v = s.coefficient_velocities();
+    for (const auto& p : pairs) touching_[p.slave] = -(p.pair + 1);
+    for (const auto& [a, b] : boundary_edges_)
+      if (touching_[a] < 0 && touching_[a] == touching_[b]) {
+        const double half = 0.5 * (x[b] - x[a]).norm();
+        area_[a] += half * geometry_type::weight_factor(x[a]);
+        area_[b] += half * geometry_type::weight_factor(x[b]);
+      }
+    for (const auto& p : pairs) {
+      const double wa = 1.0 - p.lambda, wb = p.lambda;
+      const vec2 rel = m.at_particles.interpolate(p.slave, v) -
+                       (wa * m.at_particles.interpolate(p.a, v) + wb * m.at_particles.interpolate(p.b, v));
+      const vec2 slip = rel - rel.dot(p.normal) * p.normal;
+      const double friction = std::max(0.0, -p.tangential_force.dot(slip)) * dt;
+      const double T_master = wa * heat_.temperature_at_particle(p.a) + wb * heat_.temperature_at_particle(p.b);
+      const double conducted =
+          tools_.conductance * (T_master - heat_.temperature_at_particle(p.slave)) * area_[p.slave] * dt;
+      ledger_.friction += friction;
+      ledger_.friction_to_body += friction;  // both halves stay in the bodies
+      ledger_.between_bodies += conducted;
+      const double to_slave = 0.5 * friction + conducted, to_master = 0.5 * friction - conducted;
+      add_particle_heat(m, p.slave, to_slave, heat_in_);
+      add_particle_heat(m, p.a, wa * to_master, heat_in_);
+      add_particle_heat(m, p.b, wb * to_master, heat_in_);
+    }
+    for (const auto& p : pairs) {
+      touching_[p.slave] = 0;
+      area_[p.slave] = 0.0;
     }
   }
 
