@@ -292,6 +292,22 @@ TEST_CASE("heat keys: read, and refused with the fix when they cannot mean anyth
   bad = doc;
   bad["heat"]["bodys"] = 1;
   CHECK(contains(load_error(bad), "bodies"));
+  // Expressions: k(T) and c_p(T) of the temperature, a tool's temperature of the time.
+  case_json varying = doc;
+  varying["heat"]["bodies"]["bar"] = {{"conductivity_W_mK", "30 + 0.01 * (T - 300)"},
+                                      {"specific_heat_J_kgK", "2 * 300"}};
+  varying["heat"]["tools"]["wall"] = "473 + 1000 * t";
+  const auto h = test::load_document(varying).heat;
+  CHECK(h.bodies.at("bar").conductivity_of_T == "30 + 0.01 * (T - 300)");
+  CHECK(h.bodies.at("bar").specific_heat == 600.0);  // names no variable: the number
+  CHECK(h.bodies.at("bar").specific_heat_of_T.empty());
+  CHECK(h.tool_temperature_of_t.at("wall") == "473 + 1000 * t");
+  bad = varying;
+  bad["heat"]["bodies"]["bar"]["conductivity_W_mK"] = "30 + q * T";
+  CHECK(reports(load_error(bad), "/heat/bodies/bar/conductivity_W_mK", "'q'"));
+  bad = varying;
+  bad["heat"]["tools"]["wall"] = "473 + T";  // a tool's temperature is of t, not T
+  CHECK(reports(load_error(bad), "/heat/tools/wall", "'T'"));
 }
 
 }  // namespace test_unit_case_file_errors

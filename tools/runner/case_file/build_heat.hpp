@@ -14,6 +14,7 @@
 #include "body_edges.hpp"
 #include "build_problem.hpp"
 #include "case_description.hpp"
+#include "expressions.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -33,6 +34,17 @@ inline material_heating heating_of(const material_description& m) {
     return {h.specific_heat, h.initial_temperature, h.taylor_quinney};
   }
   return {};
+}
+
+// An expression of one variable (checked when the file was read) as a function; evaluated on one
+// thread (heat_conduction evaluates k(T) and c_p(T) before its parallel loops).
+inline std::function<double(double)> function_of(const case_description& c, const std::string& at,
+                                                 const std::string& text, const std::string& variable) {
+  std::string why;
+  auto e = expression::parse(text, {variable}, c.constants, why);
+  if (!e) fail_at(c, at, why);
+  auto shared = std::make_shared<expression>(std::move(*e));
+  return [shared](double v) { return (*shared)(std::span<const double>(&v, 1)); };
 }
 
 }  // namespace detail
@@ -58,10 +70,16 @@ void attach_heat(Solver& s, const case_description& c) {
     const detail::material_heating own = detail::heating_of(b.material);
     const auto c_p = hb.specific_heat ? hb.specific_heat : own.specific_heat;
     const auto T0 = hb.initial_temperature ? hb.initial_temperature : own.initial_temperature;
-    if (!c_p) fail_at(c, hb.at, "give \"specific_heat_J_kgK\": the body's material has none (e.g. 600 for hot steel)");
+    if (!c_p && hb.specific_heat_of_T.empty())
+      fail_at(c, hb.at, "give \"specific_heat_J_kgK\": the body's material has none (e.g. 600 for hot steel)");
     if (!T0 || !std::isfinite(*T0))
       fail_at(c, hb.at, "give \"initial_temperature_K\": the body's material has none (e.g. 1373)");
-    props.push_back({.conductivity = hb.conductivity.value_or(0.0), .specific_heat = *c_p});
+    thermal::thermal_properties p{.conductivity = hb.conductivity.value_or(0.0), .specific_heat = *c_p};
+    if (!hb.conductivity_of_T.empty())
+      p.conductivity_of_T = detail::function_of(c, hb.at, hb.conductivity_of_T, "T");
+    if (!hb.specific_heat_of_T.empty())
+      p.specific_heat_of_T = detail::function_of(c, hb.at, hb.specific_heat_of_T, "T");
+    props.push_back(std::move(p));
     beta.push_back(hb.taylor_quinney.value_or(own.taylor_quinney.value_or(0.9)));
     for (index_t I : m.bodies.particles_of(static_cast<index_t>(k))) initial[I] = *T0;
   }
@@ -76,7 +94,12 @@ void attach_heat(Solver& s, const case_description& c) {
       if (it == h.tool_temperature.end())
         fail_at(c, child_pointer(h.at, "tools"),
                 fmt::format("tool '{}' has no temperature: give every tool one (or none)", tool.name()));
-      tools.temperature.emplace_back(it->second);
+      const auto of_t = h.tool_temperature_of_t.find(tool.name());
+      if (of_t != h.tool_temperature_of_t.end())
+        tools.temperature.emplace_back(detail::function_of(c, child_pointer(child_pointer(h.at, "tools"), tool.name()),
+                                                           of_t->second, "t"));
+      else
+        tools.temperature.emplace_back(it->second);
     }
   std::vector<thermal::thermal_boundary> edges;
   for (const heat_edge_description& e : h.edges) {

@@ -22,7 +22,7 @@
 
 #include "../json.hpp"
 #include "case_material.hpp"
-#include "read_heat.hpp"
+#include "heat_description.hpp"
 
 namespace rkpm::runner::case_file {
 

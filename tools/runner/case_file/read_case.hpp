@@ -19,6 +19,7 @@
 #include "json_fields.hpp"
 #include "read_body.hpp"
 #include "read_expressions.hpp"
+#include "read_heat.hpp"
 #include "read_histories.hpp"
 #include "read_tools.hpp"
 
@@ -129,7 +130,7 @@ inline case_description read_case(diagnostics& d, const json& document, const st
     if (!rr.find("max_stretch") && !rr.find("every_steps"))
       d.error(r.at("rereference"), "give \"max_stretch\" (e.g. 1.8) or \"every_steps\" (e.g. 50)");
   }
-  if (const json* k = r.find("heat")) c.heat = read_heat(d, *k, r.at("heat"));
+  if (const json* k = r.find("heat")) c.heat = read_heat(d, *k, r.at("heat"), c.constants);
   if (const json* k = r.find("mass_scaling")) {
     // Masses scaled for a process slower than the waves (docs/method.md section 5.10).
     object_reader mr(d, *k, r.at("mass_scaling"), {"factor", "target_dt_s", "max_kinetic_to_internal"});

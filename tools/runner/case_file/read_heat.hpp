@@ -10,42 +10,25 @@
 //               {"body": "billet", "edge": "right", "temperature_K": 1373},
 //               {"body": "billet", "edge": "top", "flux_W_m2": 1e4}]
 //   }
-// A Johnson-Cook or Zerilli-Armstrong body's specific heat, initial temperature and Taylor-Quinney
+// The conductivity and specific heat may be expressions of the temperature T (K), "30 + 0.01 * (T -
+// 300)", a tool's temperature an expression of the time t (s), "473 + 2000 * t", with the file's
+// constants. A Johnson-Cook or Zerilli-Armstrong body's specific heat, initial temperature and Taylor-Quinney
 // fraction default to its material's; a J2 or elastic body must give the first two. Names are
 // checked against the bodies and tools when the run is built (build_heat.hpp).
 
+#include <limits>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "diagnostics.hpp"
+#include "expressions.hpp"
+#include "heat_description.hpp"
 #include "json_fields.hpp"
 
 namespace rkpm::runner::case_file {
-
-struct heat_body_description {
-  std::optional<double> conductivity, specific_heat, initial_temperature, taylor_quinney;
-  std::string at;
-};
-
-struct heat_edge_description {
-  std::string body, edge;
-  std::string kind;  // "convection", "temperature" or "flux"
-  double value = 0.0;  // T_inf (K), T (K) or q (W/m^2)
-  double film_coefficient = 0.0;  // h, W/(m^2 K)
-  std::string at;
-};
-
-struct heat_description {
-  bool enabled = false;
-  std::map<std::string, heat_body_description> bodies;  // by body name
-  std::map<std::string, double> tool_temperature;       // K, by tool name
-  double conductance = 0.0;                             // W/(m^2 K)
-  double friction_to_body = 0.5;
-  std::vector<heat_edge_description> edges;
-  std::string at;
-};
 
 namespace detail {
 
@@ -87,9 +70,30 @@ inline heat_edge_description read_heat_edge(diagnostics& d, const json& value, c
   return e;
 }
 
+// A number, or an expression of `variable` (a string); an expression that names no variable is
+// the number it gives. Returns the number (NaN for an expression) and sets `text` for an expression.
+inline double number_or_expression(diagnostics& d, const json& v, const std::string& at, const std::string& variable,
+                                   const constant_table& constants, std::string& text) {
+  if (v.is_number()) return v.get<double>();
+  if (!v.is_string()) {
+    d.error(at, fmt::format("expected a number or an expression of {} (a string), got {}", variable, describe(v)));
+    return 0.0;
+  }
+  std::string why;
+  const auto e = expression::parse(v.get<std::string>(), {variable}, constants, why);
+  if (!e) {
+    d.error(at, why);
+    return 0.0;
+  }
+  if (!e->uses_variables()) return (*e)(std::span<const double>{});
+  text = e->text();
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace detail
 
-inline heat_description read_heat(diagnostics& d, const json& value, const std::string& at) {
+inline heat_description read_heat(diagnostics& d, const json& value, const std::string& at,
+                                  const constant_table& constants = {}) {
   heat_description h;
   h.at = at;
   object_reader r(d, value, at, {"bodies", "tools", "conductance_W_m2K", "friction_heat_to_body", "edges"});
@@ -106,14 +110,18 @@ inline heat_description read_heat(diagnostics& d, const json& value, const std::
         if (!b.valid()) continue;
         heat_body_description& hb = h.bodies[name];
         hb.at = where;
-        hb.conductivity = b.number("conductivity_W_mK", "30");
-        if (hb.conductivity && !(*hb.conductivity >= 0.0))
+        if (const json* k = b.required("conductivity_W_mK", "30 or \"30 + 0.01 * (T - 300)\""))
+          hb.conductivity = detail::number_or_expression(d, *k, b.at("conductivity_W_mK"), "T", constants,
+                                                         hb.conductivity_of_T);
+        if (hb.conductivity && hb.conductivity_of_T.empty() && !(*hb.conductivity >= 0.0))
           d.error(b.at("conductivity_W_mK"), fmt::format("{} is negative; give the conductivity k >= 0, e.g. 30 "
                                                          "W/(m K) for steel", *hb.conductivity));
-        if (b.find("specific_heat_J_kgK")) hb.specific_heat = b.number_or("specific_heat_J_kgK", 0.0);
+        if (const json* c_p = b.find("specific_heat_J_kgK"))
+          hb.specific_heat = detail::number_or_expression(d, *c_p, b.at("specific_heat_J_kgK"), "T", constants,
+                                                          hb.specific_heat_of_T);
         if (b.find("initial_temperature_K")) hb.initial_temperature = b.number_or("initial_temperature_K", 0.0);
         if (b.find("taylor_quinney")) hb.taylor_quinney = b.number_or("taylor_quinney", 0.9);
-        if (hb.specific_heat)
+        if (hb.specific_heat && hb.specific_heat_of_T.empty())
           detail::positive_at(d, b, "specific_heat_J_kgK", *hb.specific_heat, "c_p, e.g. 600 J/(kg K) for hot steel");
         if (hb.initial_temperature)
           detail::positive_at(d, b, "initial_temperature_K", *hb.initial_temperature, "a temperature in kelvin");
@@ -127,11 +135,12 @@ inline heat_description read_heat(diagnostics& d, const json& value, const std::
       d.error(r.at("tools"), "give each tool's temperature by its name, e.g. {\"top_die\": 473}");
     else
       for (const auto& [name, T] : tools->items()) {
-        if (!T.is_number() || !(T.get<double>() > 0.0))
-          d.error(child_pointer(r.at("tools"), name), fmt::format("expected a temperature in kelvin (> 0), got {}",
-                                                                  describe(T)));
-        else
-          h.tool_temperature[name] = T.get<double>();
+        const std::string where = child_pointer(r.at("tools"), name);
+        std::string of_t;
+        const double value = detail::number_or_expression(d, T, where, "t", constants, of_t);
+        if (!of_t.empty()) h.tool_temperature_of_t[name] = of_t;
+        else if (!(value > 0.0)) d.error(where, fmt::format("expected a temperature in kelvin (> 0), got {}", describe(T)));
+        h.tool_temperature[name] = value;
       }
   }
   h.conductance = r.number_or("conductance_W_m2K", 0.0);
