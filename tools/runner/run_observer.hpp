@@ -19,10 +19,10 @@
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/progress.hpp>
 #include <rkpm/io/solver_output.hpp>
-#include <rkpm/solver/mass_scaling.hpp>
 #include <rkpm/io/pvd_series.hpp>
 #include <rkpm/io/vtk.hpp>
 #include <rkpm/solver/checkpoint.hpp>
+#include <rkpm/solver/mass_scaling.hpp>
 
 #include "case_traits.hpp"
 #include "figures.hpp"

@@ -83,9 +83,9 @@ json run_identity(const run_request& request, const typename Case::parameters& p
   return id;
 }
 
-// final_plastic_strain.png (and final_temperature.png): the equivalent plastic strain on the deformed cells at the run's
+// final_plastic_strain.png: the equivalent plastic strain on the deformed cells at the run's
 // end, with the tools (io/field_figure.hpp); the cells entry by entry, so that the figure holds
-// no arrays of them beside the solver (41 MB at 10^6 particles).
+// no arrays of them beside the solver (41 MB at 10^6 particles). final_temperature.png likewise.
 template <class Solver>
 void final_plastic_strain_png(const std::filesystem::path& dir, const std::string& name, const Solver& s,
                               const io::cell_layout& cells) {

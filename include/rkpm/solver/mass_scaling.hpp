@@ -58,7 +58,9 @@ struct quasi_static_check {
 
   void observe(const mass_scaling_policy& p, double time, double end_time, double kinetic, double internal) {
     if (time < p.settle_fraction * end_time) return;
-    const double ratio = internal > 0.0 ? kinetic / internal : (kinetic > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+    const double ratio = internal > 0.0   ? kinetic / internal
+                         : kinetic > 0.0 ? std::numeric_limits<double>::infinity()
+                                         : 0.0;
     if (ratio > worst_ratio) worst_ratio = ratio, worst_time = time;
     if (ratio > p.max_kinetic_to_internal && left_at < 0.0) left_at = time;
   }
