@@ -7,6 +7,9 @@
 // taken lane by lane from the C library (lanewise), for the same reason: a vectorized log or exp
 // would move results by rounding. block_lanes holds a block matrix of every lane
 // (core/block_matrix.hpp), one entry per vector.
+// The batched code is written for any such vector type V (simd_of<N>: N lanes whatever the
+// flags, which the compiler splits over the registers it has), so that the tests run the widths
+// of every instruction set on any x86-64 (tests/unit/solver/lane_widths.cpp).
 
 #include <experimental/simd>
 
@@ -20,30 +23,41 @@ namespace stdx = std::experimental;
 using simd_double = stdx::native_simd<double>;
 using simd_mask = simd_double::mask_type;
 inline constexpr int simd_lanes = static_cast<int>(simd_double::size());
+// N lanes whatever the instruction set.
+template <int N>
+using simd_of = stdx::fixed_size_simd<double, N>;
+// The lanes of a vector type V.
+template <class V>
+inline constexpr int lanes_of = static_cast<int>(V::size());
 
 // The lanes of x, each passed through f (a scalar function of a double).
-template <class F>
-simd_double lanewise(const simd_double& x, F&& f) {
-  return simd_double([&](auto lane) { return f(x[lane]); });
+template <class V, class F>
+V lanewise(const V& x, F&& f) {
+  return V([&](auto lane) { return f(x[lane]); });
 }
 
 // Lane k of the result is get(k): a gather from an array of structures.
-template <class Get>
-simd_double gather_lanes(Get&& get) {
-  return simd_double([&](auto lane) { return get(static_cast<int>(lane)); });
+template <class V = simd_double, class Get>
+V gather_lanes(Get&& get) {
+  return V([&](auto lane) { return get(static_cast<int>(lane)); });
 }
 
-using block_lanes = basic_block_matrix<simd_double>;
+template <class V = simd_double>
+using basic_block_lanes = basic_block_matrix<V>;
+using block_lanes = basic_block_lanes<simd_double>;
 
 // The block matrices item(0), item(1), ... as lanes.
-template <class Item>
-block_lanes gather_block(Item&& item) {
-  return {gather_lanes([&](int k) { return item(k).xx; }), gather_lanes([&](int k) { return item(k).xy; }),
-          gather_lanes([&](int k) { return item(k).yx; }), gather_lanes([&](int k) { return item(k).yy; }),
-          gather_lanes([&](int k) { return item(k).zz; })};
+template <class V = simd_double, class Item>
+basic_block_lanes<V> gather_block(Item&& item) {
+  return {gather_lanes<V>([&](int k) { return item(k).xx; }), gather_lanes<V>([&](int k) { return item(k).xy; }),
+          gather_lanes<V>([&](int k) { return item(k).yx; }), gather_lanes<V>([&](int k) { return item(k).yy; }),
+          gather_lanes<V>([&](int k) { return item(k).zz; })};
 }
 
 // Lane k's block matrix.
-inline block_matrix lane_of(const block_lanes& a, int k) { return {a.xx[k], a.xy[k], a.yx[k], a.yy[k], a.zz[k]}; }
+template <class V>
+block_matrix lane_of(const basic_block_lanes<V>& a, int k) {
+  return {a.xx[k], a.xy[k], a.yx[k], a.yy[k], a.zz[k]};
+}
 
 }  // namespace rkpm

@@ -1,6 +1,6 @@
 #pragma once
-// point_materials<G, M>::internal_force and its batched update (solver/point_materials.hpp): the
-// force loop over the traversal's tiles, the material at every point (simd_lanes points at a time
+// point_materials<G, M, V>::internal_force and its batched update (solver/point_materials.hpp): the
+// force loop over the traversal's tiles, the material at every point (lanes_of<V> points at a time
 // where the material has a batched update, with the same bits), the tiles' sums in order.
 // Included at the end of solver/point_materials.hpp.
 
@@ -14,8 +14,8 @@
 
 namespace rkpm {
 
-template <Geometry G, Material M>
-void point_materials<G, M>::internal_force(const discrete_model& m, const materials_by_body<M>& material,
+template <Geometry G, Material M, class V>
+void point_materials<G, M, V>::internal_force(const discrete_model& m, const materials_by_body<M>& material,
                                            const std::vector<vec2>& d, std::vector<vec2>& f_int,
                                            step_context where) {
   const point_traversal& tr = m.traversal;
@@ -49,9 +49,9 @@ void point_materials<G, M>::internal_force(const discrete_model& m, const materi
     else point_force(m, tile, q, F, tau, S, hoop);
   };
   if constexpr (batched) {
-    assemble_point_batches<G, simd_lanes>(
+    assemble_point_batches<G, lanes_of<V>>(
         m, d, f_int, [&](index_t t, index_t q0, int n, const point_gradient* g, mat2* S, double* hoop) {
-          if (n < simd_lanes || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
+          if (n < lanes_of<V> || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
             for (int k = 0; k < n; ++k) point(t, q0 + k, g[k], S[k], hoop[k]);
         });
   } else {
@@ -68,23 +68,24 @@ void point_materials<G, M>::internal_force(const discrete_model& m, const materi
   plastic_work_ = plastic;
 }
 
-template <Geometry G, Material M>
-bool point_materials<G, M>::batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t,
+template <Geometry G, Material M, class V>
+bool point_materials<G, M, V>::batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t,
                                          index_t q0, const point_gradient* g, mat2* S, double* hoop,
                                          step_context where, double log_dt) {
   // F relative to the current reference, and the total F the material takes (79).
-  std::array<mat3, simd_lanes> F;
-  std::array<block_matrix, simd_lanes> total;
+  constexpr int lanes = lanes_of<V>;
+  std::array<mat3, lanes> F;
+  std::array<block_matrix, lanes> total;
   const bool rereferenced = reference_.active();
-  for (int k = 0; k < simd_lanes; ++k) {
+  for (int k = 0; k < lanes; ++k) {
     F[k] = deformation_gradient_at(m, q0 + k, g[k]);
     total[k] = rereferenced ? reference_.total(q0 + k, block_matrix::of(F[k])) : block_matrix::of(F[k]);
     const double J = total[k].determinant();
     if (!(J > 0.0) || !std::isfinite(J) || &material.at_point(q0 + k) != &material.at_point(q0)) return false;
   }
   if (!updates_in_lanes(material.at_point(q0))) return false;
-  const block_lanes F_lanes = gather_block([&](int k) { return total[k]; });
-  block_lanes tau;
+  const basic_block_lanes<V> F_lanes = gather_block<V>([&](int k) { return total[k]; });
+  basic_block_lanes<V> tau;
   try {
     tau = kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
                                            material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
@@ -92,26 +93,26 @@ bool point_materials<G, M>::batch_update(const discrete_model& m, const material
     return false;
   }
   // point_force of the lanes (solver/point_force_terms.hpp), the tile's sums in point order.
-  const simd_double weight = gather_lanes([&](int k) { return m.points.weight[q0 + k]; });
-  const simd_double radius = gather_lanes([&](int k) { return m.points.position[q0 + k][0]; });
+  const V weight = gather_lanes<V>([&](int k) { return m.points.weight[q0 + k]; });
+  const V radius = gather_lanes<V>([&](int k) { return m.points.position[q0 + k][0]; });
   tile_summary& tile = tile_[t];
   if (rereferenced) {  // (80): F_rel with tau / det F_r, as point_force_rereferenced
-    const simd_double volume_change = gather_lanes([&](int k) { return reference_.volume_change(q0 + k); });
-    const block_lanes tau_r{tau.xx / volume_change, tau.xy / volume_change, tau.yx / volume_change,
+    const V volume_change = gather_lanes<V>([&](int k) { return reference_.volume_change(q0 + k); });
+    const basic_block_lanes<V> tau_r{tau.xx / volume_change, tau.xy / volume_change, tau.yx / volume_change,
                             tau.yy / volume_change, tau.zz / volume_change};
-    const block_lanes F_rel = gather_block([&](int k) { return block_matrix::of(F[k]); });
-    const simd_double stretch =
+    const basic_block_lanes<V> F_rel = gather_block<V>([&](int k) { return block_matrix::of(F[k]); });
+    const V stretch =
         support_stretch(point_forces_in_lanes<G>(F_rel, tau_r, weight, radius, S, hoop), support_inverse_);
-    for (int k = 0; k < simd_lanes; ++k) {
+    for (int k = 0; k < lanes; ++k) {
       tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
       tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k] *
                       reference_.initial_volume_per_weight(q0 + k);
     }
     return true;
   }
-  const simd_double stretch =
+  const V stretch =
       support_stretch(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
-  for (int k = 0; k < simd_lanes; ++k) {
+  for (int k = 0; k < lanes; ++k) {
     tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
     tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k];
   }

@@ -1,5 +1,5 @@
 #pragma once
-// point_materials<G, M>: the material at every quadrature point and the internal force it
+// point_materials<G, M, V>: the material at every quadrature point and the internal force it
 // gives (docs/method.md sections 4 and 5). At the coefficients d:
 //   F_q = I + H_q (in-plane block),  F33 from the geometry,  tau_q from the material update,
 //   S_q = tau_q F_q^-T w_q (in-plane),  h_q = tau33_q / F33_q w_q / R_q (axisymmetric),
@@ -16,6 +16,8 @@
 // After a re-reference (rereference()) the gradients are those of the current reference: the
 // material gets F = F_rel F_r and the force terms F_rel with tau / det F_r (docs/method.md
 // (79)-(80), solver/point_reference.hpp), in the batched path as in the one-point one.
+// V: the vector of doubles of the batched update (core/simd.hpp), the native one but in the
+// tests, which run every width on any machine (tests/unit/solver/lane_widths.cpp).
 
 #include <algorithm>
 #include <array>
@@ -40,7 +42,7 @@
 
 namespace rkpm {
 
-template <Geometry G, Material M>
+template <Geometry G, Material M, class V = simd_double>
 class point_materials {
  public:
   using state_type = typename M::state_type;
@@ -55,10 +57,10 @@ class point_materials {
   };
   // The material has a batched update (material/j2_batch.hpp; found by argument-dependent
   // lookup, so a material of another namespace can offer one, with updates_in_lanes(m) saying
-  // for which of its bodies): the force loop takes simd_lanes points at a time.
+  // for which of its bodies): the force loop takes lanes_of<V> points at a time.
   static constexpr bool batched =
-      requires(const M& m, const block_lanes& F, state_type* s, const material_step& step) {
-        { kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<block_lanes>;
+      requires(const M& m, const basic_block_lanes<V>& F, state_type* s, const material_step& step) {
+        { kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<basic_block_lanes<V>>;
         { updates_in_lanes(m) } -> std::same_as<bool>;
       } && state_records_F && stress_recomputed;
 
@@ -74,7 +76,7 @@ class point_materials {
   }
 
   // f_int at coefficients d; advances the material states to the new F. A material with a
-  // batched update (material/j2_batch.hpp) takes simd_lanes points at a time, with the same bits.
+  // batched update (material/j2_batch.hpp) takes lanes_of<V> points at a time, with the same bits.
   void internal_force(const discrete_model& m, const materials_by_body<M>& material, const std::vector<vec2>& d,
                       std::vector<vec2>& f_int, step_context where);
 
@@ -183,7 +185,7 @@ class point_materials {
     tile.plastic += state_[q].plastic_work * m.points.weight[q];
   }
 
-  // The batched update of points q0 .. q0 + simd_lanes - 1 (material/j2_batch.hpp). False, with
+  // The batched update of points q0 .. q0 + lanes_of<V> - 1 (material/j2_batch.hpp). False, with
   // nothing changed, where the point-by-point update must decide: a lane with det F <= 0 or
   // not finite, lanes of bodies with different materials, a material that updates its points one
   // by one (updates_in_lanes), or a return that failed; the caller

@@ -3,7 +3,8 @@
 // j2_uniaxial.cpp): on lanes that stay elastic, yield, turn rigidly or mix all three, with the
 // linear law's closed-form return and the power law's Newton iteration, every stress entry and
 // every state member must have the scalar update's bits. A failed return must leave every state
-// as it was.
+// as it was. At every width users build: the native vector of this build (core/simd.hpp) and
+// 2, 4 and 8 lanes (simd_of<N>, fixed-size vectors that need no AVX2 or AVX-512 to run).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 #include <rkpm/material/hardening/linear.hpp>
@@ -24,7 +26,6 @@ namespace j2_batch_test {
 using rkpm::block_matrix;
 using rkpm::mat3;
 using rkpm::material_step;
-using rkpm::simd_lanes;
 using rkpm::material::j2_plasticity;
 using rkpm::material::j2_state;
 namespace h = rkpm::material::hardening;
@@ -59,17 +60,18 @@ mat3 deformation(int kind, int k, int n) {
 
 // Runs lanes of the given kinds through 20 stages, batched and point by point, and checks
 // every stress and state bit.
-template <class H>
-void check_lanes(const j2_plasticity<H>& m, const std::array<int, simd_lanes>& kinds) {
-  std::vector<j2_state> batch(simd_lanes, m.initial_state()), scalar = batch;
+template <class V, class H>
+void check_lanes(const j2_plasticity<H>& m, const std::array<int, rkpm::lanes_of<V>>& kinds) {
+  constexpr int lanes = rkpm::lanes_of<V>;
+  std::vector<j2_state> batch(lanes, m.initial_state()), scalar = batch;
   int yielded = 0;
   for (int n = 1; n <= 20; ++n) {
-    std::array<mat3, simd_lanes> F;
-    for (int k = 0; k < simd_lanes; ++k) F[k] = deformation(kinds[k], k, n);
+    std::array<mat3, lanes> F;
+    for (int k = 0; k < lanes; ++k) F[k] = deformation(kinds[k], k, n);
     const material_step step{1e-7, 1e-7 * n, std::numeric_limits<double>::quiet_NaN(), std::log(1e-7)};
-    const rkpm::block_lanes tau = rkpm::material::kirchhoff_stress_batch(
-        m, rkpm::gather_block([&](int k) { return block_matrix::of(F[k]); }), batch.data(), step);
-    for (int k = 0; k < simd_lanes; ++k) {
+    const rkpm::basic_block_lanes<V> tau = rkpm::material::kirchhoff_stress_batch(
+        m, rkpm::gather_block<V>([&](int k) { return block_matrix::of(F[k]); }), batch.data(), step);
+    for (int k = 0; k < lanes; ++k) {
       CAPTURE(kinds[k]);
       CAPTURE(k);
       CAPTURE(n);
@@ -87,41 +89,54 @@ void check_lanes(const j2_plasticity<H>& m, const std::array<int, simd_lanes>& k
   CHECK((yielded > 0) == any_yielding);  // the paths reach the branches they are meant to
 }
 
-template <class H>
+template <class V, class H>
 void check_all_mixes(const j2_plasticity<H>& m) {
+  constexpr int lanes = rkpm::lanes_of<V>;
   for (int kind = 0; kind < 4; ++kind) {
-    std::array<int, simd_lanes> same;
+    std::array<int, lanes> same;
     same.fill(kind);
-    check_lanes(m, same);
+    check_lanes<V>(m, same);
   }
-  std::array<int, simd_lanes> mixed;
-  for (int k = 0; k < simd_lanes; ++k) mixed[k] = (k * 3 + 1) % 4;
-  check_lanes(m, mixed);
+  // Every kind beside every other: lanes k and k + 1 differ, and 4 or more lanes hold all four.
+  std::array<int, lanes> mixed;
+  for (int k = 0; k < lanes; ++k) mixed[k] = (k * 3 + 1) % 4;
+  check_lanes<V>(m, mixed);
 }
 
-TEST_CASE("j2_batch: linear hardening, every lane as the scalar update") {
-  check_all_mixes(j2_plasticity<h::linear>(copper, copper_hardening));
+// The widths: this build's native vector, and 2, 4 and 8 lanes on any x86-64 (doctest's
+// template test cases, TEST_CASE_TEMPLATE_DEFINE and _APPLY over this list).
+using widths = std::tuple<rkpm::simd_double, rkpm::simd_of<2>, rkpm::simd_of<4>, rkpm::simd_of<8>>;
+
+TEST_CASE_TEMPLATE_DEFINE("j2_batch: linear hardening, every lane as the scalar update", V, j2_batch_linear) {
+  CAPTURE(rkpm::lanes_of<V>);
+  check_all_mixes<V>(j2_plasticity<h::linear>(copper, copper_hardening));
 }
 
-TEST_CASE("j2_batch: power-law hardening (Newton return), every lane as the scalar update") {
-  check_all_mixes(j2_plasticity<h::power_law>(copper, wheel_hardening));
+TEST_CASE_TEMPLATE_DEFINE("j2_batch: power-law hardening (Newton return), every lane as the scalar update", V, j2_batch_power_law) {
+  CAPTURE(rkpm::lanes_of<V>);
+  check_all_mixes<V>(j2_plasticity<h::power_law>(copper, wheel_hardening));
 }
 
-TEST_CASE("j2_batch: a return that fails leaves every state as it was") {
+TEST_CASE_TEMPLATE_DEFINE("j2_batch: a return that fails leaves every state as it was", V, j2_batch_failed_return) {
+  constexpr int lanes = rkpm::lanes_of<V>;
   // One Newton update is too few for the power law's return from a large overstress.
   const j2_plasticity<h::power_law> m(copper, wheel_hardening, 1e-12, 1);
-  std::vector<j2_state> states(simd_lanes, m.initial_state());
+  std::vector<j2_state> states(lanes, m.initial_state());
   const std::vector<j2_state> before = states;
   const mat3 F = deformation(1, 0, 10);
   CHECK_THROWS_WITH(rkpm::material::kirchhoff_stress_batch(
-                        m, rkpm::gather_block([&](int) { return block_matrix::of(F); }),
+                        m, rkpm::gather_block<V>([&](int) { return block_matrix::of(F); }),
                         states.data(), material_step{}),
                     doctest::Contains("did not converge"));
-  for (int k = 0; k < simd_lanes; ++k) {
+  for (int k = 0; k < lanes; ++k) {
     CHECK(same_bits(states[k].elastic_left_cauchy_green, before[k].elastic_left_cauchy_green));
     CHECK(same_bits(states[k].previous_deformation, before[k].previous_deformation));
     CHECK(states[k].equivalent_plastic_strain == before[k].equivalent_plastic_strain);
   }
 }
+
+TEST_CASE_TEMPLATE_APPLY(j2_batch_linear, widths);
+TEST_CASE_TEMPLATE_APPLY(j2_batch_power_law, widths);
+TEST_CASE_TEMPLATE_APPLY(j2_batch_failed_return, widths);
 
 }  // namespace j2_batch_test

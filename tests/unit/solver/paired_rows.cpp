@@ -3,7 +3,7 @@
 // then gathers and scatters two points per visit of a neighbour. The pairs are found where they
 // hold (Q2 and Q4) and nowhere else (one point per cell; a table whose paired points differ),
 // and f comes out with the same bits as the point-by-point traversal, in both geometries and
-// with the corrected test gradients of VCI.
+// with the corrected test gradients of VCI, in batches of 2, 4 and 8 points.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -64,9 +64,14 @@ void check_same_forces() {
   REQUIRE(m.traversal.paired_rows);
   const std::vector<vec2> x = deformed(m);
   const std::vector<vec2> paired = forces<G, 4>(m, x);
+  // Batches of the force loop's widths (2 lanes with the baseline flags, 4 with AVX2, 8 with
+  // AVX-512), paired and not.
+  CHECK(same_bits(paired, forces<G, 2>(m, x)));
+  CHECK(same_bits(paired, forces<G, 8>(m, x)));
   m.traversal.paired_rows = false;
-  const std::vector<vec2> one_by_one = forces<G, 4>(m, x);
-  CHECK(same_bits(paired, one_by_one));
+  CHECK(same_bits(paired, forces<G, 2>(m, x)));
+  CHECK(same_bits(paired, forces<G, 4>(m, x)));
+  CHECK(same_bits(paired, forces<G, 8>(m, x)));
   CHECK(same_bits(paired, forces<G, 1>(m, x)));  // a batch of one is never paired
   double largest = 0.0;
   for (const vec2& fI : paired) largest = std::max(largest, fI.norm());

@@ -1,7 +1,9 @@
 // The end of the point rule in lanes (solver/point_force_terms.hpp) against its one-point form
 // (the same header: S = tau F^-T w, the hoop term and the support stretch with Eigen's 2x2
 // arithmetic): every lane's bits, on deformation gradients that stretch,
-// shear, turn and compress, in both geometries, and a support stretch of 1 at F = I.
+// shear, turn and compress, in both geometries, and a support stretch of 1 at F = I. At every
+// width users build: this build's native vector and 2, 4 and 8 lanes (simd_of<N>, core/simd.hpp,
+// fixed-size vectors that need no AVX2 or AVX-512 to run).
 #include <doctest/doctest.h>
 
 #include <Eigen/LU>
@@ -9,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
@@ -18,10 +21,7 @@ namespace point_force_terms_test {
 
 using rkpm::mat2;
 using rkpm::mat3;
-using rkpm::simd_double;
-using rkpm::simd_lanes;
 using rkpm::vec2;
-using lanes = rkpm::block_lanes;
 
 // The same bits, unless Eigen's 2x2 products use fused multiply-adds (a build with -march for a
 // machine with FMA units, RKPM_NATIVE_ARCH), which the lanes' separate products and sums do not:
@@ -51,27 +51,29 @@ mat3 stress(int n, int k) {
   return tau;
 }
 
-template <class G>
+template <class G, class V>
 void check_samples() {
+  constexpr int width = rkpm::lanes_of<V>;
   const vec2 support_inverse(1.0 / 2.5e-3, 1.0 / 0.8e-3);
   for (int n = 0; n < 40; ++n) {
-    std::array<mat3, simd_lanes> F, tau;
-    std::array<double, simd_lanes> weight, radius;
-    for (int k = 0; k < simd_lanes; ++k) {
+    std::array<mat3, width> F, tau;
+    std::array<double, width> weight, radius;
+    for (int k = 0; k < width; ++k) {
       F[k] = deformation(n, k);
       tau[k] = stress(n, k);
       weight[k] = 1e-7 * (1.0 + 0.1 * k + 0.01 * n);
       radius[k] = 1e-3 * (0.5 + k + 0.1 * n);
     }
-    const auto block = [](const std::array<mat3, simd_lanes>& a) {
-      return rkpm::gather_block([&](int k) { return rkpm::block_matrix::of(a[k]); });
+    const auto block = [](const std::array<mat3, width>& a) {
+      return rkpm::gather_block<V>([&](int k) { return rkpm::block_matrix::of(a[k]); });
     };
-    std::array<mat2, simd_lanes> S;
-    std::array<double, simd_lanes> hoop;
-    const lanes Fi = rkpm::point_forces_in_lanes<G>(block(F), block(tau), simd_double(weight.data(), rkpm::stdx::element_aligned),
-                                                    simd_double(radius.data(), rkpm::stdx::element_aligned), S.data(), hoop.data());
-    const simd_double stretch = rkpm::support_stretch(Fi, support_inverse);
-    for (int k = 0; k < simd_lanes; ++k) {
+    std::array<mat2, width> S;
+    std::array<double, width> hoop;
+    const rkpm::basic_block_lanes<V> Fi =
+        rkpm::point_forces_in_lanes<G>(block(F), block(tau), V(weight.data(), rkpm::stdx::element_aligned),
+                                       V(radius.data(), rkpm::stdx::element_aligned), S.data(), hoop.data());
+    const V stretch = rkpm::support_stretch(Fi, support_inverse);
+    for (int k = 0; k < width; ++k) {
       CAPTURE(n);
       CAPTURE(k);
       mat2 S_k;
@@ -86,20 +88,27 @@ void check_samples() {
   }
 }
 
-TEST_CASE("point_force_terms: S, the hoop term and the support stretch of every lane as point by point") {
-  check_samples<rkpm::geometry::axisymmetric>();
-  check_samples<rkpm::geometry::plane_strain>();
+// The widths: this build's native vector, and 2, 4 and 8 lanes on any x86-64.
+using widths = std::tuple<rkpm::simd_double, rkpm::simd_of<2>, rkpm::simd_of<4>, rkpm::simd_of<8>>;
+
+TEST_CASE_TEMPLATE_DEFINE("point_force_terms: S, the hoop term and the support stretch of every lane as point by point",
+                          V, point_force_terms_samples) {
+  CAPTURE(rkpm::lanes_of<V>);
+  check_samples<rkpm::geometry::axisymmetric, V>();
+  check_samples<rkpm::geometry::plane_strain, V>();
 }
 
-TEST_CASE("point_force_terms: at F = I the support stretch is 1 and S = tau w") {
+TEST_CASE_TEMPLATE_DEFINE("point_force_terms: at F = I the support stretch is 1 and S = tau w", V, point_force_terms_identity) {
+  using lanes = rkpm::basic_block_lanes<V>;
+  constexpr int width = rkpm::lanes_of<V>;
   const lanes identity{};
-  lanes tau{simd_double(2e8), simd_double(5e7), simd_double(5e7), simd_double(-1e8), simd_double(3e7)};
-  std::array<mat2, simd_lanes> S;
-  std::array<double, simd_lanes> hoop;
-  const lanes Fi = rkpm::point_forces_in_lanes<rkpm::geometry::axisymmetric>(identity, tau, simd_double(2.0), simd_double(4.0),
-                                                                             S.data(), hoop.data());
-  const simd_double stretch = rkpm::support_stretch(Fi, vec2(1.0 / 3e-3, 1.0 / 1e-3));
-  for (int k = 0; k < simd_lanes; ++k) {
+  lanes tau{V(2e8), V(5e7), V(5e7), V(-1e8), V(3e7)};
+  std::array<mat2, width> S;
+  std::array<double, width> hoop;
+  const lanes Fi = rkpm::point_forces_in_lanes<rkpm::geometry::axisymmetric>(identity, tau, V(2.0), V(4.0), S.data(),
+                                                                             hoop.data());
+  const V stretch = rkpm::support_stretch(Fi, vec2(1.0 / 3e-3, 1.0 / 1e-3));
+  for (int k = 0; k < width; ++k) {
     CHECK(stretch[k] == doctest::Approx(1.0).epsilon(1e-15));
     CHECK(S[k](0, 0) == 4e8);
     CHECK(S[k](0, 1) == 1e8);
@@ -107,5 +116,8 @@ TEST_CASE("point_force_terms: at F = I the support stretch is 1 and S = tau w") 
     CHECK(hoop[k] == 3e7 * 2.0 / 4.0);
   }
 }
+
+TEST_CASE_TEMPLATE_APPLY(point_force_terms_samples, widths);
+TEST_CASE_TEMPLATE_APPLY(point_force_terms_identity, widths);
 
 }  // namespace point_force_terms_test

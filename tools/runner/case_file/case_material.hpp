@@ -195,9 +195,9 @@ template <class State>
 bool updates_in_lanes(const basic_material_type<State>& m) {
   return m.johnson_cook() == nullptr && m.zerilli_armstrong() == nullptr;
 }
-template <class State>
-block_lanes kirchhoff_stress_batch(const basic_material_type<State>& m, const block_lanes& F, State* s,
-                                   const material_step& step) {
+template <class State, class V>
+basic_block_lanes<V> kirchhoff_stress_batch(const basic_material_type<State>& m, const basic_block_lanes<V>& F,
+                                            State* s, const material_step& step) {
   return material::kirchhoff_stress_batch(m.j2(), F, s, step);
 }
 
