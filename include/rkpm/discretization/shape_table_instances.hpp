@@ -15,14 +15,18 @@
 #include <rkpm/kernel/quartic_spline.hpp>
 
 // With the tables, the shape functions' evaluate() (the moment matrix and its solves), which
-// the tests and tutorials also call directly.
+// the tests and tutorials also call directly, in 2D and in 1D (tutorial 01's profiles and the
+// reproduction tests: each of the four took several seconds of a file's compile, mostly
+// Eigen's eigensolver of the moment matrix in check_conditioning).
 #if defined(RKPM_INSTANTIATE_SHAPE_TABLES)
 #define RKPM_SHAPE_TABLE_INSTANCE(K, C) \
+  template class rk_shape_functions<K, C, 1>; \
   template class rk_shape_functions<K, C, 2>; \
   template shape_table<2> build_shape_table<K, C, 2>(const neighbor_search<2>&, const std::vector<vec<2>>&, \
                                                       const rk_shape_functions<K, C, 2>&, shape_table_contents);
 #elif defined(RKPM_EXTERN_SHAPE_TABLES)
 #define RKPM_SHAPE_TABLE_INSTANCE(K, C) \
+  extern template class rk_shape_functions<K, C, 1>; \
   extern template class rk_shape_functions<K, C, 2>; \
   extern template shape_table<2> build_shape_table<K, C, 2>(const neighbor_search<2>&, \
                                                              const std::vector<vec<2>>&, \
