@@ -51,7 +51,7 @@ def fitted_m(target, red=50):
     f = lambda m: ring_avitzur.curve(m, reductions=(red,), steps=100)[red]
     if target > f(lo) or target < f(hi):
         return float("nan")
-    for _ in range(30):
+    for _ in range(20):
         mid = 0.5 * (lo + hi)
         if f(mid) > target:
             lo = mid
@@ -79,10 +79,11 @@ def main():
         d = os.path.join(a.out, "mu_%g" % mu)
         if not a.no_run:
             subprocess.run([a.runner, case, "--set", "/contact/friction=%g" % mu, "--resolution",
-                            str(a.resolution), "--out", d, "--quiet", "--no-plots"], check=True,
+                            str(a.resolution), "--out", d, "--threads", "1", "--quiet", "--no-plots"], check=True,
                            stdout=subprocess.DEVNULL)
         c = rkpm_curve(d)
-        ratio = json.load(open(os.path.join(d, "summary.json")))["mass_scaling"]["max_kinetic_to_internal"]
+        summary = json.load(open(os.path.join(d, "summary.json")))
+        ratio = summary.get("scaled_masses", {}).get("max_kinetic_to_internal", float("nan"))
         m = min(1.0, math.sqrt(3) * mu)
         av = ring_avitzur.curve(m, reductions=REDUCTIONS, steps=100)
         rk = [at(c, r) for r in REDUCTIONS]

@@ -129,6 +129,7 @@ def step_budget(rkpm_run, work):
     check("warning" not in r.stderr, f"a memory warning on a small run: {r.stderr!r}")
     mass_scaling(rkpm_run, work)
     hot_forging(rkpm_run, work)
+    ring_compression(rkpm_run, work)
 
 
 def hot_forging(rkpm_run, work):
@@ -156,6 +157,32 @@ def hot_forging(rkpm_run, work):
     check("heat_from_tools_J" in header and "temperature_min_K" in header, f"hot_forging: history columns {header}")
     check(os.path.isfile(os.path.join(out, "final_temperature.png")), "hot_forging: no final_temperature.png")
     print(f"ok  {'hot_forging to 0.05 s':50} -> T min {c.get('temperature_min_K')}, from dies {c.get('heat_from_tools_J')} J")
+
+
+def ring_compression(rkpm_run, work):
+    """cases/ring_compression.json (1.5 s a run) at Coulomb mu = 0 and 0.2 to 50% reduction: with
+    no friction the hole grows like the outer diameter (homogeneous flow, sqrt(2) - 1 = +41.4%),
+    with mu = 0.2 it shrinks (the ring test's calibration curves, tutorials/15_hot_forging);
+    both quasi-static under mass scaling."""
+    case = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases", "ring_compression.json")
+    change = {}
+    for mu in (0.0, 0.2):
+        out = os.path.join(work, f"ring_mu{mu:g}")
+        shutil.rmtree(out, ignore_errors=True)
+        r = run([rkpm_run, case, "--set", f"/contact/friction={mu:g}", "--out", out, "--threads", "1", "--quiet", "--no-plots"])
+        label = f"ring_compression, mu = {mu:g}"
+        check(r.returncode == 0, f"{label}: exit status {r.returncode}: {r.stderr!r}")
+        with open(os.path.join(out, "summary.json")) as f:
+            s = strict_json(f)
+        check(s.get("scaled_masses", {}).get("quasi_static") is True, f"{label}: {s.get('scaled_masses')}")
+        with open(os.path.join(out, "history.csv")) as f:
+            last = list(csv.DictReader(f))[-1]
+        reduction = -2.0 * float(last["die_travel_mm"]) / 10.0
+        check(abs(reduction - 0.5) < 1e-6, f"{label}: reduction {reduction}")
+        change[mu] = float(last["inner_radius_min_mm"]) / 7.5 - 1.0
+    check(abs(change[0.0] - (math.sqrt(2.0) - 1.0)) < 0.02, f"ring_compression: frictionless hole {change[0.0]:+.3f}, homogeneous +0.414")
+    check(change[0.2] < -0.1, f"ring_compression: mu = 0.2 hole {change[0.2]:+.3f}, expected to shrink by more than 10%")
+    print(f"ok  {'ring_compression mu = 0 and 0.2 to 50%':50} -> inner diameter {change[0.0]:+.3f}, {change[0.2]:+.3f}")
 
 
 def mass_scaling(rkpm_run, work):
