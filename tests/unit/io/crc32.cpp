@@ -9,6 +9,8 @@
 
 #include <rkpm/io/crc32.hpp>
 
+namespace test_unit_io_crc32 {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 TEST_CASE("crc32: the CRC-32 of zlib, whole or in pieces, with or without zlib") {
   using rkpm::io::crc32_of;
   using rkpm::io::crc32_portable;
@@ -27,3 +29,5 @@ TEST_CASE("crc32: the CRC-32 of zlib, whole or in pieces, with or without zlib")
   bytes[50000] ^= 1;
   CHECK(crc32_of(bytes.data(), bytes.size()) != whole);
 }
+
+}  // namespace test_unit_io_crc32

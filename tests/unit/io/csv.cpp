@@ -17,6 +17,8 @@
 
 #include <rkpm/io/csv.hpp>
 
+namespace test_unit_io_csv {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -140,3 +142,5 @@ TEST_CASE("csv errors name the path and the fix") {
   CHECK_THROWS_AS(rkpm::io::csv_writer(dir / "none.csv", std::vector<std::string>{}), rkpm::error);
   fs::remove_all(dir);
 }
+
+}  // namespace test_unit_io_csv

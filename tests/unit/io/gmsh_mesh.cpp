@@ -38,6 +38,8 @@
 
 #include "support/error_message.hpp"
 
+namespace test_unit_io_gmsh_mesh {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 namespace fs = std::filesystem;
 using rkpm::index_t;
 using rkpm::vec2;
@@ -357,3 +359,5 @@ TEST_CASE("mesh_polygon: bad polygons") {
   CHECK(contains(mesh({a, b, vec2(2, 0)}, 0.1), "zero area"));
   CHECK(contains(error_message([&] { rkpm::io::mesh_polygon({a, b, c}, 0.1, -1.0); }), "support factor -1"));
 }
+
+}  // namespace test_unit_io_gmsh_mesh

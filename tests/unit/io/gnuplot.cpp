@@ -16,6 +16,8 @@
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/gnuplot.hpp>
 
+namespace test_unit_io_gnuplot {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -126,3 +128,5 @@ TEST_CASE("gnuplot errors: a bad script or missing data reports gnuplot's messag
   }
   fs::remove_all(figure_scratch());
 }
+
+}  // namespace test_unit_io_gnuplot

@@ -11,6 +11,8 @@
 
 #include <rkpm/io/progress.hpp>
 
+namespace test_unit_io_progress {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 using rkpm::io::progress_line;
 
 namespace {
@@ -102,3 +104,5 @@ TEST_CASE("forced progress: steps/s and eta follow the wall clock") {
   CHECK(eta <= 3 * 2.0 + 1);
   std::fclose(f);
 }
+
+}  // namespace test_unit_io_progress

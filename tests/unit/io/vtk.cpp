@@ -37,6 +37,8 @@
 #include "support/run_capture.hpp"
 #include "support/vtu_formulas.hpp"
 
+namespace test_unit_io_vtk {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
+
 namespace fs = std::filesystem;
 using rkpm::mat3;
 using rkpm::vec2;
@@ -487,3 +489,5 @@ TEST_CASE("pvd: the index is valid after every addition and lists each added fil
   CHECK_FALSE(fs::exists(dir / "run.pvd.tmp"));
   fs::remove_all(vtk_scratch());
 }
+
+}  // namespace test_unit_io_vtk
