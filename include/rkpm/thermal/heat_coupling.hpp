@@ -176,12 +176,28 @@ class heat_coupling : public step_companion<Solver> {
     if constexpr (requires { s.contact().bodies().active_pairs(); }) body_contact_heat(s, dt);
   }
 
+  // A_J of (100): half of each boundary edge whose two ends carry the same contact mark
+  // (touching_), in the current configuration, times omega (16). Only those edges' ends are
+  // interpolated: no pass over the body in the step.
+  void add_contact_areas(const Solver& s) {
+    const discrete_model& m = s.model();
+    const auto position = [&](index_t I) {
+      return vec2(m.particles.position[I] + m.at_particles.interpolate(I, s.coefficients()));
+    };
+    for (const auto& [a, b] : boundary_edges_)
+      if (touching_[a] != 0 && touching_[a] == touching_[b]) {
+        const vec2 xa = position(a), xb = position(b);
+        const double half = 0.5 * (xb - xa).norm();
+        area_[a] += half * geometry_type::weight_factor(xa);
+        area_[b] += half * geometry_type::weight_factor(xb);
+      }
+  }
+
   void tool_contact_heat(const Solver& s, double dt) {
     const auto pairs = s.contact().active_pairs();
     if (pairs.empty()) return;
     const discrete_model& m = s.model();
     const double t = s.time();
-    const std::vector<vec2> x = s.particle_positions();
     const std::vector<vec2>& v = s.coefficient_velocities();
     for (const auto& p : pairs) {
       const index_t J = s.slave_particles()[p.slave];
@@ -196,12 +212,7 @@ class heat_coupling : public step_companion<Solver> {
       touching_[J] = p.tool + 1;
     }
     if (!tools_.temperature.empty()) {
-      for (const auto& [a, b] : boundary_edges_)
-        if (touching_[a] != 0 && touching_[a] == touching_[b]) {
-          const double half = 0.5 * (x[b] - x[a]).norm();
-          area_[a] += half * geometry_type::weight_factor(x[a]);
-          area_[b] += half * geometry_type::weight_factor(x[b]);
-        }
+      add_contact_areas(s);
       for (const auto& p : pairs) {
         const index_t J = s.slave_particles()[p.slave];
         const double T_tool = tools_.temperature[p.tool](t);
@@ -223,15 +234,9 @@ class heat_coupling : public step_companion<Solver> {
     const auto pairs = s.contact().bodies().active_pairs();
     if (pairs.empty()) return;
     const discrete_model& m = s.model();
-    const std::vector<vec2> x = s.particle_positions();
     const std::vector<vec2>& v = s.coefficient_velocities();
     for (const auto& p : pairs) touching_[p.slave] = -(p.pair + 1);
-    for (const auto& [a, b] : boundary_edges_)
-      if (touching_[a] < 0 && touching_[a] == touching_[b]) {
-        const double half = 0.5 * (x[b] - x[a]).norm();
-        area_[a] += half * geometry_type::weight_factor(x[a]);
-        area_[b] += half * geometry_type::weight_factor(x[b]);
-      }
+    add_contact_areas(s);
     for (const auto& p : pairs) {
       const double wa = 1.0 - p.lambda, wb = p.lambda;
       const vec2 rel = m.at_particles.interpolate(p.slave, v) -
