@@ -1,0 +1,177 @@
+#pragma once
+// Brittle fracture: Hencky elasticity (material/elastic.hpp, docs/method.md (22)) with isotropic
+// Rankine damage and linear softening, regularized by a crack band of width h so that a crack
+// dissipates the fracture energy G_c per unit area whatever the resolution (docs/method.md
+// section 4.7, (102)-(107)):
+//   tau~_i = lambda tr(eps) + 2 mu eps_i               the effective principal stresses
+//   kappa = max over the history of max_i tau~_i / E   the Rankine equivalent strain     (102)
+//   eps0 = sigma_t / E,  eps_f = 2 G_c / (sigma_t h) > eps0                               (103)
+//   D = 1 - (eps0 / kappa) (eps_f - kappa) / (eps_f - eps0) on [eps0, eps_f]              (104)
+//   tau_i = (1 - D) <tau~_i>_+ + <tau~_i>_-            tension degraded, compression kept (105)
+//   W_d = (G_c / h) (kappa - eps0) / (eps_f - eps0) on [eps0, eps_f]                      (106)
+// (106) is int Y dD with Y = E kappa^2 / 2, the Rankine energy at the damage surface, integrated
+// exactly: a function of kappa alone, so the dissipation does not depend on the step, and in
+// uniaxial stress it is the work of the stress minus the stored energy.
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string_view>
+#include <utility>
+
+#include <rkpm/concepts/material.hpp>
+#include <rkpm/core/bitwise.hpp>
+#include <rkpm/core/error.hpp>
+#include <rkpm/core/types.hpp>
+#include <rkpm/material/elastic_constants.hpp>
+#include <rkpm/material/hencky.hpp>
+
+namespace rkpm::material {
+
+struct rankine_fracture_state {
+  double equivalent_plastic_strain = 0.0;  // always 0: the law has no plastic flow
+  double plastic_work = 0.0;               // J/m^3 of reference volume: the dissipation W_d (106)
+  double fracture_work = 0.0;              // J/m^3, the same W_d, for a ledger that names fracture
+  double kappa = 0.0;                      // (102), dimensionless
+  double damage = 0.0;                     // D (104), >= 1 failed
+  // Unit normal of the crack in the current configuration: the in-plane principal direction of
+  // the larger in-plane effective stress at the update where D first grew; zero before, and zero
+  // after when the out-of-plane stress was the largest (a hoop crack in axisymmetry).
+  vec2 crack_normal = vec2::Zero();
+
+  bool failed() const { return damage >= 1.0; }
+  // The snapshot fields (io/solver_output.hpp).
+  static constexpr auto output_fields() {
+    return std::array{std::pair{std::string_view("damage"), &rankine_fracture_state::damage},
+                      std::pair{std::string_view("fracture_work_J_m3"), &rankine_fracture_state::fracture_work}};
+  }
+};
+
+static_assert(bitwise_value<rankine_fracture_state>, "checkpoints write the state as raw bytes");
+
+class rankine_fracture {
+ public:
+  static constexpr std::string_view name = "rankine";
+  using state_type = rankine_fracture_state;
+
+  // The band width for a kernel of support radius a (m): h = a. The RK approximation spreads a
+  // displacement jump over the window, so the softening strain localizes in a band of the
+  // support's size; for the cubic spline the window's width at equal area is 3a/4 in 1D, and h = a
+  // is the round number of that order (docs/method.md section 4.7).
+  static constexpr double band_width_of_support(double support) { return support; }
+
+  // tensile_strength sigma_t in Pa, fracture_energy G_c in J/m^2, band_width h in m.
+  rankine_fracture(elastic_constants constants, double tensile_strength, double fracture_energy, double band_width)
+      : constants_(constants), sigma_t_(tensile_strength), G_c_(fracture_energy), h_(band_width) {
+    constants_.validate();
+    if (!(std::isfinite(sigma_t_) && sigma_t_ > 0.0))
+      fail("material::rankine_fracture: tensile_strength = {} Pa is invalid: give a finite value > 0 (PMMA: 70e6 Pa, "
+           "concrete: 3e6 Pa)",
+           sigma_t_);
+    if (!(std::isfinite(G_c_) && G_c_ > 0.0))
+      fail("material::rankine_fracture: fracture_energy = {} J/m^2 is invalid: give a finite value > 0 (PMMA: 500 "
+           "J/m^2, concrete: 100 J/m^2)",
+           G_c_);
+    if (!(std::isfinite(h_) && h_ > 0.0))
+      fail("material::rankine_fracture: band_width = {} m is invalid: give a finite value > 0 (the kernel's support "
+           "radius, rankine_fracture::band_width_of_support(a))",
+           h_);
+    E_ = constants_.youngs_modulus;
+    mu_ = constants_.shear_modulus();
+    lambda_ = constants_.lame_lambda();
+    eps0_ = sigma_t_ / E_;
+    eps_f_ = 2.0 * G_c_ / (sigma_t_ * h_);
+    if (!(eps_f_ > eps0_))
+      fail("material::rankine_fracture: band_width h = {} m is too wide: the largest allowed is 2 G_c E / sigma_t^2 = "
+           "{} m (beyond it the softening snaps back, eps_f = 2 G_c / (sigma_t h) <= sigma_t / E); use finer "
+           "particles or a smaller band width",
+           h_, largest_band_width());
+    // On [eps0, eps_f]: 1 - D = c (eps_f / kappa - 1) with c = eps0 / (eps_f - eps0) (104).
+    softening_ = eps0_ / (eps_f_ - eps0_);
+  }
+
+  state_type initial_state() const { return {}; }
+
+  // F: block-structured deformation gradient (concepts/material.hpp). Advances kappa, D, W_d and
+  // the crack normal to F and returns the Kirchhoff stress (105).
+  mat3 kirchhoff_stress(const mat3& F, state_type& s) const {
+    check_deformation_gradient(F, "material::rankine_fracture");
+    const principal_frame frame = principal_frame::of(F * F.transpose());
+    const vec3 effective = effective_stress(frame);
+    const double largest = effective.maxCoeff();
+    const double kappa = largest / E_;  // (102)
+    if (kappa > s.kappa) {
+      const bool starts = s.damage == 0.0 && kappa > eps0_;
+      s.kappa = kappa;
+      s.damage = damage_at(kappa);
+      s.fracture_work = dissipation_at(kappa);
+      s.plastic_work = s.fracture_work;
+      if (starts) s.crack_normal = effective(0) >= effective(2) ? first_direction(frame) : vec2::Zero();
+    }
+    return degraded(frame, effective, s.damage);
+  }
+
+  // The stress the last kirchhoff_stress(F, s) returned (the same bits: the same F and D), so the
+  // solver need not store it.
+  mat3 current_kirchhoff_stress(const mat3& F, const state_type& s) const {
+    const principal_frame frame = principal_frame::of(F * F.transpose());
+    return degraded(frame, effective_stress(frame), s.damage);
+  }
+
+  // D(kappa) (104): 0 up to eps0, 1 from eps_f on.
+  double damage_at(double kappa) const {
+    if (!(kappa > eps0_)) return 0.0;
+    if (!(kappa < eps_f_)) return 1.0;
+    return 1.0 - softening_ * (eps_f_ / kappa - 1.0);
+  }
+  // W_d(kappa) (106) in J/m^3: 0 up to eps0, G_c / h from eps_f on.
+  double dissipation_at(double kappa) const {
+    if (!(kappa > eps0_)) return 0.0;
+    if (!(kappa < eps_f_)) return G_c_ / h_;
+    return G_c_ / h_ * (kappa - eps0_) / (eps_f_ - eps0_);
+  }
+
+  double tensile_strength() const { return sigma_t_; }
+  double fracture_energy() const { return G_c_; }
+  double band_width() const { return h_; }
+  // eps0 and eps_f (103).
+  double damage_onset_strain() const { return eps0_; }
+  double failure_strain() const { return eps_f_; }
+  // 2 G_c E / sigma_t^2 in m: the widest band without snap-back (103).
+  double largest_band_width() const { return 2.0 * G_c_ * constants_.youngs_modulus / (sigma_t_ * sigma_t_); }
+
+  double density() const { return constants_.density; }
+  double dilatational_wave_speed() const { return constants_.dilatational_wave_speed(); }
+  const elastic_constants& constants() const { return constants_; }
+
+ private:
+  // tau~_i (22) of the principal stretches.
+  vec3 effective_stress(const principal_frame& frame) const {
+    const vec3 eps = principal_log_strains(frame.values);
+    return vec3::Constant(lambda_ * eps.sum()) + 2.0 * mu_ * eps;
+  }
+  // (105): the positive principal stresses times 1 - D, the negative ones whole.
+  static mat3 degraded(const principal_frame& frame, const vec3& effective, double damage) {
+    const double integrity = 1.0 - damage;
+    vec3 tau;
+    for (int i = 0; i < 3; ++i) tau(i) = effective(i) > 0.0 ? integrity * effective(i) : effective(i);
+    return frame.assemble(tau);
+  }
+  // n1 = (cos theta, sin theta) from the frame's (cos 2 theta, sin 2 theta), theta in (-90, 90].
+  static vec2 first_direction(const principal_frame& frame) {
+    const double c = std::sqrt(std::max(0.0, 0.5 * (1.0 + frame.cos2)));
+    const double s = std::sqrt(std::max(0.0, 0.5 * (1.0 - frame.cos2)));
+    const vec2 n(c, frame.sin2 < 0.0 ? -s : s);
+    return n / n.norm();
+  }
+
+  elastic_constants constants_;
+  double sigma_t_, G_c_, h_;
+  double E_ = 0.0, mu_ = 0.0, lambda_ = 0.0;
+  double eps0_ = 0.0, eps_f_ = 0.0, softening_ = 0.0;
+};
+
+static_assert(Material<rankine_fracture>);
+
+}  // namespace rkpm::material
