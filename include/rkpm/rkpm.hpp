@@ -29,6 +29,7 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
+#include <rkpm/material/rankine_fracture.hpp>
 #include <rkpm/material/zerilli_armstrong.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 #include <rkpm/solver/config.hpp>

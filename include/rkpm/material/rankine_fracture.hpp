@@ -11,7 +11,8 @@
 //   W_d = (G_c / h) (kappa - eps0) / (eps_f - eps0) on [eps0, eps_f]                      (106)
 // (106) is int Y dD with Y = E kappa^2 / 2, the Rankine energy at the damage surface, integrated
 // exactly: a function of kappa alone, so the dissipation does not depend on the step, and in
-// uniaxial stress it is the work of the stress minus the stored energy.
+// uniaxial stress it is the work of the stress minus the stored energy. h follows the kernel's
+// support, h = a (107), so that W_d h = G_c per unit crack area at every resolution.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -55,10 +56,10 @@ class rankine_fracture {
   static constexpr std::string_view name = "rankine";
   using state_type = rankine_fracture_state;
 
-  // The band width for a kernel of support radius a (m): h = a. The RK approximation spreads a
-  // displacement jump over the window, so the softening strain localizes in a band of the
-  // support's size; for the cubic spline the window's width at equal area is 3a/4 in 1D, and h = a
-  // is the round number of that order (docs/method.md section 4.7).
+  // The band width for a kernel of support radius a (m): h = a (107). The RK approximation
+  // spreads a displacement jump over the window, so the softening strain localizes in a band of
+  // the support's size; the window's width at equal area is 3a/4 (cubic) or 4a/5 (quartic) in
+  // 1D, and h = a is the round number of that order (docs/method.md section 4.7).
   static constexpr double band_width_of_support(double support) { return support; }
 
   // tensile_strength sigma_t in Pa, fracture_energy G_c in J/m^2, band_width h in m.

@@ -250,7 +250,10 @@ TEST_CASE("rankine: the crack normal is the direction of the tension that opened
   CHECK(std::abs(p.s.crack_normal.dot(direction)) == doctest::Approx(1.0).epsilon(1e-12));
   // A later tension along another direction grows the same crack: the normal stays.
   const rkpm::vec2 first = p.s.crack_normal;
-  p.update(rotation(angle + std::numbers::pi / 2) * uniaxial(0.8 * eps_f) * rotation(angle + std::numbers::pi / 2).transpose());
+  const double D = p.s.damage;
+  const mat3 across = rotation(angle + std::numbers::pi / 2);
+  p.update(across * uniaxial(0.8 * eps_f) * across.transpose());
+  CHECK(p.s.damage > D);
   CHECK(p.s.crack_normal == first);
   CHECK(p.same_bits);
 }
