@@ -15,6 +15,7 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/crack_set.hpp>
 
 namespace rkpm {
 
@@ -26,6 +27,9 @@ struct background_mesh {
   // carry no quadrature rule (the points are the material points carried over) and say only
   // which particles and boundary edges belong together, so validate() checks their numbering.
   bool tangled = false;
+  // Cracks through the cells (docs/method.md section 3.7): the model built on these cells keeps
+  // its kernels from reaching across them. Empty: an intact body.
+  crack_set cracks;
 
   index_t cells() const { return static_cast<index_t>(cell.size()); }
 

@@ -118,7 +118,7 @@ template <Kernel K, Correction C, Geometry G>
 std::vector<vec2> boundary_integrals(const particle_set<2>& particles, const background_mesh& mesh,
                                      int points_per_edge, double max_condition = default_max_moment_condition) {
   const boundary_points b = make_boundary_points<G>(mesh, points_per_edge);
-  const neighbor_search<2> search(particles);
+  const neighbor_search<2> search(particles, &mesh.cracks);
   const shape_table<2> at_boundary = build_shape_table<K, C, 2>(search, b.position, rk_shape_functions<K, C, 2>(max_condition));
   return boundary_integrals(at_boundary, b, particles.size());
 }

@@ -2,12 +2,15 @@
 // neighbor_search<Dim>: cell lists over the particles' reference positions. Cells are as large
 // as the largest support in each direction, so the particles whose support covers a point x
 // lie in the 3^Dim cells around x. Set-up is O(N) (counting sort); a query returns every
-// particle with |x_k - X_Ik| < a_Ik in all directions, in ascending order, with no cap.
+// particle with |x_k - X_Ik| < a_Ik in all directions, in ascending order, with no cap; with
+// cracks (2D), only the particles whose sight line from x crosses none of them (docs/method.md
+// (112)).
 
 #include <algorithm>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
+#include <rkpm/discretization/crack_set.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/kernel/window.hpp>
 
@@ -16,7 +19,10 @@ namespace rkpm {
 template <int Dim>
 class neighbor_search {
  public:
-  explicit neighbor_search(const particle_set<Dim>& particles) : particles_(&particles) {
+  // `cracks`: kept by pointer (null or empty: none), as the particles are.
+  explicit neighbor_search(const particle_set<Dim>& particles, const crack_set* cracks = nullptr)
+      : particles_(&particles), cracks_(cracks && !cracks->empty() ? cracks : nullptr) {
+    if (Dim != 2 && cracks_) fail("cracks are segments in the plane: a {}-D particle set has none", Dim);
     particles.validate();
     lo_ = particles.position[0];
     vec<Dim> hi = lo_;
@@ -59,7 +65,7 @@ class neighbor_search {
       const index_t f = flat(cur);
       for (index_t s = start_[f]; s < start_[f + 1]; ++s) {
         const index_t i = sorted_[s];
-        if (kernel::in_support<Dim>(x - particles_->position[i], particles_->support[i]))
+        if (kernel::in_support<Dim>(x - particles_->position[i], particles_->support[i]) && visible(x, i))
           out.push_back(i);
       }
       int k = 0;
@@ -80,8 +86,13 @@ class neighbor_search {
   }
 
   const particle_set<Dim>& particles() const { return *particles_; }
+  const crack_set* cracks() const { return cracks_; }
 
  private:
+  bool visible(const vec<Dim>& x, index_t i) const {
+    if constexpr (Dim == 2) return !cracks_ || !cracks_->blocks(x, particles_->position[i]);
+    else return true;
+  }
   Eigen::Matrix<index_t, Dim, 1> cell_index(const vec<Dim>& x) const {
     Eigen::Matrix<index_t, Dim, 1> c;
     for (int k = 0; k < Dim; ++k) {
@@ -98,6 +109,7 @@ class neighbor_search {
   }
 
   const particle_set<Dim>* particles_;
+  const crack_set* cracks_;
   vec<Dim> lo_, cell_;
   Eigen::Matrix<index_t, Dim, 1> count_;
   std::vector<index_t> start_;

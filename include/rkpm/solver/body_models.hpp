@@ -30,6 +30,7 @@ inline body_part extract_body(const particle_set<2>& particles, const background
                               const model_bodies& bodies, index_t b) {
   body_part out;
   out.particle = bodies.particles_of(b);
+  out.mesh.cracks = mesh.cracks;  // in the same coordinates; those away from the body block nothing
   for (index_t I : out.particle) {
     out.particles.position.push_back(particles.position[I]);
     out.particles.volume.push_back(particles.volume[I]);

@@ -127,7 +127,7 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
                                        double max_condition = default_max_moment_condition) {
   discrete_model m;
   m.points = std::move(points);
-  const neighbor_search<2> search(particles);
+  const neighbor_search<2> search(particles, &mesh.cracks);
   const rk_shape_functions<K, C, 2> rk(max_condition);
   m.at_points = build_shape_table<K, C, 2>(search, m.points.position, rk);
   m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk, values_only);
@@ -146,6 +146,9 @@ template <Kernel K, Correction C, Geometry G>
 discrete_model build_nodal_model(particle_set<2> particles, background_mesh mesh, double beta, int edge_points,
                                  double max_condition = default_max_moment_condition) {
   if (!(beta >= 0.0 && beta <= 1.0)) fail("nodal integration: the stabilization {} must lie in [0, 1]", beta);
+  if (!mesh.cracks.empty())
+    fail("nodal integration with cracks: the smoothing cells do not follow a crack; use a cell rule (q4, q2, "
+         "with or without vci) for a body that cracks");
   const smoothing_cells cells = make_smoothing_cells(mesh);
   const nodal_points np = make_nodal_points<G>(cells, beta > 0.0);
   discrete_model m = build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), np.points, max_condition);

@@ -31,6 +31,7 @@
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/constraints.hpp>
 #include <rkpm/solver/contact_stage.hpp>
+#include <rkpm/solver/crack_growth.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/energy.hpp>
 #include <rkpm/solver/fields.hpp>
@@ -96,13 +97,15 @@ class explicit_solver {
   bool between_steps() const { return timeline_.between_steps(); }
 
   // ---- the model's lifecycle (docs/method.md section 5.8) ------------------------------
-  // Rebuilds the model in the current configuration through model_builder() and carries the
-  // state over (solver/rereference_step.hpp): step() calls it when options().rereference says so;
-  // a caller may call it between steps. Refused on several processes and without a builder.
+  // Rebuilds the model in the current configuration through model_builder(), carrying the state
+  // (solver/rereference_step.hpp): step() calls it when options().rereference says so or a crack
+  // grows; a caller may, between steps. Refused on several processes and without a builder.
   void rereference();
-  // The re-references so far and when they happened (s).
   index_t rereferences() const { return static_cast<index_t>(rereference_times_.size()); }
-  const std::vector<double>& rereference_times() const { return rereference_times_; }
+  const std::vector<double>& rereference_times() const { return rereference_times_; }  // s
+  // The cells cut by cracks (solver/crack_growth.hpp), and the pieces (a body each until it breaks).
+  const std::vector<cell_crack>& cracks() const { return cracks_; }
+  fragment_count fragments() const { return crack_fragments(model_, physical_mass()); }
   // The particles' initial reference positions X_I (the model's until the first re-reference).
   const std::vector<vec2>& initial_positions() const {
     return initial_position_.empty() ? model_.particles.position : initial_position_;
@@ -115,10 +118,8 @@ class explicit_solver {
   double min_time_step() const { return timeline_.min_step(); }
   double max_time_step() const { return timeline_.max_step(); }
   double reference_stable_step() const { return clock_.reference_stable_step(); }
-  // Steps to the end time at the current step size (the progress line's estimate).
   double estimated_steps_left() const { return std::max(0.0, options_.end_time - timeline_.time) / timeline_.dt; }
-  // Smallest support stretch over the quadrature points at the last force evaluation.
-  double min_stretch() const { return points_.min_stretch(); }
+  double min_stretch() const { return points_.min_stretch(); }  // the narrowest support stretch
   const energy_balance& energy() const { return energy_; }
   const run_options& options() const { return options_; }
   const discrete_model& model() const { return model_; }
@@ -146,8 +147,7 @@ class explicit_solver {
   const std::vector<vec2>& coefficient_velocities() const { return v_; }
   const std::vector<vec2>& internal_force() const { return f_int_; }
   const std::vector<state_type>& point_states() const { return points_.states(); }
-  // det F at quadrature point q at the last force evaluation.
-  double point_det_F(index_t q) const { return points_.det_F(q); }
+  double point_det_F(index_t q) const { return points_.det_F(q); }  // at the last force evaluation
   // F relative to the current reference at point q (F itself until a re-reference): how far the
   // kernels have been distorted since they were built.
   mat3 point_relative_deformation_gradient(index_t q) const { return points_.relative_deformation_gradient(q); }
@@ -157,8 +157,8 @@ class explicit_solver {
   contact_body body() const { return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles}; }
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
-  // Physical displacements, velocities and current positions x_I = X_I + u(X_I).
-  // The displacements since the start (across re-references: x_I - X_I^0).
+  // Physical displacements since the start (across re-references: x_I - X_I^0), velocities and
+  // current positions x_I = X_I + u(X_I).
   std::vector<vec2> particle_displacements() const {
     std::vector<vec2> u = values_at_particles(model_, d_);
     if (!initial_position_.empty())
@@ -200,6 +200,7 @@ class explicit_solver {
   void derive_from_model(std::vector<velocity_constraint> constraints,
                          std::optional<std::vector<index_t>> slaves = std::nullopt);
   bool rereference_due() const;
+  bool grow_cracks();  // cuts the cells of newly failed points; whether it cut any
   void scale_masses();
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).
@@ -237,6 +238,7 @@ class explicit_solver {
   std::vector<double> rereference_times_;
   index_t last_rereference_step_ = 0;
   std::vector<vec2> initial_position_;  // empty until the first re-reference
+  std::vector<cell_crack> cracks_;
   std::vector<std::shared_ptr<step_companion<explicit_solver>>> companions_;
 };
 

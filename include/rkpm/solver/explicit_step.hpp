@@ -107,7 +107,7 @@ void explicit_solver<G, M, Ct>::step() {
   energy_.record();
   if (options_.mass_scaling.enabled())
     quasi_static_.observe(options_.mass_scaling, timeline_.time, options_.end_time, energy_.kinetic, energy_.internal);
-  if (rereference_due()) rereference();
+  if (grow_cracks() || rereference_due()) rereference();
   else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);

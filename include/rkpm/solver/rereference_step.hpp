@@ -21,7 +21,9 @@
 //      warm-started power iteration) and f_int, a at the new reference.
 // Included at the end of solver/explicit_solver.hpp.
 
+#include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -43,6 +45,41 @@ bool explicit_solver<G, M, Ct>::rereference_due() const {
          points_.max_distortion(model_) > when.max_stretch;
 }
 
+// The cells of the points that have failed since the last call are cut (section 5.12), each once,
+// through its centroid normal to the first failed point's crack normal, on the current
+// configuration; cracks_ stays in cell order.
+template <Geometry G, Material M, Contact Ct>
+bool explicit_solver<G, M, Ct>::grow_cracks() {
+  if constexpr (!breaking_state<state_type>) {
+    return false;
+  } else {
+    const auto cut_already = [&](index_t c) {
+      const auto at = std::lower_bound(cracks_.begin(), cracks_.end(), c,
+                                       [](const cell_crack& k, index_t cell) { return k.cell < cell; });
+      return at != cracks_.end() && at->cell == c;
+    };
+    std::optional<background_mesh> current;  // the cells at the current positions, when needed
+    bool cut = false;
+    for (index_t q = 0; q < model_.point_count(); ++q) {
+      const state_type& s = points_.states()[q];
+      const index_t c = model_.points.cell[q];
+      if (!s.failed() || cut_already(c)) continue;
+      if (!current) current.emplace(background_mesh{positions_at_particles(model_, d_), model_.mesh.cell});
+      const std::optional<cell_crack> k = cut_cell(*current, c, vec2(s.crack_normal).normalized());
+      if (!k) continue;
+      cracks_.insert(std::lower_bound(cracks_.begin(), cracks_.end(), c,
+                                      [](const cell_crack& x, index_t cell) { return x.cell < cell; }),
+                     *k);
+      cut = true;
+    }
+    if (cut && (!factory_ || !model_.bodies.nodes_are_particles() || model_.is_part()))
+      fail("t = {:.6g} s: a point has failed and its cell must be cut, which rebuilds the model: {}", timeline_.time,
+           model_.is_part() ? "cracks on several processes are not available yet; run on one process"
+                            : "build the solver with make_solver and give the particles at the mesh nodes");
+    return cut;
+  }
+}
+
 template <Geometry G, Material M, Contact Ct>
 void explicit_solver<G, M, Ct>::rereference() {
   if (model_.is_part())
@@ -55,6 +92,9 @@ void explicit_solver<G, M, Ct>::rereference() {
     fail("re-referencing moves the cells with the particles at their corners: give the particles at the mesh "
          "nodes (make_grid_particles with make_grid_mesh, or particles from the mesh)");
   if (!timeline_.between_steps()) fail("rereference() between steps only");
+  if (initial_position_.empty() && !model_.mesh.cracks.empty())
+    fail("re-referencing a model with cracks given in its cells (background_mesh::cracks): they would not move "
+         "with the body; cut the notch out of the cells instead");
   if (initial_position_.empty()) initial_position_ = model_.particles.position;
 
   // 1. The model in the current configuration.
@@ -62,6 +102,7 @@ void explicit_solver<G, M, Ct>::rereference() {
   const std::vector<mat2> stretch = project_to_particles<mat2>(
       [&](index_t q) { return mat2(points_.relative_deformation_gradient(q).template topLeftCorner<2, 2>()); });
   auto [particles, cells] = deformed_particles(model_.particles, model_.mesh, x, stretch, !model_.nodal);
+  cells.cracks = cracks_on(cells, cracks_);
   // The points: each the same material point at its current position, its weight times J_rel
   // (the volume it stands for now), so that nothing is interpolated; a nodal rule's are made
   // again on the deformed cells.
@@ -116,6 +157,10 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
   }
   a.array("reference.times", s.rereference_times_);
   a.array("reference.initial_position", s.initial_position_);
+  std::uint64_t cuts = s.cracks_.size();
+  a.value("reference.crack_count", cuts);
+  if constexpr (reading) s.cracks_.resize(cuts);
+  a.array("reference.cracks", s.cracks_);
   if constexpr (reading) {
     if (count == 0) return;
     particle_set<2> particles = s.model_.particles;
@@ -125,6 +170,7 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
     a.array("reference.volume", particles.volume);
     cells.node = particles.position;
     cells.tangled = !s.model_.nodal;
+    cells.cracks = cracks_on(cells, s.cracks_);
     quadrature_points carried;  // the carried points (none for a nodal rule)
     if (!s.model_.nodal) {
       carried.position.resize(s.model_.point_count());

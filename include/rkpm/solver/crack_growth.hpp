@@ -1,0 +1,117 @@
+#pragma once
+// Cracks that grow through the background cells (docs/method.md section 5.12): when a
+// quadrature point of a material that can break has failed (its state's failed(), e.g.
+// material::rankine_fracture at full damage), its cell is cut by a straight crack through the
+// cell's centroid, normal to the point's crack normal (113), and the model is rebuilt in the
+// current configuration with the crack among the visibility criterion's segments (112), through
+// the re-reference (section 5.8). A cut is stored by where it crosses two sides of its cell, so
+// that it moves with the cell's corners (the particles) through later re-references:
+//   cell_crack       a cell's cut: the two sides it crosses and where along each
+//   cut_cell         the cut of a cell through its centroid with a given normal
+//   crack_chord      the cut's segment on the cells at their current corners, lengthened past
+//                    the cell's sides so that the cuts of neighbouring cells overlap
+//   cracks_on        every cut's segment, as the crack_set the model builder reads
+//   breaks           whether a material's states tell failure and the crack normal
+//   crack_fragments  the pieces the cracks have made: particles joined by a point's row
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <optional>
+#include <vector>
+
+#include <rkpm/core/types.hpp>
+#include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/crack_set.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+
+namespace rkpm {
+
+struct cell_crack {
+  index_t cell = 0;
+  std::array<index_t, 2> side{};  // side k runs from corner k to corner k + 1
+  std::array<double, 2> at{};     // the crossing (1 - at) x_k + at x_{k+1}
+};
+
+// The cut of cell c (its corners at cells.node) through its centroid with unit normal n; none if
+// the line misses two sides (a degenerate cell).
+inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t c, const vec2& n) {
+  const auto& corner = cells.cell[c];
+  vec2 centre = vec2::Zero();
+  for (const stored_index k : corner) centre += 0.25 * cells.node[k];
+  std::array<double, 4> distance{};
+  for (int k = 0; k < 4; ++k) distance[k] = (cells.node[corner[k]] - centre).dot(n);
+  cell_crack cut{c, {}, {}};
+  int found = 0;
+  for (int k = 0; k < 4 && found < 2; ++k) {
+    const double d0 = distance[k], d1 = distance[(k + 1) % 4];
+    if ((d0 >= 0.0) == (d1 >= 0.0)) continue;
+    cut.side[found] = k;
+    cut.at[found] = d0 / (d0 - d1);
+    ++found;
+  }
+  if (found < 2) return std::nullopt;
+  return cut;
+}
+
+// The segment of `cut` on the cells at their current corners, lengthened by `overlap` of its
+// length at each end (the cuts of a crack path then overlap, and no sight line slips through
+// where two of them meet on a cell side).
+inline crack_set::segment_type crack_chord(const background_mesh& cells, const cell_crack& cut, double overlap = 0.1) {
+  const auto& corner = cells.cell[cut.cell];
+  std::array<vec2, 2> end;
+  for (int e = 0; e < 2; ++e) {
+    const index_t k = cut.side[e];
+    end[e] = (1.0 - cut.at[e]) * cells.node[corner[k]] + cut.at[e] * cells.node[corner[(k + 1) % 4]];
+  }
+  const vec2 along = overlap * (end[1] - end[0]);
+  return {end[0] - along, end[1] + along};
+}
+
+inline crack_set cracks_on(const background_mesh& cells, const std::vector<cell_crack>& cuts) {
+  std::vector<crack_set::segment_type> segments;
+  segments.reserve(cuts.size());
+  for (const cell_crack& cut : cuts) segments.push_back(crack_chord(cells, cut));
+  return crack_set(std::move(segments));
+}
+
+// A material whose points break: its state says whether it has failed, and across which normal
+// (in the current configuration).
+template <class State>
+concept breaking_state = requires(const State& s) {
+  { s.failed() } -> std::convertible_to<bool>;
+  { s.crack_normal } -> std::convertible_to<vec2>;
+};
+
+// The pieces of a model: particles are joined when a quadrature point's row holds both (they
+// interact through the forces), so a piece is a connected set of particles; a particle that no
+// point's row holds is a piece by itself (a free particle).
+struct fragment_count {
+  index_t pieces = 0;
+  double largest_mass = 0.0;  // kg (per unit thickness in plane strain; per radian... as the masses)
+};
+
+inline fragment_count crack_fragments(const discrete_model& m, const std::vector<double>& mass) {
+  std::vector<index_t> parent(m.particle_count());
+  std::iota(parent.begin(), parent.end(), index_t{0});
+  const auto root = [&](index_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (index_t q = 0; q < m.point_count(); ++q)
+    for (index_t e = m.at_points.offset[q] + 1; e < m.at_points.offset[q + 1]; ++e) {
+      const index_t a = root(m.at_points.neighbor[m.at_points.offset[q]]), b = root(m.at_points.neighbor[e]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<double> piece(m.particle_count(), 0.0);
+  fragment_count out;
+  for (index_t I = 0; I < m.particle_count(); ++I) {
+    const index_t r = root(I);
+    if (r == I) ++out.pieces;
+    piece[r] += mass[I];
+  }
+  out.largest_mass = *std::max_element(piece.begin(), piece.end());
+  return out;
+}
+
+}  // namespace rkpm
