@@ -68,9 +68,12 @@ concept Contact = std::movable<C> && requires(C& c, const C& cc, const contact_b
   c.load(r);
 };
 
-// Whether a policy has anything to enforce: rigid tools or pairs of deformable bodies.
+// Whether a policy has anything to enforce: rigid tools or pairs of deformable bodies (declared,
+// or all of them: particle_to_segment's all_body_pairs(), whose pairs are made at set-up).
 template <Contact C>
 bool has_contact(const C& c) {
+  if constexpr (requires { { c.all_body_pairs() } -> std::convertible_to<bool>; })
+    if (c.all_body_pairs()) return true;
   return !std::ranges::empty(c.tools()) || !std::ranges::empty(c.body_pairs());
 }
 

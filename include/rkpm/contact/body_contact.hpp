@@ -1,7 +1,9 @@
 #pragma once
 // Contact between deformable bodies: the paper's slave and master bodies (docs/method.md section
-// 6.9). A body_pair names a slave body and a master body of the problem's mesh (the connected
-// parts of its cells, found by the model: discretization/model_bodies.hpp). The master surface is
+// 6.9), and a body against itself (self-contact, section 6.11). A body_pair names a slave body and
+// a master body of the problem's mesh (the connected parts of its cells, found by the model:
+// discretization/model_bodies.hpp), the same body for self-contact; all_body_pairs asks for every
+// pair (body_pair_surfaces.hpp). The master surface is
 // the master body's boundary chains (model_bodies::surface; not the axis of a section), its
 // vertices the master particles at their physical positions x = X + sum_I N_I(X) d_I on the
 // predicted configuration. Each step, for every slave particle J of the slave body:
@@ -22,7 +24,8 @@
 //         momentum is unchanged to round-off.
 // The effective-mass sweeps repeat (ii)-(iii) on the updated configuration (contact_sweeps.hpp,
 // the skeleton of every contact pass). The particles of master surfaces must be the mesh nodes
-// (grids and meshed bodies are).
+// (grids and meshed bodies are). A self pair is the same pass with both rows in one body: each
+// slave skips the segments within its kernel's reach (108), and the rows still sum to one.
 
 #include <algorithm>
 #include <array>
@@ -33,6 +36,7 @@
 
 #include <rkpm/concepts/contact.hpp>
 #include <rkpm/core/error.hpp>
+#include <rkpm/contact/body_pair_surfaces.hpp>
 #include <rkpm/contact/contact_pair.hpp>
 #include <rkpm/contact/contact_sweeps.hpp>
 #include <rkpm/contact/segment_grid.hpp>
@@ -59,67 +63,33 @@ class body_contact {
  public:
   body_contact() = default;
   explicit body_contact(std::vector<body_pair> pairs) : pairs_(std::move(pairs)) {}
+  explicit body_contact(all_body_pairs_t) : all_pairs_(true) {}
 
-  bool empty() const { return pairs_.empty(); }
+  bool empty() const { return pairs_.empty() && !all_pairs_; }
+  bool all_pairs() const { return all_pairs_; }
+  // The declared pairs; in all-pairs mode those setup() made (none before).
   const std::vector<body_pair>& pairs() const { return pairs_; }
   std::span<const body_contact_pair> active_pairs() const {
     return {active_.data(), static_cast<std::size_t>(active_count_)};
   }
 
-  // `slaves`: the problem's slave particles; each pair's slaves are those of its slave body.
+  // `slaves`: the problem's slave particles; each declared pair's slaves are those of its slave
+  // body. In all-pairs mode the pairs are made here, on the model's bodies (body_pair_surfaces.hpp).
   void setup(const contact_body& body, std::span<const index_t> slaves) {
-    if (pairs_.empty()) return;
+    if (empty()) return;
     if (!body.bodies || !body.at_particles)
-      fail("contact between bodies needs the model's bodies and the shape functions at the particles; the "
-           "solver passes them in contact_body");
-    const model_bodies& bodies = *body.bodies;
-    const std::span<const vec2> X = body.reference_position;
-    const auto n = static_cast<index_t>(X.size());
-    for (std::size_t k = 0; k < pairs_.size(); ++k)
-      for (index_t b : {pairs_[k].slave, pairs_[k].master})
-        if (b < 0 || b >= bodies.count())
-          fail("contact pair {}: body {} does not exist; the cells form {} bodies, numbered 0 to {} in the order "
-               "of their first cells",
-               k, b, bodies.count(), bodies.count() - 1);
-    for (std::size_t k = 0; k < pairs_.size(); ++k)
-      if (pairs_[k].slave == pairs_[k].master)
-        fail("contact pair {}: body {} against itself; self-contact is not supported, name two bodies", k,
-             pairs_[k].slave);
-    const auto& chains = bodies.surface("contact between bodies");
-
-    segment_.assign(pairs_.size(), {});
-    slave_.assign(pairs_.size(), {});
-    depth_.assign(pairs_.size(), 0.0);
-    std::vector<char> surface(n, 0);
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-      double shortest = INFINITY;
-      for (const auto& c : chains)
-        if (c.body == pairs_[k].master)
-          for (index_t s = 0; s < c.segments(); ++s) {
-            const auto seg = c.segment(s);
-            segment_[k].push_back(seg);
-            shortest = std::min(shortest, (X[seg[1]] - X[seg[0]]).norm());
-            surface[seg[0]] = surface[seg[1]] = 1;
-          }
-      depth_[k] = 0.5 * shortest;
-      for (index_t J : slaves)
-        if (bodies.of_particle(J) == pairs_[k].slave) {
-          slave_[k].push_back(J);
-          surface[J] = 1;
-        }
-      if (slave_[k].empty())
-        fail("contact pair {}: slave body {} has no slave particles; give slaves on its boundary", k, pairs_[k].slave);
-    }
-    surface_.clear();
-    for (index_t I = 0; I < n; ++I)
-      if (surface[I]) surface_.push_back(I);
+      fail("contact between bodies and self-contact need the model's bodies and the shape functions at the "
+           "particles; the solver passes them in contact_body");
+    if (all_pairs_) pairs_ = every_body_pair(body.bodies->count());
+    surfaces_ = pair_surfaces(pairs_, *body.bodies, body.reference_position, slaves, all_pairs_);
     std::size_t capacity = 0;
-    for (const auto& s : slave_) capacity += s.size();
+    for (const auto& s : surfaces_.slave) capacity += s.size();
     active_.assign(capacity, body_contact_pair{});
-    scratch_.resize(n);
+    scratch_.resize(static_cast<index_t>(body.reference_position.size()));
     shared_mass_.assign(capacity, 0.0);
     grid_.assign(pairs_.size(), segment_grid{});
-    for (std::size_t k = 0; k < pairs_.size(); ++k) grid_[k].reserve(static_cast<index_t>(segment_[k].size()));
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      grid_[k].reserve(static_cast<index_t>(surfaces_.segment[k].size()));
   }
 
   template <class Enforcement, class Friction>
@@ -129,13 +99,15 @@ class body_contact {
     pass p{*this, *body.at_particles, body.reference_position, body.mass, dt, d, v};
     p.refresh();
     // The pairs one after the other (Gauss-Seidel): a second pass, the same two bodies with
-    // the roles swapped, sees the gaps the first one closed instead of closing them again.
+    // the roles swapped, sees the gaps the first one closed instead of closing them again. A
+    // pair without contacts moved nothing, so the next one reads the same state (the many
+    // pairs of all-pairs mode cost one refresh each only where something touches).
     active_count_ = 0;
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
-      if (k > 0) p.refresh();
       const index_t first = active_count_;
-      detect(k, result);
+      detect(k, p.rows, result);
       contact_sweeps(p, first, active_count_, dt, enforcement, friction);  // (ii)-(iii)
+      if (active_count_ > first && k + 1 < pairs_.size()) p.refresh();
     }
   }
 
@@ -143,15 +115,22 @@ class body_contact {
   // (i) for pair k on the current configuration: the segment each slave penetrates, among the
   // candidates of a grid over the master's segments. Its reach, twice the depth, holds every
   // point a segment catches with room for round-off, so the contacts are those of a search over
-  // all the segments, in the same order.
-  void detect(std::size_t k, contact_result& result) {
-    const std::span<const std::array<index_t, 2>> segments = segment_[k];
+  // all the segments, in the same order. A self pair leaves out the segments within each
+  // slave's kernel reach (108).
+  void detect(std::size_t k, const shape_table<2>& rows, contact_result& result) {
+    const std::span<const std::array<index_t, 2>> segments = surfaces_.segment[k];
     const std::span<const vec2> x = scratch_.x;
+    const double depth = surfaces_.depth[k];
+    const bool self = pairs_[k].slave == pairs_[k].master;
     grid_[k].rebuild(
         static_cast<index_t>(segments.size()),
-        [&](index_t s) { return std::pair<vec2, vec2>(x[segments[s][0]], x[segments[s][1]]); }, 2.0 * depth_[k]);
-    for (index_t J : slave_[k]) {
-      const surface_hit hit = penetrated_segment(segments, grid_[k].candidates(x[J]), x, x[J], depth_[k]);
+        [&](index_t s) { return std::pair<vec2, vec2>(x[segments[s][0]], x[segments[s][1]]); }, 2.0 * depth);
+    for (index_t J : surfaces_.slave[k]) {
+      const auto candidates = grid_[k].candidates(x[J]);
+      const surface_hit hit =
+          self ? penetrated_segment(segments, candidates, x, x[J], depth,
+                                    [&](index_t a, index_t b) { return within_kernel_reach(rows, J, a, b); })
+               : penetrated_segment(segments, candidates, x, x[J], depth);
       if (hit.segment < 0) continue;
       const auto [a, b] = segments[hit.segment];
       active_[active_count_++] =
@@ -172,7 +151,7 @@ class body_contact {
     std::vector<vec2>& v;
 
     void refresh() {
-      for (index_t I : self.surface_) self.scratch_.physical_state(rows, X, I, d, v);
+      for (index_t I : self.surfaces_.surface) self.scratch_.physical_state(rows, X, I, d, v);
     }
     // The shared effective mass of each contact of the pass (docs/method.md (61a) with the
     // master's row): a unit force on contact p closes the gap of contact q by
@@ -215,12 +194,10 @@ class body_contact {
     void apply() { self.scratch_.apply(m, dt, d, v); }
   };
 
-  std::vector<body_pair> pairs_;
-  std::vector<std::vector<std::array<index_t, 2>>> segment_;  // per pair: master segments (particles)
-  std::vector<std::vector<index_t>> slave_;                   // per pair: slave particles
-  std::vector<double> depth_;                                 // per pair
-  std::vector<segment_grid> grid_;                            // per pair: over its master segments
-  std::vector<index_t> surface_;  // particles whose physical state the detection reads
+  std::vector<body_pair> pairs_;  // declared, or made by setup() in all-pairs mode
+  bool all_pairs_ = false;
+  body_pair_surfaces surfaces_;
+  std::vector<segment_grid> grid_;  // per pair: over its master segments
 
   // Scratch, sized in setup().
   std::vector<body_contact_pair> active_;

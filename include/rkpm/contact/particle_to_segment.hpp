@@ -3,8 +3,8 @@
 // the solver's Contact policy, in up to three passes per step, each on the configuration the
 // previous one left:
 //   1. the body's slave particles against the moving rigid tools (tool_slave_contact.hpp);
-//   2. the pairs of deformable bodies, a body's slaves against another's surface
-//      (body_contact.hpp), when the problem names body pairs;
+//   2. the pairs of deformable bodies, a body's slaves against another's surface or its own
+//      (body_contact.hpp), when the problem names body pairs or asks for all of them;
 //   3. the tools' vertices against the bodies' surfaces (tool_vertex_contact.hpp), when asked for.
 // Every pass has the same skeleton (detect, shared effective masses, sweeps, apply:
 // contact_sweeps.hpp) and the same force kernel (contact_kernel.hpp), with the enforcement
@@ -54,10 +54,19 @@ class particle_to_segment {
       : particle_to_segment(std::move(tools), friction, enforcement) {
     bodies_ = body_contact(std::move(body_pairs));
   }
+  // Rigid tools and every body against every body, itself included (all_body_pairs; docs/method.md
+  // section 6.11).
+  particle_to_segment(std::vector<rigid_tool> tools, all_body_pairs_t all, Friction friction = {},
+                      Enforcement enforcement = {})
+      : particle_to_segment(std::move(tools), friction, enforcement) {
+    bodies_ = body_contact(all);
+  }
 
   const std::vector<rigid_tool>& tools() const { return tool_slaves_.tools(); }
   const std::vector<segment_grid>& grids() const { return tool_slaves_.grids(); }
+  // The declared pairs, or in all-pairs mode those made at set-up.
   const std::vector<body_pair>& body_pairs() const { return bodies_.pairs(); }
+  bool all_body_pairs() const { return bodies_.all_pairs(); }
   // Two-pass tool contact: the tools' vertices also checked as slaves against the bodies'
   // surfaces (tool_vertex_contact.hpp), so that a sharp corner cannot slip between two surface
   // particles. Set before the solver is built.

@@ -12,6 +12,7 @@
 #include <span>
 
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm::contact {
 
@@ -22,10 +23,21 @@ struct surface_hit {
   vec2 normal = vec2::Zero();
 };
 
-// candidates: indices into segments (e.g. segment_grid::candidates, or all of them).
-template <class Candidates>
+// (108): whether slave J is a or b or its row of the shape functions at the particles holds a
+// or b (N_a(X_J) or N_b(X_J) nonzero: the rows leave out only zeros).
+inline bool within_kernel_reach(const shape_table<2>& rows, index_t J, index_t a, index_t b) {
+  if (J == a || J == b) return true;
+  for (index_t e = rows.offset[J]; e < rows.offset[J + 1]; ++e)
+    if (rows.neighbor[e] == a || rows.neighbor[e] == b) return true;
+  return false;
+}
+
+// candidates: indices into segments (e.g. segment_grid::candidates, or all of them). excluded(a, b):
+// segments never to take (asked only of those that catch P, so a search that excludes nothing
+// costs nothing more).
+template <class Candidates, class Excluded>
 surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments, const Candidates& candidates,
-                               std::span<const vec2> x, const vec2& P, double depth) {
+                               std::span<const vec2> x, const vec2& P, double depth, Excluded&& excluded) {
   surface_hit best;
   for (const index_t s : candidates) {
     const auto [a, b] = segments[s];
@@ -38,9 +50,16 @@ surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments,
     const vec2 normal(t[1] / L, -t[0] / L);
     const double g = -r.dot(normal);
     if (g <= 0.0 || g > depth) continue;
+    if (excluded(a, b)) continue;
     if (best.segment < 0 || g < best.gap) best = surface_hit{s, lambda, g, normal};
   }
   return best;
+}
+
+template <class Candidates>
+surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments, const Candidates& candidates,
+                               std::span<const vec2> x, const vec2& P, double depth) {
+  return penetrated_segment(segments, candidates, x, P, depth, [](index_t, index_t) { return false; });
 }
 
 }  // namespace rkpm::contact

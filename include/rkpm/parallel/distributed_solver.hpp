@@ -61,8 +61,8 @@ inline std::vector<stored_index> shared_particles(const shape_table<2>& at_parti
 // of bodies and tool vertices).
 template <class Contact>
 bool reads_surfaces(const Contact& c) {
-  if constexpr (requires { c.body_pairs(); c.tool_vertex_slaves(); })
-    return !c.body_pairs().empty() || c.tool_vertex_slaves();
+  if constexpr (requires { c.body_pairs(); c.all_body_pairs(); c.tool_vertex_slaves(); })
+    return !c.body_pairs().empty() || c.all_body_pairs() || c.tool_vertex_slaves();
   else
     return false;
 }

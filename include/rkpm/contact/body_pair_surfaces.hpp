@@ -1,0 +1,91 @@
+#pragma once
+// body_pair_surfaces: what the contact between bodies (body_contact.hpp; docs/method.md sections
+// 6.9 and 6.11) reads of each pair, set up once on the model: the master's segments, the slave
+// particles, the depth of (75) and the particles whose physical state the detection reads.
+//   - Declared pairs (a list of body_pair): a pair's slaves are the problem's slave particles that
+//     belong to its slave body. A pair of a body with itself is self-contact.
+//   - All pairs (all_body_pairs, (109)): every (slave, master) of the model's bodies, the slave
+//     body first, itself included; the slaves every vertex of the slave body's surface chains,
+//     in increasing order, the order of the default slaves (the mesh's boundary nodes), so that
+//     two bodies give what the pairs (0, 1) and (1, 0) with the default slaves give, bit for bit.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/contact/contact_pair.hpp>
+#include <rkpm/discretization/model_bodies.hpp>
+
+namespace rkpm::contact {
+
+struct body_pair_surfaces {
+  std::vector<std::vector<std::array<index_t, 2>>> segment;  // per pair: master segments (particles)
+  std::vector<std::vector<index_t>> slave;                   // per pair: slave particles
+  std::vector<double> depth;                                 // per pair: half the shortest master segment
+  std::vector<index_t> surface;  // the particles of every segment and slave, in increasing order
+};
+
+// (109): every (slave, master) of `bodies` bodies, slave-major.
+inline std::vector<body_pair> every_body_pair(index_t bodies) {
+  std::vector<body_pair> pairs;
+  pairs.reserve(static_cast<std::size_t>(bodies * bodies));
+  for (index_t s = 0; s < bodies; ++s)
+    for (index_t m = 0; m < bodies; ++m) pairs.push_back({s, m});
+  return pairs;
+}
+
+// The pairs' surfaces on the model's bodies, reference positions X. `slaves`: the problem's slave
+// particles (declared pairs), or every surface vertex a slave when `surface_slaves`.
+inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const model_bodies& bodies,
+                                        std::span<const vec2> X, std::span<const index_t> slaves,
+                                        bool surface_slaves) {
+  const auto n = static_cast<index_t>(X.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    for (index_t b : {pairs[k].slave, pairs[k].master})
+      if (b < 0 || b >= bodies.count())
+        fail("contact pair {}: body {} does not exist; the cells form {} bodies, numbered 0 to {} in the order "
+             "of their first cells",
+             k, b, bodies.count(), bodies.count() - 1);
+  const auto& chains = bodies.surface("contact between bodies");
+  std::vector<char> vertex(n, 0);  // on a surface chain
+  if (surface_slaves)
+    for (const auto& c : chains)
+      for (index_t I : c.node) vertex[I] = 1;
+
+  body_pair_surfaces out;
+  out.segment.assign(pairs.size(), {});
+  out.slave.assign(pairs.size(), {});
+  out.depth.assign(pairs.size(), 0.0);
+  std::vector<char> read(n, 0);
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    double shortest = INFINITY;
+    for (const auto& c : chains)
+      if (c.body == pairs[k].master)
+        for (index_t s = 0; s < c.segments(); ++s) {
+          const auto seg = c.segment(s);
+          out.segment[k].push_back(seg);
+          shortest = std::min(shortest, (X[seg[1]] - X[seg[0]]).norm());
+          read[seg[0]] = read[seg[1]] = 1;
+        }
+    out.depth[k] = 0.5 * shortest;
+    auto& slave = out.slave[k];
+    if (surface_slaves) {
+      for (index_t I = 0; I < n; ++I)
+        if (vertex[I] && bodies.of_particle(I) == pairs[k].slave) slave.push_back(I);
+    } else {
+      for (index_t J : slaves)
+        if (bodies.of_particle(J) == pairs[k].slave) slave.push_back(J);
+    }
+    for (index_t J : slave) read[J] = 1;
+    if (slave.empty())
+      fail("contact pair {}: slave body {} has no slave particles; give slaves on its boundary", k, pairs[k].slave);
+  }
+  for (index_t I = 0; I < n; ++I)
+    if (read[I]) out.surface.push_back(I);
+  return out;
+}
+
+}  // namespace rkpm::contact
