@@ -1,6 +1,6 @@
 #pragma once
 // Builds the contact policy object of a configuration from the case's tools, the pairs of its
-// deformable bodies in contact (contact/body_contact.hpp) and numbers:
+// deformable bodies in contact (contact/body_contact.hpp; or all_body_pairs) and numbers:
 // the friction coefficient (Coulomb; frictionless ignores it and must be given 0) and the
 // penalty stiffness (used only by the penalty enforcement).
 
@@ -16,9 +16,10 @@ struct is_particle_to_segment : std::false_type {};
 template <class E, class F>
 struct is_particle_to_segment<contact::particle_to_segment<E, F>> : std::true_type {};
 
-template <class Contact>
+// Pairs: a std::vector<contact::body_pair>, or contact::all_body_pairs.
+template <class Contact, class Pairs = std::vector<contact::body_pair>>
 Contact make_contact(std::vector<contact::rigid_tool> tools, double friction, double penalty_stiffness,
-                     std::vector<contact::body_pair> body_pairs = {}) {
+                     Pairs body_pairs = {}) {
   static_assert(is_particle_to_segment<Contact>::value,
                 "this case has rigid tools: its configuration needs a contact policy "
                 "contact::particle_to_segment<Enforcement, Friction>, not contact::none");

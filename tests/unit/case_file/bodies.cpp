@@ -6,12 +6,16 @@
 //     (Z_Be + Z_st) (1D wave theory), each body's mass is its own density times its area, and
 //     the histories look at the body they name (at t = 0 the probe at the shared face point reads
 //     +V on one body and -V on the other; the extents are the bars' own);
-//   - bad input: a pair naming an unknown body or a body with itself, overlapping bodies, two
-//     bodies of one name, a wrong constant in the second body: one line each, with the pointer.
+//   - "contact": {"self": true} (every body against every body, itself included) runs as the
+//     declared pairs (beryllium, steel) and (steel, beryllium), bit for bit;
+//   - bad input: a pair naming an unknown body, "self" with pairs or two_pass or not a boolean,
+//     overlapping bodies, two bodies of one name, a wrong constant in the second body: one line
+//     each, with the pointer.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <rkpm/contact/particle_to_segment.hpp>
@@ -117,14 +121,50 @@ TEST_CASE("two bars in one case file: momentum, the speed after from wave theory
   CHECK(std::abs(measured(at_end, "be_min_x") + L - moved) < 0.05 * std::abs(moved));
 }
 
-TEST_CASE("bad input: unknown body in a pair, a body with itself, overlap, a name twice, a bad constant") {
+TEST_CASE("\"self\": true runs as the declared pairs (beryllium, steel) and (steel, beryllium)") {
+  auto run = [](case_json doc) {
+    const auto description = test::load_document(doc);
+    run_options o;
+    o.end_time = 0.5e-6;
+    auto s = make_solver<file_config>(runner::case_file::build_problem<contact_t>(description, 1), o);
+    while (s.time() < o.end_time * (1.0 - 1e-12)) s.step();
+    return std::tuple{s.coefficients(), s.coefficient_velocities(), s.contact().all_body_pairs(),
+                      s.contact().body_pairs().size()};
+  };
+  case_json all = two_bars(1e-6), declared = two_bars(1e-6);
+  all["contact"] = {{"self", true}};
+  declared["contact"] = {{"pairs", {{{"slave", "beryllium"}, {"master", "steel"}}, {{"slave", "steel"}, {"master", "beryllium"}}}}};
+  const auto [d_all, v_all, mode_all, pairs_all] = run(all);
+  const auto [d_declared, v_declared, mode_declared, pairs_declared] = run(declared);
+  CHECK(mode_all);
+  CHECK(!mode_declared);
+  CHECK(pairs_all == 4);  // (0, 0), (0, 1), (1, 0), (1, 1)
+  CHECK(pairs_declared == 2);
+  CHECK(d_all == d_declared);  // Eigen's == on each entry: bit for bit, but for -0 and +0
+  CHECK(v_all == v_declared);
+}
+
+TEST_CASE("bad input: unknown body in a pair, \"self\" with pairs, overlap, a name twice, a bad constant") {
   case_json doc = two_bars(1e-6);
   doc["contact"]["pairs"][0]["master"] = "berylium";
   CHECK(reports(test::load_error(doc), "/contact/pairs/0/master", "no body 'berylium'; did you mean 'beryllium'?"));
 
   doc = two_bars(1e-6);
+  doc["contact"]["self"] = true;
+  CHECK(reports(test::load_error(doc), "/contact/pairs", "\"self\": true already puts every body against every body"));
+
+  doc = two_bars(1e-6);
+  doc["contact"] = {{"self", true}, {"two_pass", true}};
+  CHECK(reports(test::load_error(doc), "/contact/two_pass", "already takes every pair both ways"));
+
+  doc = two_bars(1e-6);
+  doc["contact"] = {{"self", "yes"}};
+  CHECK(reports(test::load_error(doc), "/contact/self", "expected true or false"));
+
+  // A body with itself is self-contact now, not an error.
+  doc = two_bars(1e-6);
   doc["contact"]["pairs"][0]["master"] = "steel";
-  CHECK(reports(test::load_error(doc), "/contact/pairs/0", "body 'steel' is paired with itself"));
+  CHECK(test::load_error(doc).empty());
 
   doc = two_bars(1e-6);
   doc["bodies"][1]["name"] = "beryllium";

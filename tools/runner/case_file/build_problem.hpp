@@ -168,8 +168,10 @@ problem<Material, Contact> build_problem(const case_description& c, int resoluti
       .particles = {},
       .mesh = {},
       .material = make_material<Material>(first.material),
-      .contact = cases::make_contact<Contact>(make_tools(c), c.friction, c.penalty_stiffness.value_or(0.0),
-                                              detail::make_body_pairs(c)),
+      .contact = c.self_contact ? cases::make_contact<Contact>(make_tools(c), c.friction,
+                                                              c.penalty_stiffness.value_or(0.0), contact::all_body_pairs)
+                                : cases::make_contact<Contact>(make_tools(c), c.friction,
+                                                              c.penalty_stiffness.value_or(0.0), detail::make_body_pairs(c)),
       .initial_velocity = {},
       .constraints = {},
       .body_force = vec2::Zero(),  // set_body_force below

@@ -181,6 +181,7 @@ struct case_description {
   std::vector<tool_description> tools;
   std::vector<body_pair_description> body_pairs;  // "contact": {"pairs": [...]}
   bool two_pass = false;  // each pair also with the roles swapped
+  bool self_contact = false;  // "contact": {"self": true}: every body against every body, itself included
   double friction = 0.0;
   std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
   int snapshots = 20, history_rows = 400;

@@ -165,16 +165,19 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
   }
 }
 
-// The pairs of bodies in contact name two different bodies of the file.
+// The pairs of bodies in contact name bodies of the file (a body with itself is self-contact);
+// "self" takes every pair, so it comes without a list.
 inline void check_body_pairs(diagnostics& d, const case_description& c, const std::vector<std::string>& bodies) {
   for (const auto& p : c.body_pairs) {
     check_name(d, child_pointer(p.at, "slave"), p.slave, bodies, "body");
     check_name(d, child_pointer(p.at, "master"), p.master, bodies, "body");
-    if (p.slave == p.master)
-      d.error(p.at, fmt::format("body '{}' is paired with itself; self-contact is not supported: name two different "
-                                "bodies", p.slave));
   }
-  if (c.two_pass && c.body_pairs.empty())
+  if (c.self_contact && !c.body_pairs.empty())
+    d.error("/contact/pairs", "\"self\": true already puts every body against every body, itself included; remove "
+                              "\"pairs\" or \"self\"");
+  else if (c.self_contact && c.two_pass)
+    d.error("/contact/two_pass", "\"self\": true already takes every pair both ways; remove two_pass");
+  else if (c.two_pass && c.body_pairs.empty())
     d.error("/contact/two_pass", "two passes of what? no \"pairs\" of bodies in contact are given; add \"pairs\": "
                                  "[{\"slave\": \"plate\", \"master\": \"projectile\"}] or remove two_pass");
 }

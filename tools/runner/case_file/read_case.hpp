@@ -95,12 +95,13 @@ inline case_description read_case(diagnostics& d, const json& document, const st
                                   return read_tool(dd, v, at, c.constants);
                                 });
   if (const json* k = r.find("contact")) {
-    object_reader cr(d, *k, r.at("contact"), {"friction", "penalty_stiffness_N_m", "pairs", "two_pass"});
+    object_reader cr(d, *k, r.at("contact"), {"friction", "penalty_stiffness_N_m", "pairs", "two_pass", "self"});
     c.friction = cr.number_or("friction", 0.0);
     if (const json* pairs = cr.find("pairs"))
       c.body_pairs = detail::read_list(d, *pairs, cr.at("pairs"), "[{\"slave\": \"plate\", \"master\": \"projectile\"}]",
                                        detail::read_body_pair);
     c.two_pass = cr.boolean_or("two_pass", false);
+    c.self_contact = cr.boolean_or("self", false);
     check_non_negative(d, cr.at("friction"), c.friction, "0.2 (Coulomb coefficient; 0 is frictionless)");
     if (cr.find("penalty_stiffness_N_m")) {
       c.penalty_stiffness = cr.number_or("penalty_stiffness_N_m", 1e11);
