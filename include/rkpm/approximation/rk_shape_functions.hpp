@@ -39,12 +39,22 @@ class rk_shape_functions {
   // (Defined below the class, not inline, so that a program can compile it once: see
   // discretization/shape_table_instances.hpp.)
   void evaluate(const vec<Dim>& x, const particle_set<Dim>& particles, const std::vector<index_t>& neighbors,
-                std::vector<double>& N, std::vector<vec<Dim>>& grad) const;
+                std::vector<double>& N, std::vector<vec<Dim>>& grad) const {
+    evaluate_or_refuse(x, particles, neighbors, N, grad, true);
+  }
+  // The same, but false (N and grad empty) where evaluate() throws: a point cut off by cracks
+  // from the particles it would need (discretization/crack_set.hpp).
+  bool try_evaluate(const vec<Dim>& x, const particle_set<Dim>& particles, const std::vector<index_t>& neighbors,
+                    std::vector<double>& N, std::vector<vec<Dim>>& grad) const {
+    return evaluate_or_refuse(x, particles, neighbors, N, grad, false);
+  }
 
   double max_condition() const { return max_condition_; }
 
  private:
-  void check_conditioning(const vec<Dim>& x, const moment_matrix& M, std::size_t n) const;
+  bool evaluate_or_refuse(const vec<Dim>& x, const particle_set<Dim>& particles, const std::vector<index_t>& neighbors,
+                          std::vector<double>& N, std::vector<vec<Dim>>& grad, bool throwing) const;
+  bool check_conditioning(const vec<Dim>& x, const moment_matrix& M, std::size_t n, bool throwing) const;
   static std::string format_point(const vec<Dim>& x) {
     std::string s;
     for (int k = 0; k < Dim; ++k) s += fmt::format("{}{:.6g}", k ? ", " : "", x[k]);
@@ -55,12 +65,13 @@ class rk_shape_functions {
 };
 
 template <Kernel K, Correction C, int Dim>
-void rk_shape_functions<K, C, Dim>::evaluate(const vec<Dim>& x, const particle_set<Dim>& particles,
-                                             const std::vector<index_t>& neighbors, std::vector<double>& N,
-                                             std::vector<vec<Dim>>& grad) const {
+bool rk_shape_functions<K, C, Dim>::evaluate_or_refuse(const vec<Dim>& x, const particle_set<Dim>& particles,
+                                                       const std::vector<index_t>& neighbors, std::vector<double>& N,
+                                                       std::vector<vec<Dim>>& grad, bool throwing) const {
   const std::size_t n = neighbors.size();
   N.resize(n);
   grad.resize(n);
+  if (n == 0 && !throwing) return false;
   if (n == 0)
     fail("RK shape functions at point ({}): no particle support covers it; "
          "the point lies outside the particle cloud or the supports are too small",
@@ -89,7 +100,11 @@ void rk_shape_functions<K, C, Dim>::evaluate(const vec<Dim>& x, const particle_s
     }
   }
 
-  check_conditioning(x, M, n);
+  if (!check_conditioning(x, M, n, throwing)) {
+    N.clear();
+    grad.clear();
+    return false;
+  }
   const Eigen::LDLT<moment_matrix> solver(M);
   basis_vector h0 = basis_vector::Zero();
   h0[0] = 1.0;
@@ -109,20 +124,23 @@ void rk_shape_functions<K, C, Dim>::evaluate(const vec<Dim>& x, const particle_s
       grad[j][k] = (dbh * w.value + bh * w.gradient[k]) * particles.volume[I];
     }
   }
+  return true;
 }
 
 template <Kernel K, Correction C, int Dim>
-void rk_shape_functions<K, C, Dim>::check_conditioning(const vec<Dim>& x, const moment_matrix& M,
-                                                       std::size_t n) const {
+bool rk_shape_functions<K, C, Dim>::check_conditioning(const vec<Dim>& x, const moment_matrix& M, std::size_t n,
+                                                       bool throwing) const {
   const Eigen::SelfAdjointEigenSolver<moment_matrix> eig(M, Eigen::EigenvaluesOnly);
   const double lo = eig.eigenvalues().minCoeff();
   const double hi = eig.eigenvalues().maxCoeff();
   const double cond = lo > 0.0 ? hi / lo : std::numeric_limits<double>::infinity();
-  if (!(cond <= max_condition_))
+  if (cond <= max_condition_) return true;
+  if (throwing)
     fail("RK moment matrix at point ({}) is singular or badly conditioned: {} neighbors, "
          "condition estimate {:.3g} (limit {:.1g}); the {} basis needs at least {} neighbors "
          "spread in every direction: enlarge the support factor or refine the particles",
          format_point(x), n, cond, max_condition_, C::name, basis_size);
+  return false;
 }
 
 }  // namespace rkpm

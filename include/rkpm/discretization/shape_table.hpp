@@ -35,8 +35,9 @@ struct shape_table {
 
   // Physical value u(x_p) = sum_I N_I(x_p) d_I of a field given by its coefficients d.
   template <class Value>
+  // (Zero for a row that cracks left empty, discretization/crack_set.hpp.)
   Value interpolate(index_t p, const std::vector<Value>& d) const {
-    Value u = d[neighbor[offset[p]]] * 0.0;
+    Value u = d.front() * 0.0;
     for (index_t e = offset[p]; e < offset[p + 1]; ++e) u += N[e] * d[neighbor[e]];
     return u;
   }
@@ -90,7 +91,9 @@ void for_each_point_row(index_t points, Row&& row) {
 // first (the cell-list query alone) so that the rows are laid out once at their final size,
 // then the RK functions of each row written in place: no per-point vectors, no regrowth, so the
 // set-up's peak memory is the table itself. A table that drops small entries evaluates the RK
-// functions in both passes (the count needs the values).
+// functions in both passes (the count needs the values). With cracks (the search's), a point
+// that sees too few particles for the correction gets an empty row instead of an error: cut
+// off from the body by cracks, it has no field (a free particle, docs/method.md section 3.7).
 template <Kernel K, Correction C, int Dim>
 shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
                                    const std::vector<vec<Dim>>& points,
@@ -103,15 +106,20 @@ shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
   shape_table<Dim> t;
   t.offset.assign(np + 1, 0);
   const bool dropping = contents.drop_below > 0.0;
+  const bool cracked = search.cracks() != nullptr;
   const auto kept = [&](double value) { return !dropping || std::abs(value) >= contents.drop_below; };
+  const auto evaluate = [&](index_t p, row_scratch<Dim>& r) {
+    if (!cracked) rk.evaluate(points[p], search.particles(), r.nbr, r.val, r.grd);
+    else if (!rk.try_evaluate(points[p], search.particles(), r.nbr, r.val, r.grd)) r.nbr.clear();
+  };
   // Pass 1: the row lengths.
   detail::for_each_point_row<Dim>(np, [&](index_t p, row_scratch<Dim>& r) {
     search.query(points[p], r.nbr);
-    if (!dropping) {
+    if (!dropping && !cracked) {
       t.offset[p + 1] = static_cast<stored_index>(r.nbr.size());
       return;
     }
-    rk.evaluate(points[p], search.particles(), r.nbr, r.val, r.grd);
+    evaluate(p, r);
     t.offset[p + 1] = static_cast<stored_index>(std::ranges::count_if(r.val, kept));
   });
   index_t entries = 0;
@@ -127,7 +135,7 @@ shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
   // Pass 2: the rows, in place.
   detail::for_each_point_row<Dim>(np, [&](index_t p, row_scratch<Dim>& r) {
     search.query(points[p], r.nbr);
-    rk.evaluate(points[p], search.particles(), r.nbr, r.val, r.grd);
+    evaluate(p, r);
     index_t e = t.offset[p];
     for (std::size_t j = 0; j < r.nbr.size(); ++j) {
       if (!kept(r.val[j])) continue;

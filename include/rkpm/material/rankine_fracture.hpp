@@ -12,7 +12,8 @@
 // (106) is int Y dD with Y = E kappa^2 / 2, the Rankine energy at the damage surface, integrated
 // exactly: a function of kappa alone, so the dissipation does not depend on the step, and in
 // uniaxial stress it is the work of the stress minus the stored energy. h follows the kernel's
-// support, h = a (107), so that W_d h = G_c per unit crack area at every resolution.
+// support, h = 3a/4 for the cubic spline (107), so that W_d h = G_c per unit crack area at every
+// resolution.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <string_view>
 #include <utility>
 
+#include <rkpm/concepts/kernel.hpp>
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/bitwise.hpp>
 #include <rkpm/core/error.hpp>
@@ -56,11 +58,21 @@ class rankine_fracture {
   static constexpr std::string_view name = "rankine";
   using state_type = rankine_fracture_state;
 
-  // The band width for a kernel of support radius a (m): h = a (107). The RK approximation
-  // spreads a displacement jump over the window, so the softening strain localizes in a band of
-  // the support's size; the window's width at equal area is 3a/4 (cubic) or 4a/5 (quartic) in
-  // 1D, and h = a is the round number of that order (docs/method.md section 4.7).
-  static constexpr double band_width_of_support(double support) { return support; }
+  // The band width for kernel K of support radius a (m): the window's width at equal area,
+  // h = a int K / K(0) (107), 3a/4 for the cubic spline and 4a/5 for the quartic. The RK
+  // approximation spreads a displacement jump over the window, so the softening strain localizes
+  // over that width (docs/method.md section 4.7).
+  template <Kernel K>
+  static double band_width_of_support(double support) {
+    constexpr int intervals = 2000;  // Simpson's rule on z in [-1, 1]: exact to round-off for the splines' pieces
+    double area = 0.0;
+    for (int i = 0; i <= intervals; ++i) {
+      const double z = -1.0 + 2.0 * i / intervals;
+      area += (i == 0 || i == intervals ? 1.0 : i % 2 ? 4.0 : 2.0) * K::value(z);
+    }
+    area *= 2.0 / (3.0 * intervals);
+    return support * area / K::value(0.0);
+  }
 
   // tensile_strength sigma_t in Pa, fracture_energy G_c in J/m^2, band_width h in m.
   rankine_fracture(elastic_constants constants, double tensile_strength, double fracture_energy, double band_width)
@@ -76,7 +88,7 @@ class rankine_fracture {
            G_c_);
     if (!(std::isfinite(h_) && h_ > 0.0))
       fail("material::rankine_fracture: band_width = {} m is invalid: give a finite value > 0 (the kernel's support "
-           "radius, rankine_fracture::band_width_of_support(a))",
+           "radius, rankine_fracture::band_width_of_support<Kernel>(a))",
            h_);
     E_ = constants_.youngs_modulus;
     mu_ = constants_.shear_modulus();

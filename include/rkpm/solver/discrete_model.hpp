@@ -104,13 +104,18 @@ inline void check_body(const particle_set<2>& particles, const background_mesh& 
          particle_volume, cell_area);
 }
 
-// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive.
+// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive. `cracked`: a particle that
+// no point's row holds (a free particle, section 3.7), or that only the negative lobes of the
+// functions next to a crack's tip reach, takes its own volume (its mass, set on the intact body,
+// is kept through the rebuilds: only the projections to the particles read this).
 inline std::vector<double> lumped_volumes(const particle_set<2>& particles, const quadrature_points& points,
-                                          const shape_table<2>& at_points) {
+                                          const shape_table<2>& at_points, bool cracked = false) {
   std::vector<double> volume(particles.size(), 0.0);
   for (index_t q = 0; q < points.size(); ++q)
     for (index_t e = at_points.offset[q]; e < at_points.offset[q + 1]; ++e)
       volume[at_points.neighbor[e]] += at_points.N[e] * points.weight[q];
+  for (index_t I = 0; I < particles.size(); ++I)
+    if (cracked && !(volume[I] > 0.0)) volume[I] = particles.volume[I];
   for (index_t I = 0; I < particles.size(); ++I)
     if (!(volume[I] > 0.0))
       fail("particle {} at ({:.6g}, {:.6g}) gets a lumped mass of {:.3g} x density: it is covered by "
@@ -118,6 +123,26 @@ inline std::vector<double> lumped_volumes(const particle_set<2>& particles, cons
            "enlarge the support or use the linear correction",
            I, particles.position[I][0], particles.position[I][1], volume[I]);
   return volume;
+}
+
+// The rows at the particles with each empty row (a particle that cracks leave with too few
+// neighbours for the correction, section 3.7) holding the particle itself, N_I(X_I) = 1: its
+// coefficient is its displacement, and it moves freely.
+inline shape_table<2> with_free_particles(shape_table<2> rows) {
+  shape_table<2> out;
+  out.offset.reserve(rows.offset.size());
+  for (index_t I = 0; I < rows.points(); ++I) {
+    if (rows.offset[I] == rows.offset[I + 1]) {
+      out.neighbor.push_back(static_cast<particle_index>(I));
+      out.N.push_back(1.0);
+    }
+    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
+      out.neighbor.push_back(rows.neighbor[e]);
+      out.N.push_back(rows.N[e]);
+    }
+    out.offset.push_back(static_cast<stored_index>(out.neighbor.size()));
+  }
+  return out;
 }
 
 // The model on given quadrature points: only this depends on the kernel and the correction,
@@ -131,8 +156,9 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
   const rk_shape_functions<K, C, 2> rk(max_condition);
   m.at_points = build_shape_table<K, C, 2>(search, m.points.position, rk);
   m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk, values_only);
+  if (!mesh.cracks.empty()) m.at_particles = with_free_particles(std::move(m.at_particles));
   m.traversal = make_point_traversal(m.at_points, particles.size());
-  m.lumped_volume = lumped_volumes(particles, m.points, m.at_points);
+  m.lumped_volume = lumped_volumes(particles, m.points, m.at_points, !mesh.cracks.empty());
   m.own = ownership::single_process(particles.size(), m.point_count());
   m.particles = std::move(particles);
   m.mesh = std::move(mesh);

@@ -103,6 +103,8 @@ class explicit_solver {
   void rereference();
   index_t rereferences() const { return static_cast<index_t>(rereference_times_.size()); }
   const std::vector<double>& rereference_times() const { return rereference_times_; }  // s
+  // Cuts cells (a notch) as a crack cuts them (113), each normal to its n, and rebuilds the model.
+  void cut_cells(const std::vector<std::pair<index_t, vec2>>& cells_and_normals);
   // The cells cut by cracks (solver/crack_growth.hpp), and the pieces (a body each until it breaks).
   const std::vector<cell_crack>& cracks() const { return cracks_; }
   fragment_count fragments() const { return crack_fragments(model_, physical_mass()); }
@@ -111,7 +113,6 @@ class explicit_solver {
     return initial_position_.empty() ? model_.particles.position : initial_position_;
   }
 
-  // ---- results -----------------------------------------------------------------------
   double time() const { return timeline_.time; }
   index_t steps() const { return timeline_.steps; }
   double time_step() const { return timeline_.dt; }
@@ -123,7 +124,7 @@ class explicit_solver {
   const energy_balance& energy() const { return energy_; }
   const run_options& options() const { return options_; }
   const discrete_model& model() const { return model_; }
-  // The builder of model() with its method (empty if none was given): the tables on new particles.
+  // The builder of model() with its method (empty if none was given).
   const model_factory& model_builder() const { return factory_; }
   // Body b's material (problem::body_materials[b], or problem::material), the bodies, I's body.
   const M& material(index_t b = 0) const { return materials_.of_body(b); }
@@ -132,7 +133,7 @@ class explicit_solver {
   const Ct& contact() const { return contact_.policy; }
   Ct& contact() { return contact_.policy; }
   const contact_result& last_contact() const { return contact_.last; }
-  // Each tool's impulse since t = 0 (N s): the mean force over [t1, t2] is (I(t2) - I(t1)) / (t2 - t1).
+  // Each tool's impulse since t = 0 (N s): the mean force over [t1, t2] is the impulse's change / (t2 - t1).
   const std::vector<vec2>& tool_impulses() const { return contact_.impulse; }
   double max_penetration() const { return contact_.max_penetration; }
   // The lumped masses the step moves (scaled, with mass scaling: options().mass_scaling), and
@@ -159,12 +160,7 @@ class explicit_solver {
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
   // Physical displacements since the start (across re-references: x_I - X_I^0), velocities and
   // current positions x_I = X_I + u(X_I).
-  std::vector<vec2> particle_displacements() const {
-    std::vector<vec2> u = values_at_particles(model_, d_);
-    if (!initial_position_.empty())
-      for (index_t I = 0; I < model_.particle_count(); ++I) u[I] += model_.particles.position[I] - initial_position_[I];
-    return u;
-  }
+  std::vector<vec2> particle_displacements() const;
   std::vector<vec2> particle_velocities() const { return values_at_particles(model_, v_); }
   std::vector<vec2> particle_positions() const { return positions_at_particles(model_, d_); }
   template <class Value, class PointValue>
@@ -201,6 +197,7 @@ class explicit_solver {
                          std::optional<std::vector<index_t>> slaves = std::nullopt);
   bool rereference_due() const;
   bool grow_cracks();  // cuts the cells of newly failed points; whether it cut any
+  bool insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals);
   void scale_masses();
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).

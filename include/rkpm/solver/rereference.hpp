@@ -61,8 +61,11 @@ inline std::pair<particle_set<2>, background_mesh> deformed_particles(const part
   particle_set<2> next;
   next.position = x;
   next.support.resize(particles.size());
+  // (A particle that no point reaches, a free one cut off by cracks, has no F: its support stays.)
   for (index_t I = 0; I < particles.size(); ++I)
-    next.support[I] = left_stretch(F[I]).cwiseAbs() * particles.support[I];
+    next.support[I] = F[I].allFinite() && F[I].determinant() > 0.0
+                          ? vec2(left_stretch(F[I]).cwiseAbs() * particles.support[I])
+                          : particles.support[I];
   background_mesh cells{x, mesh.cell, tangled};
   next.volume.assign(particles.size(), 0.0);
   for (index_t c = 0; c < cells.cells(); ++c) {

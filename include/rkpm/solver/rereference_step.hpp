@@ -45,39 +45,67 @@ bool explicit_solver<G, M, Ct>::rereference_due() const {
          points_.max_distortion(model_) > when.max_stretch;
 }
 
+template <Geometry G, Material M, Contact Ct>
+std::vector<vec2> explicit_solver<G, M, Ct>::particle_displacements() const {
+  std::vector<vec2> u = values_at_particles(model_, d_);
+  if (!initial_position_.empty())
+    for (index_t I = 0; I < model_.particle_count(); ++I) u[I] += model_.particles.position[I] - initial_position_[I];
+  return u;
+}
+
 // The cells of the points that have failed since the last call are cut (section 5.12), each once,
-// through its centroid normal to the first failed point's crack normal, on the current
-// configuration; cracks_ stays in cell order.
+// through its centroid normal to the first failed point's crack normal.
 template <Geometry G, Material M, Contact Ct>
 bool explicit_solver<G, M, Ct>::grow_cracks() {
   if constexpr (!breaking_state<state_type>) {
     return false;
   } else {
-    const auto cut_already = [&](index_t c) {
-      const auto at = std::lower_bound(cracks_.begin(), cracks_.end(), c,
-                                       [](const cell_crack& k, index_t cell) { return k.cell < cell; });
-      return at != cracks_.end() && at->cell == c;
-    };
-    std::optional<background_mesh> current;  // the cells at the current positions, when needed
-    bool cut = false;
+    std::vector<std::pair<index_t, vec2>> failed;  // allocates only when a cell is to be cut
     for (index_t q = 0; q < model_.point_count(); ++q) {
       const state_type& s = points_.states()[q];
+      if (!s.failed() || !(vec2(s.crack_normal).squaredNorm() > 0.0)) continue;  // a hoop crack cuts no cell
       const index_t c = model_.points.cell[q];
-      if (!s.failed() || cut_already(c)) continue;
-      if (!current) current.emplace(background_mesh{positions_at_particles(model_, d_), model_.mesh.cell});
-      const std::optional<cell_crack> k = cut_cell(*current, c, vec2(s.crack_normal).normalized());
-      if (!k) continue;
-      cracks_.insert(std::lower_bound(cracks_.begin(), cracks_.end(), c,
-                                      [](const cell_crack& x, index_t cell) { return x.cell < cell; }),
-                     *k);
+      const auto at = std::lower_bound(cracks_.begin(), cracks_.end(), c,
+                                       [](const cell_crack& k, index_t cell) { return k.cell < cell; });
+      if (at == cracks_.end() || at->cell != c) failed.emplace_back(c, vec2(s.crack_normal));
+    }
+    return !failed.empty() && insert_cuts(failed);
+  }
+}
+
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::cut_cells(const std::vector<std::pair<index_t, vec2>>& cells_and_normals) {
+  if (!timeline_.between_steps()) fail("cut_cells() between steps only");
+  for (const auto& [c, n] : cells_and_normals)
+    if (c < 0 || c >= model_.mesh.cells() || !(n.norm() > 0.0))
+      fail("cut_cells: cell {} with normal ({}, {}): give a cell of the mesh (0 to {}) and a nonzero normal", c, n[0],
+           n[1], model_.mesh.cells() - 1);
+  if (insert_cuts(cells_and_normals)) rereference();
+}
+
+// Adds the cut of each cell not cut yet, on the current configuration (cracks_ stays in cell
+// order); whether it added any. The model is rebuilt by the caller.
+template <Geometry G, Material M, Contact Ct>
+bool explicit_solver<G, M, Ct>::insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals) {
+  const auto first_at_or_after = [&](index_t c) {
+    return std::lower_bound(cracks_.begin(), cracks_.end(), c, [](const cell_crack& k, index_t cell) { return k.cell < cell; });
+  };
+  std::optional<background_mesh> current;  // the cells at the current positions, when needed
+  bool cut = false;
+  for (const auto& [c, n] : cells_and_normals) {
+    const auto at = first_at_or_after(c);
+    if ((at != cracks_.end() && at->cell == c) || !(n.norm() > 0.0)) continue;
+    if (!current) current.emplace(background_mesh{positions_at_particles(model_, d_), model_.mesh.cell});
+    if (const std::optional<cell_crack> k = cut_cell(*current, c, n.normalized())) {
+      cracks_.insert(at, *k);
       cut = true;
     }
-    if (cut && (!factory_ || !model_.bodies.nodes_are_particles() || model_.is_part()))
-      fail("t = {:.6g} s: a point has failed and its cell must be cut, which rebuilds the model: {}", timeline_.time,
-           model_.is_part() ? "cracks on several processes are not available yet; run on one process"
-                            : "build the solver with make_solver and give the particles at the mesh nodes");
-    return cut;
   }
+  if (cut && (!factory_ || !model_.bodies.nodes_are_particles() || model_.is_part()))
+    fail("t = {:.6g} s: cutting a cell rebuilds the model: {}", timeline_.time,
+         model_.is_part() ? "cracks on several processes are not available yet; run on one process"
+                          : "build the solver with make_solver and give the particles at the mesh nodes");
+  return cut;
 }
 
 template <Geometry G, Material M, Contact Ct>

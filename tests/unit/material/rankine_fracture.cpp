@@ -20,6 +20,8 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/bitwise.hpp>
 #include <rkpm/material/elastic.hpp>
+#include <rkpm/kernel/cubic_spline.hpp>
+#include <rkpm/kernel/quartic_spline.hpp>
 #include <rkpm/material/rankine_fracture.hpp>
 
 #include "support/error_message.hpp"
@@ -284,7 +286,9 @@ TEST_CASE("rankine: bad constants and a band too wide for the fracture energy ar
   CHECK(contains(snap, "smaller band width"));
   CHECK(error_message([&] { rankine_fracture(pmma, sigma_t, G_c, 0.999 * widest); }).empty());
   CHECK(rankine_fracture(pmma, sigma_t, G_c, h).largest_band_width() == doctest::Approx(widest).epsilon(1e-15));
-  CHECK(rankine_fracture::band_width_of_support(1.5e-3) == 1.5e-3);
+  // The window's width at equal area (107): 3a/4 and 4a/5.
+  CHECK(rankine_fracture::band_width_of_support<kernel::cubic_spline>(1.5e-3) == doctest::Approx(1.125e-3).epsilon(1e-12));
+  CHECK(rankine_fracture::band_width_of_support<kernel::quartic_spline>(1.5e-3) == doctest::Approx(1.2e-3).epsilon(1e-12));
 }
 
 }  // namespace test_unit_material_rankine_fracture
