@@ -4,10 +4,11 @@
 // particles, the depth of (75) and the particles whose physical state the detection reads.
 //   - Declared pairs (a list of body_pair): a pair's slaves are the problem's slave particles that
 //     belong to its slave body. A pair of a body with itself is self-contact.
-//   - All pairs (all_body_pairs, (109)): every (slave, master) of the model's bodies, the slave
-//     body first, itself included; the slaves every vertex of the slave body's surface chains,
-//     in increasing order, the order of the default slaves (the mesh's boundary nodes), so that
-//     two bodies give what the pairs (0, 1) and (1, 0) with the default slaves give, bit for bit.
+//   - All pairs (all_body_pairs, (109)): every (slave, master) of the model's bodies, itself
+//     included, master by master (every body's slaves against body 0's surface, then body 1's,
+//     ...); the slaves every vertex of the slave body's surface chains, in increasing order, the
+//     order of the default slaves (the mesh's boundary nodes), so that two bodies give what the
+//     pairs (1, 0) and (0, 1) with the default slaves give, bit for bit.
 
 #include <algorithm>
 #include <array>
@@ -28,12 +29,15 @@ struct body_pair_surfaces {
   std::vector<index_t> surface;  // the particles of every segment and slave, in increasing order
 };
 
-// (109): every (slave, master) of `bodies` bodies, slave-major.
+// (109): every (slave, master) of `bodies` bodies, master by master. For two bodies (1, 0) comes
+// before (0, 1), the order the project's cases and tests declare (the later body the slave
+// first): Gauss-Seidel passes are not symmetric, and a projectile on a plate (plate_impact)
+// inverts a cell of the plate at 4.5 us with the other order.
 inline std::vector<body_pair> every_body_pair(index_t bodies) {
   std::vector<body_pair> pairs;
   pairs.reserve(static_cast<std::size_t>(bodies * bodies));
-  for (index_t s = 0; s < bodies; ++s)
-    for (index_t m = 0; m < bodies; ++m) pairs.push_back({s, m});
+  for (index_t m = 0; m < bodies; ++m)
+    for (index_t s = 0; s < bodies; ++s) pairs.push_back({s, m});
   return pairs;
 }
 
