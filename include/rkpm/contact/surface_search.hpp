@@ -6,7 +6,9 @@
 //   lambda = (P - x_a) . t / |t|^2 in [0, 1],   g = -(P - x_a) . n in (0, depth],
 // with t = x_b - x_a and n = (t_y, -t_x) / |t| the surface's outward normal (the chains run with
 // the body on their left). Of the candidates that catch P, the one with the smallest g, the
-// first of them in the candidates' order if several tie.
+// first of them in the candidates' order if several tie. A slave against its own body's surface
+// (self-contact, docs/method.md (108)) leaves out the segments within its kernel's reach
+// (within_kernel_reach), which the surface beside it, curving or wrinkled, would otherwise give.
 
 #include <array>
 #include <span>
