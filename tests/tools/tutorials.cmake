@@ -12,6 +12,7 @@ set(rkpm_tutorial_args_09_your_own_problem 2e-6 1)                 # end time, r
 set(rkpm_tutorial_args_10_rate_and_temperature 2e-6)               # end time of part 1
 set(rkpm_tutorial_args_11_many_processes 1e-6 1)                   # end time, resolution
 set(rkpm_tutorial_args_13_extreme_deformation 300 1 1.5 2e-6)      # speed, resolution, stretch, end time
+set(rkpm_tutorial_args_14_fracture 5 4e-5)                         # cell size (mm), end time
 set(rkpm_tutorial_args_15_hot_forging 0.05 11)                     # end time (5% reduction), particles per side
 
 file(GLOB rkpm_tutorial_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tutorials/[0-9][0-9]_*/main.cpp)
