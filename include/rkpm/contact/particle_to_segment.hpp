@@ -117,7 +117,9 @@ class particle_to_segment {
     bodies_.enforce(body, dt, enforcement_, friction_, d, v, result);
     tool_vertices_.enforce(body, tools(), tool_slaves_.displacements(), tool_slaves_.velocities(), dt, enforcement_,
                            friction_, d, v, result, tool_slaves_.mutable_reactions());
-    tool_slaves_.end_step(body, d, !bodies_.empty() || tool_vertices_.enabled());
+    // The bodies' pass moved d only if it found contacts (all pairs or a self pair with nothing
+    // touching then costs the slaves' positions nothing more).
+    tool_slaves_.end_step(body, d, !bodies_.active_pairs().empty() || tool_vertices_.enabled());
     return result;
   }
 
