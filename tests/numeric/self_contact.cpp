@@ -29,6 +29,7 @@
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+#include "support/body_momentum.hpp"
 #include "support/error_message.hpp"
 
 namespace test_numeric_self_contact {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -196,15 +197,7 @@ impact collide(frictionless_t contact) {
   o.end_time = gap0 / (2.0 * W) + 1.6 * 2.0 * L / c;
   auto s = make_solver<Cfg>(std::move(p), o);
   const auto n = s.model().particle_count();
-  auto momentum = [&](int body) {  // -1: both
-    double P = 0.0, M = 0.0;
-    for (index_t I = 0; I < n; ++I)
-      if (body < 0 || s.body_of_particle(I) == body) {
-        P += s.mass()[I] * s.coefficient_velocities()[I][0];
-        M += s.mass()[I];
-      }
-    return std::pair{P, M};
-  };
+  auto momentum = [&](int body) { return test::body_momentum_x(s, body); };  // body -1: both
   const double P0 = momentum(-1).first, m0 = momentum(0).second;
   impact r;
   r.K0 = s.kinetic_energy();

@@ -13,18 +13,15 @@
 //   body contact   h_c (T^h(x_c) - T^h(x_J)) A_J from a master body's contact point x_c to a slave
 //                  in contact with it, and the frictional heat half to each (100), so that
 //                  what one body gains the other loses;
-//   temperatures   T_q = T^h(x_q) written into the point states (the material's
-//                  set_temperature, which keeps what the state derives from it), so the flow
-//                  stress of the next steps follows the field (101).
+//   temperatures   T_q = T^h(x_q) written into the point states (the material's set_temperature),
+//                  so the flow stress of the next steps follows the field (101).
 // The exchange interval is the largest whole number of mechanical steps within the conduction's
 // stable step (at most max_interval): conduction costs a pass over the points per exchange, not
 // per step. Between exchanges a material with a temperature heats its points adiabatically, as
 // without conduction; the exchange replaces that by the conducted field, whose heat includes it.
 // Attached to the solver (explicit_solver::attach, solver/step_companion.hpp), it is stepped by
 // every step, saved in the solver's checkpoints and reported in the runner's history:
-//   auto heat = std::make_shared<thermal::heat_coupling<Solver>>(solver, bodies, betas, T0, ...);
-//   solver.attach(heat);
-//   solver.run();
+//   solver.attach(std::make_shared<thermal::heat_coupling<Solver>>(solver, bodies, betas, T0, ...));
 // One process, a Lagrangian run (no re-referencing), particles at the mesh nodes.
 
 #include <algorithm>

@@ -21,6 +21,7 @@
 #include <rkpm/contact/particle_to_segment.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+#include "support/body_momentum.hpp"
 #include "support/case_files.hpp"
 #include "tools/runner/case_file/build_problem.hpp"
 #include "tools/runner/case_file/measure.hpp"
@@ -80,17 +81,8 @@ TEST_CASE("two bars in one case file: momentum, the speed after from wave theory
   run_options o;
   o.end_time = description.end_time;
   auto s = make_solver<file_config>(runner::case_file::build_problem<contact_t>(description, 1), o);
-  const auto n = s.model().particle_count();
   REQUIRE(s.bodies() == 2);
-  auto momentum = [&](int body) {  // -1: both
-    double P = 0.0, M = 0.0;
-    for (index_t I = 0; I < n; ++I)
-      if (body < 0 || s.body_of_particle(I) == body) {
-        P += s.mass()[I] * s.coefficient_velocities()[I][0];
-        M += s.mass()[I];
-      }
-    return std::pair{P, M};
-  };
+  auto momentum = [&](int body) { return test::body_momentum_x(s, body); };  // body -1: both
   const double m_be = momentum(0).second, m_st = momentum(1).second, P0 = momentum(-1).first;
   CHECK(std::abs(m_be - rho_be * L * H) < 1e-9 * m_be);
   CHECK(std::abs(m_st - rho_st * L * H) < 1e-9 * m_st);
