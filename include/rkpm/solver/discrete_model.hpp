@@ -104,10 +104,9 @@ inline void check_body(const particle_set<2>& particles, const background_mesh& 
          particle_volume, cell_area);
 }
 
-// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive. `cracked`: a particle that
-// no point's row holds (a free particle, section 3.7), or that only the negative lobes of the
-// functions next to a crack's tip reach, takes its own volume (its mass, set on the intact body,
-// is kept through the rebuilds: only the projections to the particles read this).
+// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive. `cracked`: a particle no
+// point's row holds (a free particle, section 3.7), or only negative lobes near a crack's tip,
+// takes its own volume (its mass is kept through rebuilds; the projections read this).
 inline std::vector<double> lumped_volumes(const particle_set<2>& particles, const quadrature_points& points,
                                           const shape_table<2>& at_points, bool cracked = false) {
   std::vector<double> volume(particles.size(), 0.0);
@@ -125,9 +124,8 @@ inline std::vector<double> lumped_volumes(const particle_set<2>& particles, cons
   return volume;
 }
 
-// The rows at the particles with each empty row (a particle that cracks leave with too few
-// neighbours for the correction, section 3.7) holding the particle itself, N_I(X_I) = 1: its
-// coefficient is its displacement, and it moves freely.
+// The rows at the particles with each empty row (cracks left the particle too few neighbours,
+// section 3.7) holding the particle itself, N_I(X_I) = 1: it moves freely.
 inline shape_table<2> with_free_particles(shape_table<2> rows) {
   shape_table<2> out;
   out.offset.reserve(rows.offset.size());
