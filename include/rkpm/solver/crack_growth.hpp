@@ -33,6 +33,17 @@ struct cell_crack {
   std::array<double, 2> at{};     // the crossing (1 - at) x_k + at x_{k+1}
 };
 
+// Where cell c's cut is, or would go, in cuts kept in cell order, and whether c is cut.
+inline std::size_t cut_position(const std::vector<cell_crack>& cuts, index_t c) {
+  return static_cast<std::size_t>(
+      std::lower_bound(cuts.begin(), cuts.end(), c, [](const cell_crack& k, index_t cell) { return k.cell < cell; }) -
+      cuts.begin());
+}
+inline bool is_cut(const std::vector<cell_crack>& cuts, index_t c) {
+  const std::size_t at = cut_position(cuts, c);
+  return at < cuts.size() && cuts[at].cell == c;
+}
+
 // The cut of cell c (its corners at cells.node) through its centroid with unit normal n; none if
 // the line misses two sides (a degenerate cell).
 inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t c, const vec2& n) {

@@ -64,10 +64,7 @@ bool explicit_solver<G, M, Ct>::grow_cracks() {
     for (index_t q = 0; q < model_.point_count(); ++q) {
       const state_type& s = points_.states()[q];
       if (!s.failed() || !(vec2(s.crack_normal).squaredNorm() > 0.0)) continue;  // a hoop crack cuts no cell
-      const index_t c = model_.points.cell[q];
-      const auto at = std::lower_bound(cracks_.begin(), cracks_.end(), c,
-                                       [](const cell_crack& k, index_t cell) { return k.cell < cell; });
-      if (at == cracks_.end() || at->cell != c) failed.emplace_back(c, vec2(s.crack_normal));
+      if (const index_t c = model_.points.cell[q]; !is_cut(cracks_, c)) failed.emplace_back(c, vec2(s.crack_normal));
     }
     return !failed.empty() && insert_cuts(failed);
   }
@@ -87,17 +84,13 @@ void explicit_solver<G, M, Ct>::cut_cells(const std::vector<std::pair<index_t, v
 // order); whether it added any. The model is rebuilt by the caller.
 template <Geometry G, Material M, Contact Ct>
 bool explicit_solver<G, M, Ct>::insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals) {
-  const auto first_at_or_after = [&](index_t c) {
-    return std::lower_bound(cracks_.begin(), cracks_.end(), c, [](const cell_crack& k, index_t cell) { return k.cell < cell; });
-  };
   std::optional<background_mesh> current;  // the cells at the current positions, when needed
   bool cut = false;
   for (const auto& [c, n] : cells_and_normals) {
-    const auto at = first_at_or_after(c);
-    if ((at != cracks_.end() && at->cell == c) || !(n.norm() > 0.0)) continue;
+    if (is_cut(cracks_, c) || !(n.norm() > 0.0)) continue;
     if (!current) current.emplace(background_mesh{positions_at_particles(model_, d_), model_.mesh.cell});
     if (const std::optional<cell_crack> k = cut_cell(*current, c, n.normalized())) {
-      cracks_.insert(at, *k);
+      cracks_.insert(cracks_.begin() + static_cast<std::ptrdiff_t>(cut_position(cracks_, c)), *k);
       cut = true;
     }
   }
