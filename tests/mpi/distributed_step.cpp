@@ -9,7 +9,7 @@
 // energy of the ledger, the plastic work, the tools' impulse and the largest penetration, on
 // every rank. Partitions: METIS's; a cut along the axis at mid-radius (the contact face and every
 // constraint's row cross it); and particles dealt by index mod P, where nearly every neighbour is
-// another rank's.
+// another rank's; and the coordinate bisection of the reference positions (straight cuts).
 
 #include <doctest/doctest.h>
 
@@ -20,6 +20,7 @@
 
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/distributed_solver.hpp>
+#include <rkpm/parallel/coordinate_bisection.hpp>
 #include <rkpm/parallel/partition.hpp>
 
 #include "mpi/bar_impact.hpp"
@@ -75,6 +76,7 @@ TEST_CASE("the explicit step on 1, 2 or 3 ranks: one process's coefficients, vel
   }
   check_partition(world, given_partition(along_axis, P), "cut along the axis", 40, 20);
   check_partition(world, given_partition(dealt, P), "dealt by index", 20, 20);
+  check_partition(world, bisect_coordinates(m.particles.position, P), "coordinate bisection", 40, 20);
 }
 
 }  // namespace test_mpi_distributed_step

@@ -7,9 +7,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
+#include <rkpm/parallel/coordinate_bisection.hpp>
+#include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/partition.hpp>
 
 #include "mpi/grid_problem.hpp"
@@ -110,6 +114,93 @@ TEST_CASE("partition errors: impossible part counts and bad given parts, each a 
   CHECK(contains(error_message([&] { make_particle_graph(g.table, 10); }), "build the table and the graph from the same"));
   // The forced cuts of the other tests are valid partitions (given_partition would throw).
   for (const index_t parts : {1, 2, 3, 4}) CHECK(g.stripes(parts).parts == parts);
+}
+
+TEST_CASE("coordinate bisection: straight cuts, balanced by weight, deterministic, without the graph") {
+  const test::grid_problem g(41, 31);
+  const std::vector<vec2>& x = g.particles.position;
+  for (const index_t parts : {1, 2, 3, 4, 5, 16}) {
+    CAPTURE(parts);
+    const particle_partition p = bisect_coordinates(x, parts);
+    REQUIRE(p.parts == parts);
+    REQUIRE(p.particles() == g.size());
+    CHECK(bisect_coordinates(x, parts).part == p.part);
+    // Unit weights: each cut puts the nearest whole particle to its share on each side, so a part
+    // is within one particle per level of cuts of N / P.
+    const double levels = std::ceil(std::log2(static_cast<double>(parts)));
+    for (const index_t n : p.sizes())
+      CHECK(std::abs(static_cast<double>(n) - static_cast<double>(g.size()) / static_cast<double>(parts)) <=
+            levels + 1e-12);
+  }
+  // Two parts of the 5.5 x 3.5 box: one straight cut across x, its longer side.
+  const particle_partition two = bisect_coordinates(x, 2);
+  double left_max = -1.0, right_min = 1.0;
+  for (index_t I = 0; I < g.size(); ++I) {
+    if (two.part[I] == 0) left_max = std::max(left_max, x[I][0]);
+    else right_min = std::min(right_min, x[I][0]);
+  }
+  CHECK(left_max <= right_min);
+  // Four parts: the two halves are cut again across their longer side (y for 2.75 x 3.5).
+  const particle_partition four = bisect_coordinates(x, 4);
+  index_t moved = 0, crossing = 0;
+  for (index_t I = 0; I < g.size(); ++I) {
+    moved += (four.part[I] < 2) != (two.part[I] == 0);
+    for (index_t J = 0; J < g.size(); ++J) crossing += four.part[I] == 0 && four.part[J] == 1 && x[I][1] > x[J][1];
+  }
+  CHECK(moved == 0);
+  CHECK(crossing == 0);
+  // Weights: the left fifth of the box three times as heavy; the two parts' weights differ by at
+  // most the heaviest particle, so the cut moves left of the middle.
+  std::vector<double> w(g.size());
+  for (index_t I = 0; I < g.size(); ++I) w[I] = x[I][0] < 0.2 * g.width ? 3.0 : 1.0;
+  const particle_partition weighted = bisect_coordinates(x, w, 2);
+  double w0 = 0.0, w1 = 0.0;
+  for (index_t I = 0; I < g.size(); ++I) (weighted.part[I] == 0 ? w0 : w1) += w[I];
+  CHECK(std::abs(w0 - w1) <= 3.0);
+  CHECK(weighted.sizes()[0] < two.sizes()[0]);
+}
+
+TEST_CASE("partition cost: links cut, points computed twice and ghosts, against the pairs and the halo plans") {
+  const test::grid_problem g;
+  for (const index_t parts : {1, 2, 3, 4}) {
+    CAPTURE(parts);
+    const particle_partition p = parts == 3 ? g.stripes(3) : bisect_coordinates(g.particles.position, parts);
+    const partition_costs c = partition_cost(g.table, p);
+    // Links: every pair of particles of different parts, once per point whose support holds both.
+    std::int64_t cut = 0;
+    for (index_t q = 0; q < g.table.points(); ++q)
+      for (index_t e = g.table.offset[q]; e < g.table.offset[q + 1]; ++e)
+        for (index_t f = e + 1; f < g.table.offset[q + 1]; ++f)
+          cut += p.part[g.table.neighbor[e]] != p.part[g.table.neighbor[f]];
+    CHECK(c.links_cut == cut);
+    // The halo plans (parallel/halo.hpp): their points beyond the table's are the redundant ones,
+    // their ghosts the ghosts.
+    index_t planned_points = 0, most_ghosts = 0;
+    for (int r = 0; r < parts; ++r) {
+      const halo_plan h = make_halo_plan(p, g.table, r);
+      planned_points += static_cast<index_t>(h.points.size());
+      most_ghosts = std::max<index_t>(most_ghosts, static_cast<index_t>(h.ghosts.size()));
+    }
+    CHECK(c.shared_points == planned_points - g.table.points());
+    CHECK(c.max_ghosts == most_ghosts);
+    CHECK(c.imbalance >= 1.0);
+    CHECK((parts == 1) == (c.links_cut == 0 && c.shared_points == 0));
+  }
+}
+
+TEST_CASE("coordinate bisection errors: one line with the fix") {
+  const test::grid_problem g;
+  const std::vector<vec2>& x = g.particles.position;
+  CHECK(contains(error_message([&] { bisect_coordinates(x, 0); }), "at least one part"));
+  CHECK(contains(error_message([&] { bisect_coordinates(x, 97); }), "run on at most 96 processes"));
+  CHECK(contains(error_message([&] { bisect_coordinates(x, std::vector<double>(3, 1.0), 2); }),
+                 "3 weights for 96 particles"));
+  std::vector<vec2> bad = x;
+  bad[7][1] = std::nan("");
+  CHECK(contains(error_message([&] { bisect_coordinates(bad, 2); }), "particle 7"));
+  std::vector<double> negative(x.size(), 1.0);
+  negative[5] = -1.0;
+  CHECK(contains(error_message([&] { bisect_coordinates(x, negative, 2); }), "non-negative weights"));
 }
 
 }  // namespace test_mpi_partition
