@@ -19,8 +19,8 @@
 #include <vector>
 
 #include <rkpm/parallel/communicator.hpp>
-#include <rkpm/parallel/distributed_solver.hpp>
 #include <rkpm/parallel/coordinate_bisection.hpp>
+#include <rkpm/parallel/distributed_solver.hpp>
 #include <rkpm/parallel/partition.hpp>
 
 #include "mpi/bar_impact.hpp"

@@ -19,10 +19,12 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/execution.hpp>
+#include <rkpm/discretization/search_rows.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
@@ -54,38 +56,46 @@ struct point_traversal {
 inline constexpr index_t traversal_tile_points = 128;
 
 // Whether the points first, first+1 of every tile (and first+2, first+3, ...) have identical
-// neighbour lists in `table` (a tile's odd last point stands alone).
-template <int Dim>
-bool rows_come_in_pairs(const shape_table<Dim>& table, const std::vector<index_t>& tile_start) {
+// neighbour lists in `rows` (a tile's odd last point stands alone).
+template <ColumnRows Rows>
+bool rows_come_in_pairs(const Rows& rows, const std::vector<index_t>& tile_start) {
+  std::vector<particle_index> first;
   for (std::size_t k = 0; k + 1 < tile_start.size(); ++k)
     for (index_t q = tile_start[k]; q + 1 < tile_start[k + 1]; q += 2) {
-      const auto a = table.neighbor.begin() + table.offset[q], b = table.neighbor.begin() + table.offset[q + 1],
-                 c = table.neighbor.begin() + table.offset[q + 2];
-      if (b - a != c - b || !std::equal(a, b, b)) return false;
+      const std::span<const particle_index> a = rows.columns(q);
+      first.assign(a.begin(), a.end());
+      const std::span<const particle_index> b = rows.columns(q + 1);
+      if (!std::ranges::equal(first, b)) return false;
     }
   return true;
 }
 
-// Greedy colouring of the tiles of `table` (rows: points, columns: `particles` particles).
-template <int Dim>
-point_traversal make_point_traversal(const shape_table<Dim>& table, index_t particles,
+// Greedy colouring of the tiles of `rows` (rows: points, columns: `particles` particles): a
+// table, or the rows a neighbour search finds (discretization/search_rows.hpp), read once.
+template <ColumnRows Rows>
+point_traversal make_point_traversal(const Rows& rows, index_t particles,
                                      index_t tile_points = traversal_tile_points) {
   constexpr int parallel_colours = 63;  // colour 63 collects the tiles that find no free colour
   if (tile_points < 1) fail("point traversal: tile_points = {} must be at least 1", tile_points);
   point_traversal t;
-  const index_t np = table.points();
+  const index_t np = rows.points();
   const index_t tiles = (np + tile_points - 1) / tile_points;
   t.tile_start.resize(tiles + 1);
   for (index_t k = 0; k <= tiles; ++k) t.tile_start[k] = std::min(k * tile_points, np);
   std::vector<std::uint64_t> used(particles, 0);  // colours of the tiles touching each particle
   std::vector<int> colour(tiles);
   std::vector<index_t> count(parallel_colours + 1, 0);
+  std::vector<particle_index> touched;  // the tile's rows' columns
   for (index_t k = 0; k < tiles; ++k) {
-    const index_t first = table.offset[t.tile_start[k]], last = table.offset[t.tile_start[k + 1]];
+    touched.clear();
+    for (index_t q = t.tile_start[k]; q < t.tile_start[k + 1]; ++q) {
+      const std::span<const particle_index> row = rows.columns(q);
+      touched.insert(touched.end(), row.begin(), row.end());
+    }
     std::uint64_t taken = 0;
-    for (index_t e = first; e < last; ++e) taken |= used[table.neighbor[e]];
+    for (const particle_index I : touched) taken |= used[I];
     const int c = std::min(std::countr_one(taken), parallel_colours);
-    for (index_t e = first; e < last; ++e) used[table.neighbor[e]] |= std::uint64_t{1} << c;
+    for (const particle_index I : touched) used[I] |= std::uint64_t{1} << c;
     colour[k] = c;
     ++count[c];
   }
@@ -99,7 +109,7 @@ point_traversal make_point_traversal(const shape_table<Dim>& table, index_t part
     t.colour_start.push_back(static_cast<index_t>(t.tile.size()));
   }
   if (count[parallel_colours] == 0) t.serial_from = t.colours();
-  t.paired_rows = rows_come_in_pairs(table, t.tile_start);
+  t.paired_rows = rows_come_in_pairs(rows, t.tile_start);
   return t;
 }
 

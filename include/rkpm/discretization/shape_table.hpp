@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <rkpm/approximation/rk_shape_functions.hpp>
@@ -32,6 +33,11 @@ struct shape_table {
 
   index_t points() const { return static_cast<index_t>(offset.size()) - 1; }
   index_t entries() const { return static_cast<index_t>(neighbor.size()); }
+  // Row p's columns: what the plans and the traversal read of a table (search_rows gives the
+  // same without one, discretization/search_rows.hpp).
+  std::span<const particle_index> columns(index_t p) const {
+    return {neighbor.data() + offset[p], neighbor.data() + offset[p + 1]};
+  }
 
   // Physical value u(x_p) = sum_I N_I(x_p) d_I of a field given by its coefficients d.
   template <class Value>

@@ -15,8 +15,10 @@
 // forwarded, sums taken in one process's order. Every rank's owned values, and every total
 // (energies, time, step size), equal one process's bit for bit, on any partition.
 // An error on one rank in the set-up or a step is thrown on every rank with one message
-// (communicator::agree). The whole model is dropped once the rank's part is built; building it
-// on every rank is the set-up's memory limit (the step's is the part).
+// (communicator::agree). The whole model is dropped once the rank's part is built. Built whole
+// on every rank, it is the set-up's memory limit (the step's is the part); from a model_layout
+// (parallel/rank_setup.hpp) each rank builds its part without a table of the whole, and the
+// same part.
 // Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: then
 // the surfaces' particles and rows join the shared region, and every rank corrects them alike.
 
@@ -31,6 +33,7 @@
 #include <rkpm/parallel/local_model.hpp>
 #include <rkpm/parallel/mpi_process_group.hpp>
 #include <rkpm/parallel/partition.hpp>
+#include <rkpm/parallel/rank_setup.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/problem.hpp>
@@ -76,38 +79,43 @@ class distributed_solver {
   // Collective. `partition`: one part per process (partition_particles, or a given one).
   distributed_solver(communicator& comm, discrete_model whole, problem_type prob, run_options options,
                      const particle_partition& partition) {
-    if (partition.parts != comm.size())
-      fail("distributed solver: a partition into {} parts on {} processes; partition into as many parts as "
-           "processes",
-           partition.parts, comm.size());
-    if (partition.particles() != whole.particle_count())
-      fail("distributed solver: the partition has {} particles but the model {}; partition this model's particles",
-           partition.particles(), whole.particle_count());
-    discrete_model local;
+    check(comm, partition, whole.particle_count());
+    rank_model r;
     comm.guarded([&] {
       whole = with_bodies<geometry_type>(std::move(whole));
-      add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
-      prob.slave_particles = select_slaves(whole, std::move(prob.slave_particles), has_contact(prob.contact)).particle;
-      // Contact between bodies and tool vertices read the bodies' surfaces: every rank holds them.
-      static const std::vector<boundary_chain> none;
-      const std::vector<boundary_chain>& surfaces =
-          reads_surfaces(prob.contact) ? whole.bodies.surface("contact on several processes") : none;
-      const std::vector<stored_index> shared =
-          shared_particles(whole.at_particles, prob.constraints, prob.slave_particles, surfaces);
-      plan_ = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles, shared);
-      shared_ = static_cast<index_t>(shared.size());
-      local = local_model(whole, plan_);
+      shared_region(whole, prob, options);
+      r.plan = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles,
+                              shared_of(whole.at_particles, prob));
+      r.shared = shared_;
+      r.local = local_model(whole, r.plan);
     });
     comm.agree();
-    group_ = std::make_unique<mpi_process_group>(comm, partition, plan_, whole.at_points);
+    group_ = std::make_unique<mpi_process_group>(comm, partition, r.plan, whole.at_points);
     whole = discrete_model{};
-    local.own.group = group_.get();
-    std::vector<stored_index> local_id(plan_.global_particles, -1);
-    for (index_t i = 0; i < plan_.local_particles(); ++i) local_id[plan_.global_particle(i)] = static_cast<stored_index>(i);
-    for (velocity_constraint& c : prob.constraints) c.particle = local_id[c.particle];
-    for (index_t& I : prob.slave_particles) I = local_id[I];
-    comm.guarded([&] { solver_.emplace(std::move(local), std::move(prob), options); });
+    finish(comm, std::move(r), std::move(prob), options);
+  }
+
+  // Collective. The set-up in parts (parallel/rank_setup.hpp): from the layout of the whole model,
+  // each rank builds its part alone; no rank holds a table of the whole. The layout is dropped
+  // once the part is built.
+  distributed_solver(communicator& comm, model_layout layout, problem_type prob, run_options options,
+                     const particle_partition& partition) {
+    check(comm, partition, layout.whole.particle_count());
+    rank_model r;
+    comm.guarded([&] {
+      const std::vector<index_t> region = shared_region(layout.whole, prob, options);
+      r = rank_model_of(layout, partition, comm.rank(), region,
+                        [&](const shape_table<2>& rows) { return shared_of(rows, prob); });
+    });
     comm.agree();
+    {
+      const neighbor_search<2> search(layout.whole.particles);
+      group_ = std::make_unique<mpi_process_group>(comm, partition, r.plan,
+                                                   search_rows<2>(search, layout.whole.points.position));
+    }
+    layout = model_layout{};
+    group_->forward(r.local.lumped_volume);  // the ghosts' volumes, from their owners
+    finish(comm, std::move(r), std::move(prob), options);
   }
 
   Solver& solver() { return *solver_; }
@@ -120,8 +128,52 @@ class distributed_solver {
   index_t shared_count() const { return shared_; }
 
  private:
+  void check(communicator& comm, const particle_partition& partition, index_t particles) const {
+    if (partition.parts != comm.size())
+      fail("distributed solver: a partition into {} parts on {} processes; partition into as many parts as "
+           "processes",
+           partition.parts, comm.size());
+    if (partition.particles() != particles)
+      fail("distributed solver: the partition has {} particles but the model {}; partition this model's particles",
+           partition.particles(), particles);
+  }
+
+  // On the whole model (or its layout), as one process finds them: the axis constraints, the
+  // contact slaves and, when the contact reads them, the bodies' surfaces (surfaces_); returns
+  // the particles whose rows decide the shared region.
+  std::vector<index_t> shared_region(const discrete_model& whole, problem_type& prob, const run_options& options) {
+    add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
+    prob.slave_particles = slave_particles(whole, std::move(prob.slave_particles), has_contact(prob.contact));
+    surfaces_.clear();
+    if (reads_surfaces(prob.contact)) surfaces_ = whole.bodies.surface("contact on several processes");
+    std::vector<index_t> region = prob.slave_particles;
+    for (const velocity_constraint& c : prob.constraints) region.push_back(c.particle);
+    for (const boundary_chain& c : surfaces_) region.insert(region.end(), c.node.begin(), c.node.end());
+    return region;
+  }
+  std::vector<stored_index> shared_of(const shape_table<2>& rows, const problem_type& prob) {
+    std::vector<stored_index> shared = shared_particles(rows, prob.constraints, prob.slave_particles, surfaces_);
+    shared_ = static_cast<index_t>(shared.size());
+    return shared;
+  }
+
+  // The solver on the rank's model, the problem's constraints and slaves renamed to local ids.
+  void finish(communicator& comm, rank_model r, problem_type prob, const run_options& options) {
+    plan_ = std::move(r.plan);
+    shared_ = r.shared;
+    surfaces_.clear();
+    r.local.own.group = group_.get();
+    std::vector<stored_index> local_id(plan_.global_particles, -1);
+    for (index_t i = 0; i < plan_.local_particles(); ++i) local_id[plan_.global_particle(i)] = static_cast<stored_index>(i);
+    for (velocity_constraint& c : prob.constraints) c.particle = local_id[c.particle];
+    for (index_t& I : prob.slave_particles) I = local_id[I];
+    comm.guarded([&] { solver_.emplace(std::move(r.local), std::move(prob), options); });
+    comm.agree();
+  }
+
   halo_plan plan_;
   index_t shared_ = 0;
+  std::vector<boundary_chain> surfaces_;  // during the set-up
   std::unique_ptr<mpi_process_group> group_;  // the solver's model points to it
   std::optional<Solver> solver_;
 };

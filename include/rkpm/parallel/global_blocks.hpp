@@ -137,17 +137,18 @@ inline global_block_plan make_global_block_plan(const particle_partition& partit
 // particle of its row, which computes it (the point touches that particle). Every point has
 // one owner, as every particle does, so per-point terms can be summed in one process's order by
 // a global block plan (make_global_block_plan, above) made from this partition of the points.
-template <int Dim>
-particle_partition point_owners(const particle_partition& particles, const shape_table<Dim>& table) {
+template <ColumnRows Rows>
+particle_partition point_owners(const particle_partition& particles, const Rows& table) {
   particle_partition points;
   points.parts = particles.parts;
   points.part.resize(table.points());
   for (index_t q = 0; q < table.points(); ++q) {
-    if (table.offset[q + 1] == table.offset[q])
+    const std::span<const particle_index> row = table.columns(q);
+    if (row.empty())
       fail("point owners: point {} has no particle in its support; build the table from particles that cover the "
            "points",
            q);
-    points.part[q] = particles.part[table.neighbor[table.offset[q]]];
+    points.part[q] = particles.part[row.front()];
   }
   return points;
 }

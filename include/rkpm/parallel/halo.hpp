@@ -24,6 +24,7 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/execution.hpp>
+#include <rkpm/discretization/search_rows.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 #include <rkpm/parallel/partition.hpp>
 
@@ -92,18 +93,15 @@ inline void link_ghosts(halo_plan& h, const std::vector<stored_index>& part, con
 //   shared        particles every rank holds (sorted global ids): the constrained and contact
 //                 slave particles with their rows' columns, whose corrections every rank
 //                 computes alike (the replicated region of docs/method.md section 9.8)
-template <int Dim>
-halo_plan make_halo_plan(const particle_partition& partition, const shape_table<Dim>& table, int rank,
-                         const shape_table<Dim>* at_particles = nullptr, std::span<const stored_index> shared = {}) {
+// `table` is read row by row, once, for its columns: a shape table, or the rows a neighbour
+// search finds (search_rows, discretization/search_rows.hpp) where no table of the whole exists.
+template <ColumnRows Rows>
+halo_plan make_halo_plan(const particle_partition& partition, const Rows& table, int rank,
+                         const shape_table<2>* at_particles = nullptr, std::span<const stored_index> shared = {}) {
   const index_t n = partition.particles(), np = table.points();
   if (rank < 0 || rank >= partition.parts)
     fail("halo plan: rank {} of a partition into {} parts; run on as many processes as parts", rank,
          partition.parts);
-  for (const particle_index I : table.neighbor)
-    if (I < 0 || I >= n)
-      fail("halo plan: the shape table names particle {} but the partition has {} particles; build the table and "
-           "the partition from the same particles",
-           I, n);
   const std::vector<stored_index>& part = partition.part;
   halo_plan h;
   h.rank = rank;
@@ -122,27 +120,26 @@ halo_plan make_halo_plan(const particle_partition& partition, const shape_table<
   std::vector<char> is_ghost(n, 0);
   std::vector<stored_index> ranks_here;
   for (index_t q = 0; q < np; ++q) {
-    const index_t begin = table.offset[q], end = table.offset[q + 1];
-    bool ours = false;
-    for (index_t e = begin; e < end && !ours; ++e) ours = part[table.neighbor[e]] == rank;
-    if (!ours) continue;
+    const std::span<const particle_index> row = table.columns(q);
+    for (const particle_index I : row)
+      if (I < 0 || I >= n)
+        fail("halo plan: the shape table names particle {} but the partition has {} particles; build the table "
+             "and the partition from the same particles",
+             I, n);
+    if (std::ranges::none_of(row, [&](particle_index I) { return part[I] == rank; })) continue;
     h.points.push_back(static_cast<stored_index>(q));
     ranks_here.clear();
-    for (index_t e = begin; e < end; ++e) {
-      const index_t I = table.neighbor[e];
+    for (const particle_index I : row)
       if (part[I] != rank) {
         is_ghost[I] = 1;
         ranks_here.push_back(part[I]);
       }
-    }
     if (ranks_here.empty()) continue;
     std::ranges::sort(ranks_here);
     ranks_here.erase(std::ranges::unique(ranks_here).begin(), ranks_here.end());
-    for (index_t e = begin; e < end; ++e) {
-      const index_t I = table.neighbor[e];
+    for (const particle_index I : row)
       if (part[I] == rank)
         for (const stored_index b : ranks_here) to_send.emplace_back(b, static_cast<stored_index>(I));
-    }
   }
   // An owned particle's row at the particles: its columns held here, ours sent to the row's owner.
   if (at_particles) {

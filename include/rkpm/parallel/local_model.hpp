@@ -84,29 +84,22 @@ inline discrete_model local_force_model(const discrete_model& global, const halo
   return m;
 }
 
-// A rank's whole model for the time step (solver/explicit_solver.hpp): the force model above,
-// and what the rest of the step reads:
-//   lumped_volume  every local particle's (the masses: ghosts' too, for the shared region)
-//   at_particles   the rows of the owned particles and of every ghost whose columns are all
-//                  held here (the shared region's: parallel/halo.hpp), columns renamed; the
-//                  other ghosts' rows are empty (no rank reads them)
-//   particle_id    each particle's index in the whole model
-//   bodies         the particles' and points' bodies, and the surfaces if the part holds them
-//                  (model_bodies::part)
-// own.group is left to the caller (the process group the run lives in).
-inline discrete_model local_model(const discrete_model& global, const halo_plan& plan) {
-  discrete_model m = local_force_model(global, plan);
+// The rows at the particles a rank keeps (`rows`: the whole table at the particles): sets
+// m.particle_id (each local particle's index in the whole model) and m.at_particles, the rows of
+// the owned particles and of every ghost whose columns are all held here (the shared region's:
+// parallel/halo.hpp), columns renamed; the other ghosts' rows are empty (no rank reads them).
+// Returns each whole-model particle's local id (-1 where the rank does not hold it).
+inline std::vector<stored_index> keep_held_rows(const shape_table<2>& rows, const halo_plan& plan, discrete_model& m) {
   const index_t n = plan.local_particles(), owned = static_cast<index_t>(plan.owned.size());
   std::vector<stored_index> local(plan.global_particles, -1);
+  m.particle_id.clear();
   for (index_t i = 0; i < n; ++i) {
     const stored_index I = plan.global_particle(i);
     local[I] = static_cast<stored_index>(i);
     m.particle_id.push_back(I);
-    m.lumped_volume.push_back(global.lumped_volume[I]);
   }
-  const shape_table<2>& rows = global.at_particles;
   shape_table<2>& t = m.at_particles;
-  t.offset.assign(1, 0);
+  t = {};
   for (index_t i = 0; i < n; ++i) {
     const stored_index I = m.particle_id[i];
     bool held = true;
@@ -123,6 +116,21 @@ inline discrete_model local_model(const discrete_model& global, const halo_plan&
       }
     t.offset.push_back(static_cast<index_t>(t.neighbor.size()));
   }
+  return local;
+}
+
+// A rank's whole model for the time step (solver/explicit_solver.hpp): the force model above,
+// and what the rest of the step reads:
+//   lumped_volume  every local particle's (the masses: ghosts' too, for the shared region)
+//   at_particles   keep_held_rows's
+//   particle_id    each particle's index in the whole model
+//   bodies         the particles' and points' bodies, and the surfaces if the part holds them
+//                  (model_bodies::part)
+// own.group is left to the caller (the process group the run lives in).
+inline discrete_model local_model(const discrete_model& global, const halo_plan& plan) {
+  discrete_model m = local_force_model(global, plan);
+  for (index_t i = 0; i < plan.local_particles(); ++i) m.lumped_volume.push_back(global.lumped_volume[plan.global_particle(i)]);
+  const std::vector<stored_index> local = keep_held_rows(global.at_particles, plan, m);
   m.bodies = model_bodies::part(global.bodies, m.particle_id, plan.points, local);
   return m;
 }

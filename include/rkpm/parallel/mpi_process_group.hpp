@@ -31,9 +31,10 @@ namespace rkpm::parallel {
 
 class mpi_process_group final : public process_group {
  public:
-  // `at_points`: the whole model's table at the points, which the plan was made from.
-  mpi_process_group(communicator& comm, const particle_partition& particles, halo_plan plan,
-                    const shape_table<2>& at_points)
+  // `at_points`: the whole model's rows at the points (its table, or search_rows), which the
+  // plan was made from.
+  template <ColumnRows Rows>
+  mpi_process_group(communicator& comm, const particle_partition& particles, halo_plan plan, const Rows& at_points)
       : mpi_process_group(comm, particles, std::move(plan), point_owners(particles, at_points)) {}
 
   int rank() const override { return comm_.rank(); }

@@ -37,17 +37,24 @@ void add_axis_constraints(const discrete_model& m, double relative_tolerance,
 // The slaves of a body with contact (tools or body pairs): the given particles, or, when none are given, the boundary
 // nodes of the mesh if the mesh nodes are the particles (make_grid_mesh + make_grid_particles).
 // With the rows N_I(X_J) of each slave J.
-inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t> slaves, bool with_contact) {
+// The slave particles alone (select_slaves' choice), which need no table.
+inline std::vector<index_t> slave_particles(const discrete_model& m, std::vector<index_t> slaves, bool with_contact) {
   if (slaves.empty() && with_contact) {
     if (!m.bodies.nodes_are_particles())
       fail("contact needs slave particles: the mesh nodes are not the particles, so give "
            "problem.slave_particles (the boundary particles) explicitly");
     slaves = m.mesh.boundary_nodes();
   }
+  for (const index_t J : slaves)
+    if (J < 0 || J >= m.particle_count()) fail("slave particle {} does not exist", J);
+  return slaves;
+}
+
+inline contact_slaves select_slaves(const discrete_model& m, std::vector<index_t> slaves, bool with_contact) {
+  slaves = slave_particles(m, std::move(slaves), with_contact);
   contact_slaves out;
   auto& t = out.table;
   for (index_t J : slaves) {
-    if (J < 0 || J >= m.particle_count()) fail("slave particle {} does not exist", J);
     const auto& src = m.at_particles;
     for (index_t e = src.offset[J]; e < src.offset[J + 1]; ++e) {
       t.neighbor.push_back(src.neighbor[e]);

@@ -1,0 +1,176 @@
+#pragma once
+// A rank's part of the model built without the model of the whole (docs/method.md section 9.8,
+// "Set-up in parts"). Every rank holds the layout of the whole: the particles, the cells, the
+// quadrature points and the bodies (model_layout, about 200 bytes a particle), never a shape
+// table of the whole (1.6 KB a particle). From it:
+//   - the plans and the traversal read the whole model's rows through a neighbour search,
+//     one row at a time (discretization/search_rows.hpp), never stored;
+//   - the rank evaluates the shape functions at its own points (the plan's: those whose
+//     support holds an owned particle) and at the particles whose rows the plan reads (its own,
+//     those whose rows hold one of its own, the shared region's, its ghosts);
+//   - its owned particles' lumped volumes are summed over its points, in the whole model's
+//     point order; the ghosts' come from their owners (distributed_solver forwards them).
+// Each value is evaluated at the same position with the same search as the whole model's
+// builder does, so the rank's model equals local_model(whole, plan) entry by entry, and its
+// plan make_halo_plan(whole...)'s (tests/mpi/rank_setup.cpp).
+// The layout is the set-up's replicated part; the rank drops it once its part is built.
+// Cell rules only: VCI's corrected gradients and SCNI's smoothed ones need each particle's
+// cells whole, and cracks make the rows depend on the values; both are refused.
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include <rkpm/concepts/correction.hpp>
+#include <rkpm/concepts/geometry.hpp>
+#include <rkpm/concepts/kernel.hpp>
+#include <rkpm/concepts/quadrature.hpp>
+#include <rkpm/discretization/search_rows.hpp>
+#include <rkpm/parallel/halo.hpp>
+#include <rkpm/parallel/local_model.hpp>
+#include <rkpm/solver/discrete_model.hpp>
+
+namespace rkpm::parallel {
+
+// The whole model without its tables (`whole`: particles, mesh, points, bodies), and the shape
+// functions of its kernel and correction at chosen positions.
+struct model_layout {
+  discrete_model whole;
+  std::function<shape_table<2>(const neighbor_search<2>&, const std::vector<vec2>&, shape_table_contents)> evaluate;
+};
+
+// The layout of build_discrete_model<K, C, Q, G>(particles, mesh, max_condition)'s model.
+template <Kernel K, Correction C, Quadrature Q, Geometry G>
+model_layout make_model_layout(particle_set<2> particles, background_mesh mesh,
+                               double max_condition = default_max_moment_condition) {
+  if constexpr (NodalRule<Q> || CorrectedRule<Q>)
+    fail("set-up in parts with the rule {}: its gradients need each particle's cells whole; set up a VCI or SCNI "
+         "model whole (distributed_solver from a discrete_model)",
+         Q::name);
+  if (!mesh.cracks.empty())
+    fail("set-up in parts with cracks in the cells: the rows near a crack depend on the shape functions; set up a "
+         "cracked model whole");
+  particles.validate();
+  model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
+  check_body(particles, mesh);
+  model_layout l;
+  if constexpr (!NodalRule<Q>) l.whole.points = make_quadrature_points<Q, G>(mesh);
+  l.whole.particles = std::move(particles);
+  l.whole.mesh = std::move(mesh);
+  l.whole.set_bodies(std::move(bodies));
+  l.evaluate = [max_condition](const neighbor_search<2>& search, const std::vector<vec2>& at,
+                               shape_table_contents contents) {
+    const rk_shape_functions<K, C, 2> rk(max_condition);
+    return build_shape_table<K, C, 2>(search, at, rk, contents);
+  };
+  return l;
+}
+
+namespace detail {
+
+// The rows of the layout's table at the particles (values_only) of the particles marked in
+// `wanted`, the others' rows empty: the whole table's rows where they are wanted.
+inline shape_table<2> rows_at_particles(const model_layout& l, const neighbor_search<2>& search,
+                                        const std::vector<char>& wanted) {
+  const std::vector<vec2>& X = l.whole.particles.position;
+  std::vector<vec2> at;
+  for (index_t I = 0; I < static_cast<index_t>(X.size()); ++I)
+    if (wanted[I]) at.push_back(X[I]);
+  const shape_table<2> some = l.evaluate(search, at, values_only);
+  shape_table<2> t;
+  t.offset.assign(1, 0);
+  index_t k = 0;
+  for (index_t I = 0; I < static_cast<index_t>(X.size()); ++I) {
+    if (wanted[I]) {
+      const std::span<const particle_index> row = some.columns(k);
+      t.neighbor.insert(t.neighbor.end(), row.begin(), row.end());
+      t.N.insert(t.N.end(), some.N.begin() + some.offset[k], some.N.begin() + some.offset[k + 1]);
+      ++k;
+    }
+    t.offset.push_back(static_cast<stored_index>(t.neighbor.size()));
+  }
+  return t;
+}
+
+}  // namespace detail
+
+// A rank's plan and model, as from the whole model (shared_particles and local_model, with
+// `rows` the whole table at the particles), but from the layout. `shared_region(rows)` gives the
+// particles every rank holds from the rows at the particles it reads (the constrained, slave and
+// surface particles' rows, which the caller marks in `region`).
+struct rank_model {
+  halo_plan plan;
+  discrete_model local;
+  index_t shared = 0;
+};
+
+template <class SharedRegion>
+rank_model rank_model_of(const model_layout& l, const particle_partition& partition, int rank,
+                         const std::vector<index_t>& region, SharedRegion&& shared_region) {
+  const discrete_model& w = l.whole;
+  const index_t n = w.particle_count();
+  if (partition.particles() != n)
+    fail("set-up in parts: the partition has {} particles but the model {}; partition this model's particles",
+         partition.particles(), n);
+  const std::vector<stored_index>& part = partition.part;
+  const neighbor_search<2> search(w.particles);
+  const search_rows<2> point_rows(search, w.points.position), particle_rows(search, w.particles.position);
+  // The rows at the particles the plan reads: the owned ones, those that hold an owned one, the
+  // shared region's.
+  std::vector<char> wanted(n, 0);
+  for (index_t I = 0; I < n; ++I)
+    wanted[I] = part[I] == rank ||
+                std::ranges::any_of(particle_rows.columns(I), [&](particle_index J) { return part[J] == rank; });
+  for (const index_t I : region) wanted[I] = 1;
+  shape_table<2> rows = detail::rows_at_particles(l, search, wanted);
+  rank_model r;
+  const std::vector<stored_index> shared = shared_region(rows);
+  r.shared = static_cast<index_t>(shared.size());
+  r.plan = make_halo_plan(partition, point_rows, rank, &rows, shared);
+  // The ghosts' rows too (local_model keeps those whose columns the rank holds).
+  bool more = false;
+  for (const stored_index I : r.plan.ghosts) more |= !std::exchange(wanted[I], char{1});
+  if (more) rows = detail::rows_at_particles(l, search, wanted);
+
+  const halo_plan& h = r.plan;
+  discrete_model& m = r.local;
+  // The particles and points of local_force_model and local_model, from the layout.
+  for (index_t i = 0; i < h.local_particles(); ++i) {
+    const index_t I = h.global_particle(i);
+    m.particles.position.push_back(w.particles.position[I]);
+    m.particles.volume.push_back(w.particles.volume[I]);
+    m.particles.support.push_back(w.particles.support[I]);
+  }
+  std::vector<vec2> at;
+  for (const stored_index q : h.points) {
+    at.push_back(w.points.position[q]);
+    m.points.position.push_back(w.points.position[q]);
+    m.points.weight.push_back(w.points.weight[q]);
+    if (!w.points.cell.empty()) m.points.cell.push_back(w.points.cell[q]);
+  }
+  // The rows at the particles as local_model keeps them; the rank's rows at its points,
+  // evaluated here, in local columns.
+  const std::vector<stored_index> local = keep_held_rows(rows, h, m);
+  m.at_points = l.evaluate(search, at, {});
+  for (particle_index& I : m.at_points.neighbor) I = local[I];
+  m.traversal = local_traversal(h, make_point_traversal(point_rows, n));
+  // V_I = sum_q N_I(X_q) w_q (lumped_volumes) over the rank's points in the whole model's order:
+  // every point of an owned particle is here, so its sum is the whole model's.
+  m.lumped_volume.assign(h.local_particles(), 0.0);
+  for (index_t k = 0; k < m.point_count(); ++k)
+    for (index_t e = m.at_points.offset[k]; e < m.at_points.offset[k + 1]; ++e)
+      m.lumped_volume[m.at_points.neighbor[e]] += m.at_points.N[e] * m.points.weight[k];
+  for (index_t i = 0; i < static_cast<index_t>(h.owned.size()); ++i)
+    if (!(m.lumped_volume[i] > 0.0))
+      fail("particle {} at ({:.6g}, {:.6g}) gets a lumped mass of {:.3g} x density: it is covered by no quadrature "
+           "point or by negative shape-function lobes; refine the background cells, enlarge the support or use "
+           "the linear correction",
+           h.owned[i], m.particles.position[i][0], m.particles.position[i][1], m.lumped_volume[i]);
+  m.own = h.own();
+  m.global_mean_support = w.mean_support();
+  m.point_id = h.points;
+  m.bodies = model_bodies::part(w.bodies, m.particle_id, h.points, local);
+  return r;
+}
+
+}  // namespace rkpm::parallel
