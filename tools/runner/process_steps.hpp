@@ -1,17 +1,21 @@
 #pragma once
-// process_steps<Solver>: how simulate() steps the solver it observes when the run is divided over
-// several processes (rkpm_run under mpiexec; ranks.hpp implements it with MPI). Rank 0 observes
-// a one-process solver of the whole model, `whole`, which never steps itself: the ranks step
-// their parts, and this object puts their state into `whole` (parallel::mirror_state) at the
-// calls where the observer reads more than the time and step. `whole` is then the solver one
-// process would have, bit for bit, so the observer writes the one-process files unchanged. On
-// one process simulate() steps the solver itself and uses no such object.
-// Every call is collective: the other ranks make the same calls with no `whole` (follow_run in
-// ranks.hpp), so an error on any rank is thrown on every rank alike.
+// process_steps<Solver>: how simulate() steps the solver it observes. On one process
+// (one_process_steps, below) the solver steps itself and the observer sees every step. Divided
+// over several processes (rkpm_run under mpiexec; ranks.hpp implements it with MPI), rank 0
+// observes a one-process solver of the whole model, `whole`, which never steps itself: the
+// ranks step their parts, and the object puts their state into `whole`
+// (parallel::mirror_state) at the calls where the observer reads more than the time and step.
+// `whole` is then the solver one process would have, bit for bit, so the observer writes the
+// one-process files unchanged. Every call is collective: the other ranks make the same calls
+// with no `whole` (follow_run in ranks.hpp), so an error on any rank is thrown on every rank
+// alike.
 
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
+
+#include <rkpm/solver/checkpoint.hpp>
 
 namespace rkpm::runner {
 
@@ -32,6 +36,8 @@ class process_steps {
  public:
   virtual ~process_steps() = default;
   virtual int processes() const = 0;
+  // Whether the run is divided over processes (mpiexec, even with one): snapshots in pieces.
+  virtual bool divided() const = 0;
 
   // Every rank reads the checkpoint, then `whole` takes the state.
   virtual void read_checkpoint(const std::filesystem::path& file, Solver* whole) = 0;
@@ -41,8 +47,29 @@ class process_steps {
   virtual void run(Solver* whole, const rank0_observation<Solver>& observation) = 0;
   // After the run, ended or failed: whether the parts stopped between steps (their state whole),
   // and, when they did, `whole` brought up to date.
-  virtual bool between_steps() const = 0;
+  virtual bool between_steps(const Solver& whole) const = 0;
   virtual void settle(Solver* whole) = 0;
+};
+
+// One process: the solver steps itself under the observer; a checkpoint is read into it.
+template <class Solver>
+class one_process_steps final : public process_steps<Solver> {
+ public:
+  explicit one_process_steps(std::string configuration) : configuration_(std::move(configuration)) {}
+  int processes() const override { return 1; }
+  bool divided() const override { return false; }
+  void read_checkpoint(const std::filesystem::path& file, Solver* whole) override {
+    rkpm::read_checkpoint(*whole, file, configuration_);
+  }
+  void abandon(const std::string&) override {}
+  void run(Solver* whole, const rank0_observation<Solver>& observation) override {
+    whole->run([&](const Solver& at) { observation.observe(at); }, 1);
+  }
+  bool between_steps(const Solver& whole) const override { return whole.between_steps(); }
+  void settle(Solver*) override {}
+
+ private:
+  std::string configuration_;
 };
 
 }  // namespace rkpm::runner

@@ -72,6 +72,7 @@ class rank_steps final : public process_steps<Solver> {
   }
 
   int processes() const override { return comm_.size(); }
+  bool divided() const override { return true; }
 
   void read_checkpoint(const std::filesystem::path& file, Solver* whole) override {
     parallel::read_checkpoint(*run_, file, configuration_);
@@ -118,12 +119,14 @@ class rank_steps final : public process_steps<Solver> {
   }
 
   bool started() const { return started_; }
-  bool between_steps() const override { return run_->solver().between_steps(); }
+  bool between_steps(const Solver&) const override { return parts_between_steps(); }
   void settle(Solver* whole) override {
-    if (between_steps()) parallel::mirror_state(*run_, *layout_, whole, configuration_);
+    if (parts_between_steps()) parallel::mirror_state(*run_, *layout_, whole, configuration_);
   }
 
  private:
+  bool parts_between_steps() const { return run_->solver().between_steps(); }
+
   parallel::communicator& comm_;
   std::string configuration_;
   std::optional<parallel::distributed_solver<Solver>> run_;

@@ -112,13 +112,68 @@ inline io::vtu_format snapshot_format(const run_request& request) {
   return io::vtu_format(io::vtu_encoding::appended, request.vtu_compression);
 }
 
-// steps: null on one process; on several, rank 0's view of the divided run (process_steps.hpp),
-// whose make() builds the whole solver that rank 0 observes.
+// summary.json's figures of a run that has ended, failed or stopped: sizes, steps, time-step
+// range, timings, the energy ledger, what ran beside the solver, the mass scaling's and the
+// re-references' record, and the material state's extremes.
+template <class Solver, class Observer>
+void add_run_summary(json& summary, const Solver& s, const Observer& observe, int processes) {
+  summary["particles"] = s.model().particle_count();
+  summary["quadrature_points"] = s.model().point_count();
+  summary["steps"] = s.steps();
+  summary["dt_min_s"] = s.min_time_step();
+  summary["dt_max_s"] = s.max_time_step();
+  summary["end_time_s"] = s.time();
+  summary["threads"] = active_threads();
+  summary["processes"] = processes;
+  summary["wall_s"] = observe.wall_s();
+  summary["output_s"] = observe.output_s();  // of wall_s, this part of the run: not the steps
+  summary["setup_s"] = observe.record().setup_s;
+  if (!observe.record().restarts.empty()) summary["restarts"] = observe.record().restarts;
+  if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();
+  json& energy = summary["energy"];
+  energy = json::object();
+  for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+    energy[std::string(name)] = value;
+  // What ran beside the solver (a case file's "heat": the heat flows and temperatures at the end).
+  for (const auto& companion : s.companions())
+    for (const auto& [name, value] : companion->report(s)) summary["coupled"][name] = value;
+  if (s.options().mass_scaling.enabled()) {
+    // The mass added per body (kg per metre of depth in plane strain, kg axisymmetric) and how
+    // far the run stayed from dynamics (85).
+    std::vector<double> added(static_cast<std::size_t>(s.bodies()), 0.0);
+    for (index_t I = 0; I < s.model().particle_count(); ++I)
+      added[static_cast<std::size_t>(s.body_of_particle(I))] += s.mass()[I] - s.physical_mass()[I];
+    const quasi_static_check& q = s.quasi_static();
+    json& m = summary["scaled_masses"];
+    m["factor"] = s.mass_scaling_factor();
+    m["added_mass_per_body"] = added;
+    m["max_kinetic_to_internal"] = std::isfinite(q.worst_ratio) ? q.worst_ratio : 1e300;
+    m["max_kinetic_to_internal_at_s"] = q.worst_time;
+    m["quasi_static"] = !q.left();
+    if (q.left()) m["left_quasi_static_at_s"] = q.left_at;
+  }
+  if (s.options().rereference.enabled()) {
+    summary["rereferences"] = s.rereferences();
+    summary["rereference_times_s"] = s.rereference_times();
+  }
+  // The material state's extremes (io/solver_output.hpp): the largest temperature, damage, the
+  // failed fraction of the points, when the material has them.
+  if (const auto points = io::state_summary(s); !points.empty()) {
+    json& state = summary["points"];
+    for (const auto& [k, v] : points) state[k] = v;
+  }
+}
+
+// steps: how the solver is stepped (process_steps.hpp): null on one process (the solver steps
+// itself); on several, rank 0's view of the divided run, whose make() builds the whole solver
+// that rank 0 observes.
 template <class Case, class Solver>
 run_outcome simulate(const run_request& request, const typename Case::parameters& params, const run_policies& method,
                      const std::function<Solver()>& make, const std::optional<restart_point>& restart = {},
                      process_steps<Solver>* steps = nullptr) {
   namespace fs = std::filesystem;
+  one_process_steps<Solver> alone(method.configuration);
+  if (!steps) steps = &alone;
   run_outcome outcome;
   outcome.directory = request.output_directory();
   const fs::path dir = outcome.directory;
@@ -138,12 +193,9 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   run_record record;
   try {
     holder.emplace(make());
-    if constexpr (requires { Case::attach(*holder, params, true); }) Case::attach(*holder, params, steps != nullptr);
+    if constexpr (requires { Case::attach(*holder, params, true); }) Case::attach(*holder, params, steps->divided());
     if (restart) {
-      if (steps)
-        steps->read_checkpoint(restart->file, &*holder);
-      else
-        read_checkpoint(*holder, restart->file, method.configuration);
+      steps->read_checkpoint(restart->file, &*holder);
       record = record_from_json(restart->description.at("record"));
       record.restarts.push_back({{"checkpoint", fs::absolute(restart->file).string()},
                                  {"time_s", holder->time()}, {"step", holder->steps()}});
@@ -184,28 +236,25 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     observer.emplace(dir, params, s, std::move(record), identity, method.configuration, request.quiet,
                      snapshot_format(request), request.hooks);
     if (restart) observer->resume(fs::absolute(restart->file).parent_path());
-    if (steps) observer->write_snapshots_in_pieces();
+    if (steps->divided()) observer->write_snapshots_in_pieces();
     summary["status"] = "running";  // what a killed run's folder says
     write_json(dir / "summary.json", summary);
   } catch (const std::exception& e) {
-    if (steps) steps->abandon(e.what());  // the other ranks wait for the run: every rank throws
+    steps->abandon(e.what());  // the other ranks wait for the run: every rank throws
     throw;
   }
   run_observer<Case, Solver>& observe = *observer;
   std::string error;
   bool stopped = false, settled = false;
-  // On several processes: the whole solver brought up to date after the run, ended or failed.
+  // The whole solver brought up to date after the run, ended or failed (on several processes).
   const auto settle = [&] {
-    if (steps && !std::exchange(settled, true)) steps->settle(&s);
+    if (!std::exchange(settled, true)) steps->settle(&s);
   };
   try {
-    if (steps)
-      steps->run(&s, {.needs = [&](double t, double end) { return observe.needs_state(t, end); },
-                      .snapshot = [&](double t, double end) { return observe.snapshot_due(t, end); },
-                      .pass = [&](double t, double end, long n) { observe.pass(t, end, n); },
-                      .observe = [&](const Solver& at) { observe(at); }});
-    else
-      s.run(observe, 1);
+    steps->run(&s, {.needs = [&](double t, double end) { return observe.needs_state(t, end); },
+                    .snapshot = [&](double t, double end) { return observe.snapshot_due(t, end); },
+                    .pass = [&](double t, double end, long n) { observe.pass(t, end, n); },
+                    .observe = [&](const Solver& at) { observe(at); }});
     settle();
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
   } catch (const stop_requested&) {
@@ -214,7 +263,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     error = e.what();
     settle();
     // Stopped between steps (the step limit, Ctrl-C): the state is whole and can be continued.
-    const bool whole = steps ? steps->between_steps() : s.between_steps();
+    const bool whole = steps->between_steps(s);
     if (whole && (observe.record().checkpoint_interval > 0.0 || pending_interrupt().load() != 0)) {
       try {
         observe.write_checkpoint_now(s);
@@ -227,51 +276,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
 
   summary["status"] = !error.empty() ? "failed" : stopped ? "stopped" : "completed";
   if (!error.empty()) summary["error"] = error;
-  summary["particles"] = s.model().particle_count();
-  summary["quadrature_points"] = s.model().point_count();
-  summary["steps"] = s.steps();
-  summary["dt_min_s"] = s.min_time_step();
-  summary["dt_max_s"] = s.max_time_step();
-  summary["end_time_s"] = s.time();
-  summary["threads"] = active_threads();
-  summary["processes"] = steps ? steps->processes() : 1;
-  summary["wall_s"] = observe.wall_s();
-  summary["output_s"] = observe.output_s();  // of wall_s, this part of the run: not the steps
-  summary["setup_s"] = observe.record().setup_s;
-  if (!observe.record().restarts.empty()) summary["restarts"] = observe.record().restarts;
-  if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();
-  json& energy = summary["energy"];
-  energy = json::object();
-  for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
-    energy[std::string(name)] = value;
-  // What ran beside the solver (a case file's "heat": the heat flows and temperatures at the end).
-  for (const auto& companion : s.companions())
-    for (const auto& [name, value] : companion->report(s)) summary["coupled"][name] = value;
-  if (s.options().mass_scaling.enabled()) {
-    // The mass added per body (kg per metre of depth in plane strain, kg axisymmetric) and how
-    // far the run stayed from dynamics (85).
-    std::vector<double> added(static_cast<std::size_t>(s.bodies()), 0.0);
-    for (index_t I = 0; I < s.model().particle_count(); ++I)
-      added[static_cast<std::size_t>(s.body_of_particle(I))] += s.mass()[I] - s.physical_mass()[I];
-    const quasi_static_check& q = s.quasi_static();
-    json& m = summary["scaled_masses"];
-    m["factor"] = s.mass_scaling_factor();
-    m["added_mass_per_body"] = added;
-    m["max_kinetic_to_internal"] = std::isfinite(q.worst_ratio) ? q.worst_ratio : 1e300;
-    m["max_kinetic_to_internal_at_s"] = q.worst_time;
-    m["quasi_static"] = !q.left();
-    if (q.left()) m["left_quasi_static_at_s"] = q.left_at;
-  }
-  if (s.options().rereference.enabled()) {
-    summary["rereferences"] = s.rereferences();
-    summary["rereference_times_s"] = s.rereference_times();
-  }
-  // The material state's extremes (io/solver_output.hpp): the largest temperature, damage, the
-  // failed fraction of the points, when the material has them.
-  if (const auto points = io::state_summary(s); !points.empty()) {
-    json& state = summary["points"];
-    for (const auto& [k, v] : points) state[k] = v;
-  }
+  add_run_summary(summary, s, observe, steps->processes());
   json& results = summary["results"];  // the case's measures at the end of the run
   results = json::object();
   for (const auto& [k, v] : observe.last_measures()) results[k] = v;
