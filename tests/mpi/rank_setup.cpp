@@ -6,11 +6,13 @@
 // weights, rows and values, gradients, traversal, rows at the particles, lumped volumes with
 // the ghosts' forwarded); the step from it equals one process's, bit for bit, for METIS's
 // partition and the coordinate bisection. Each rank holds its share of the particles and points
-// plus its ghosts (asserted from the local counts). VCI and SCNI rules and cracks are refused.
+// plus its ghosts (asserted from the local counts). VCI and SCNI rules, cracks and several
+// bodies are refused.
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -136,6 +138,26 @@ TEST_CASE("set-up in parts: VCI and SCNI rules and cracks are refused with the w
                        make_grid_particles<2>(lo, hi, Eigen::Vector2i(9, 31), 2.0), cracked);
                  }),
                  "set up a cracked model whole"));
+  // Two bars side by side: two bodies, whose tables the runner builds apart (body_models.hpp).
+  particle_set<2> two = make_grid_particles<2>(lo, hi, Eigen::Vector2i(5, 9), 2.0);
+  background_mesh cells = make_grid_mesh(lo, hi, Eigen::Vector2i(5, 9));
+  const vec2 shift(2.0 * test::bar::radius, 0.0);
+  const auto nodes = static_cast<stored_index>(cells.node.size());
+  const particle_set<2> other = make_grid_particles<2>(lo + shift, hi + shift, Eigen::Vector2i(5, 9), 2.0);
+  const background_mesh other_cells = make_grid_mesh(lo + shift, hi + shift, Eigen::Vector2i(5, 9));
+  two.position.insert(two.position.end(), other.position.begin(), other.position.end());
+  two.volume.insert(two.volume.end(), other.volume.begin(), other.volume.end());
+  two.support.insert(two.support.end(), other.support.begin(), other.support.end());
+  cells.node.insert(cells.node.end(), other_cells.node.begin(), other_cells.node.end());
+  for (std::array<stored_index, 4> c : other_cells.cell) {
+    for (stored_index& k : c) k += nodes;
+    cells.cell.push_back(c);
+  }
+  CHECK(contains(error_message([&] {
+                   make_model_layout<kernel::cubic_spline, correction::linear, quadrature::q2, test::bar::geometry_type>(
+                       two, cells);
+                 }),
+                 "set-up in parts of 2 bodies"));
 }
 
 }  // namespace test_mpi_rank_setup

@@ -14,8 +14,9 @@
 // builder does, so the rank's model equals local_model(whole, plan) entry by entry, and its
 // plan make_halo_plan(whole...)'s (tests/mpi/rank_setup.cpp).
 // The layout is the set-up's replicated part; the rank drops it once its part is built.
-// Cell rules only: VCI's corrected gradients and SCNI's smoothed ones need each particle's
-// cells whole, and cracks make the rows depend on the values; both are refused.
+// One body, cell rules only: VCI's corrected gradients and SCNI's smoothed ones need each
+// particle's cells whole, cracks make the rows depend on the values, and several bodies have
+// tables of their own; all are refused.
 
 #include <functional>
 #include <utility>
@@ -52,6 +53,10 @@ model_layout make_model_layout(particle_set<2> particles, background_mesh mesh,
          "cracked model whole");
   particles.validate();
   model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
+  if (bodies.count() > 1)
+    fail("set-up in parts of {} bodies: each body's shape functions are built on its own (solver/body_models.hpp); "
+         "set up a model of several bodies whole",
+         bodies.count());
   check_body(particles, mesh);
   model_layout l;
   if constexpr (!NodalRule<Q>) l.whole.points = make_quadrature_points<Q, G>(mesh);
