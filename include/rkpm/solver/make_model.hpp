@@ -67,13 +67,22 @@ explicit_solver<G, M, Ct> make_solver(const method_names& m, problem<M, Ct> p, c
 }  // namespace rkpm
 
 #if defined(RKPM_EXTERN_MODELS) || defined(RKPM_INSTANTIATE_MODELS)
+#include <type_traits>
+
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/geometry/plane_strain.hpp>
 namespace rkpm {
+// The model table's rules are exactly the shipped ones, in order; its kernels and corrections
+// (four lines per rule) match the lists' lengths.
+static_assert(std::is_same_v<detail::model_table_rules,
+                             decltype(boost::hana::unpack(boost::hana::append(policies::all_quadratures,
+                                                                              boost::hana::type_c<void>),
+                                                          boost::hana::template_<detail::model_table>))::type>,
+              "solver/model_instances.hpp's RKPM_MODEL_RULES must list policies::all_quadratures, in order: add the "
+              "new rule there");
 static_assert(decltype(boost::hana::length(policies::kernels))::value == 2 &&
-                  decltype(boost::hana::length(policies::corrections))::value == 2 &&
-                  decltype(boost::hana::length(policies::all_quadratures))::value == 11,
-              "solver/model_instances.hpp lists every shipped kernel, correction and rule: add the new one there");
+                  decltype(boost::hana::length(policies::corrections))::value == 2,
+              "solver/model_instances.hpp lists every shipped kernel and correction: add the new one there");
 #ifdef RKPM_EXTERN_MODELS
 extern template discrete_model make_model<geometry::plane_strain>(const method_names&, particle_set<2>,
                                                                   background_mesh, double, const quadrature_points*);

@@ -43,30 +43,43 @@
   RKPM_MODEL_INSTANCE(kernel::cubic_spline, correction::quadratic, Q, G)               \
   RKPM_MODEL_INSTANCE(kernel::quartic_spline, correction::linear, Q, G)                \
   RKPM_MODEL_INSTANCE(kernel::quartic_spline, correction::quadratic, Q, G)
-// Every shipped rule in geometry G (policies::all_quadratures; make_model.hpp checks the count).
-#define RKPM_MODEL_INSTANCES_OF_GEOMETRY(G)                                                     \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q2, G)                                               \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q4, G)                                               \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q9, G)                                               \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q2_split, G)                                         \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q2_tri, G)                                           \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q2_vci, G)                                           \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::q4_vci, G)                                           \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::vci<quadrature::q2_split>, G)                        \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::vci<quadrature::q2_tri>, G)                          \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::scni<>, G)                                           \
-  RKPM_MODEL_INSTANCES_OF_RULE(quadrature::scni_plain, G)
+// The table of shipped rules: X(Q, G) for each, in policies::all_quadratures' order. A macro,
+// because an explicit instantiation declaration must name its types in the source (a Hana list
+// can call a template for each type, not declare one extern); what the list can do is check the
+// table: detail::model_table_rules, the rules listed here, must be policies::all_quadratures
+// exactly (make_model.hpp), so a rule added to one and not the other stops the build.
+#define RKPM_MODEL_RULES(X, G)                    \
+  X(quadrature::q2, G)                            \
+  X(quadrature::q4, G)                            \
+  X(quadrature::q9, G)                            \
+  X(quadrature::q2_split, G)                      \
+  X(quadrature::q2_tri, G)                        \
+  X(quadrature::q2_vci, G)                        \
+  X(quadrature::q4_vci, G)                        \
+  X(quadrature::vci<quadrature::q2_split>, G)     \
+  X(quadrature::vci<quadrature::q2_tri>, G)       \
+  X(quadrature::scni<>, G)                        \
+  X(quadrature::scni_plain, G)
+#define RKPM_MODEL_LISTED_RULE(Q, G) Q,
+
+namespace rkpm::detail {
+template <class... Q>
+struct model_table {};
+// The table's rules as a type list (void closes it).
+using model_table_rules = model_table<RKPM_MODEL_RULES(RKPM_MODEL_LISTED_RULE, ) void>;
+}  // namespace rkpm::detail
 
 namespace rkpm {
 #if RKPM_MODEL_PART(1)
-RKPM_MODEL_INSTANCES_OF_GEOMETRY(geometry::plane_strain)
+RKPM_MODEL_RULES(RKPM_MODEL_INSTANCES_OF_RULE, geometry::plane_strain)
 #endif
 #if RKPM_MODEL_PART(2)
-RKPM_MODEL_INSTANCES_OF_GEOMETRY(geometry::axisymmetric)
+RKPM_MODEL_RULES(RKPM_MODEL_INSTANCES_OF_RULE, geometry::axisymmetric)
 #endif
 }  // namespace rkpm
 
-#undef RKPM_MODEL_INSTANCES_OF_GEOMETRY
+#undef RKPM_MODEL_RULES
+#undef RKPM_MODEL_LISTED_RULE
 #undef RKPM_MODEL_INSTANCES_OF_RULE
 #undef RKPM_MODEL_INSTANCE
 #undef RKPM_MODEL_EXTERN
