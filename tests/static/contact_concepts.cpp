@@ -24,6 +24,12 @@ static_assert(rkpm::FrictionLaw<c::friction::coulomb>);
 static_assert(!rkpm::FrictionLaw<c::enforcement::paper>);
 static_assert(!rkpm::ContactEnforcement<c::friction::coulomb>);
 
+// The optional protocols (concepts/contact.hpp): particle_to_segment offers them, none only rebind.
+static_assert(rkpm::RebindsSlaves<c::particle_to_segment<>> && rkpm::RebindsSlaves<c::none>);
+static_assert(rkpm::ContactsOnSurfaces<c::particle_to_segment<>> && !rkpm::ContactsOnSurfaces<c::none>);
+static_assert(rkpm::ReportsToolPairs<c::particle_to_segment<>> && !rkpm::ReportsToolPairs<c::none>);
+static_assert(rkpm::ReportsBodyPairs<c::particle_to_segment<>> && !rkpm::ReportsBodyPairs<c::none>);
+
 static_assert(c::particle_to_segment<c::enforcement::effective_mass>::name == "effective_mass+frictionless");
 static_assert(c::particle_to_segment<c::enforcement::paper, c::friction::coulomb>::name == "paper+coulomb");
 

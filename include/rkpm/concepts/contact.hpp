@@ -77,6 +77,31 @@ bool has_contact(const C& c) {
   return !std::ranges::empty(c.tools()) || !std::ranges::empty(c.body_pairs());
 }
 
+// Optional protocols of a contact policy (contact::particle_to_segment offers them all):
+// RebindsSlaves: `rebind(body, slaves)`, the same slaves' rows on a model rebuilt in the current
+// configuration, its state kept (re-referencing, solver/contact_stage.hpp).
+template <class C>
+concept RebindsSlaves = requires(C& c, const contact_body& b, const contact_slaves& s) { c.rebind(b, s); };
+// ContactsOnSurfaces: `all_body_pairs()` and `tool_vertex_slaves()` besides body_pairs(): contact
+// on the bodies' surfaces, which a distributed run then keeps (parallel/distributed_solver.hpp).
+template <class C>
+concept ContactsOnSurfaces = requires(const C& c) {
+  { c.body_pairs() } -> std::ranges::sized_range;
+  { c.all_body_pairs() } -> std::convertible_to<bool>;
+  { c.tool_vertex_slaves() } -> std::convertible_to<bool>;
+};
+// ReportsToolPairs, ReportsBodyPairs: `active_pairs()` and `bodies().active_pairs()`, the
+// slave-tool and body-body contacts of the last step, which a heat coupling heats by friction
+// (thermal/heat_coupling.hpp).
+template <class C>
+concept ReportsToolPairs = requires(const C& c) {
+  { c.active_pairs() } -> std::ranges::sized_range;
+};
+template <class C>
+concept ReportsBodyPairs = requires(const C& c) {
+  { c.bodies().active_pairs() } -> std::ranges::sized_range;
+};
+
 template <class E>
 concept ContactEnforcement = requires(const E& e, double g, double dt, double m) {
   { E::name } -> std::convertible_to<std::string_view>;

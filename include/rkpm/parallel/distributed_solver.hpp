@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include <rkpm/concepts/contact.hpp>
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/local_model.hpp>
@@ -64,7 +65,7 @@ inline std::vector<stored_index> shared_particles(const shape_table<2>& at_parti
 // of bodies and tool vertices).
 template <class Contact>
 bool reads_surfaces(const Contact& c) {
-  if constexpr (requires { c.body_pairs(); c.all_body_pairs(); c.tool_vertex_slaves(); })
+  if constexpr (ContactsOnSurfaces<Contact>)
     return !c.body_pairs().empty() || c.all_body_pairs() || c.tool_vertex_slaves();
   else
     return false;

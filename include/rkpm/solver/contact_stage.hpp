@@ -49,7 +49,7 @@ struct contact_stage {
   // their rows taken again, the impulses and the policy's state kept.
   void rebind(const discrete_model& m, const contact_body& body) {
     if (!active()) return;
-    if constexpr (requires { policy.rebind(body, contact_slaves{}); }) {
+    if constexpr (RebindsSlaves<Ct>) {
       policy.rebind(body, select_slaves(m, slaves, true));
     } else {
       fail("re-referencing: the contact policy {} cannot take a rebuilt model (it has no rebind()); run without "
