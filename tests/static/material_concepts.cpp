@@ -9,7 +9,10 @@
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/material/elastic.hpp>
 #include <rkpm/material/hardening.hpp>
+#include <rkpm/material/j2_batch.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/material/johnson_cook.hpp>
+#include <rkpm/material/rankine_fracture.hpp>
 
 namespace m = rkpm::material;
 namespace h = rkpm::material::hardening;
@@ -110,6 +113,22 @@ static_assert(!rkpm::Hardening<wrong::hardening_without_slope>);
 static_assert(!rkpm::Hardening<wrong::hardening_without_name>);
 static_assert(!rkpm::Hardening<wrong::hardening_with_float_stress>);
 static_assert(!rkpm::Hardening<m::elastic>);
+
+// The optional protocols (concepts/material.hpp): who offers each, and that a plain Material
+// offers none, so that it is never required.
+static_assert(rkpm::UpdatesWithStepLog<m::johnson_cook> && !rkpm::UpdatesWithStepLog<m::j2_plasticity<h::power_law>>);
+static_assert(rkpm::RecomputesStress<m::j2_plasticity<h::linear>> && rkpm::RecomputesStress<m::johnson_cook>);
+static_assert(rkpm::RecordsDeformation<m::j2_state> && rkpm::RecordsDeformation<m::johnson_cook_state>);
+static_assert(rkpm::UpdatesInLanes<m::j2_plasticity<h::voce>, rkpm::basic_block_lanes<rkpm::simd_of<2>>>);
+static_assert(!rkpm::UpdatesInLanes<m::johnson_cook, rkpm::basic_block_lanes<rkpm::simd_of<2>>>);
+static_assert(rkpm::FailingState<m::johnson_cook_state> && !rkpm::BreakingState<m::johnson_cook_state>);
+static_assert(rkpm::BreakingState<m::rankine_fracture::state_type>);
+static_assert(rkpm::TemperatureState<m::johnson_cook_state> && !rkpm::TemperatureState<m::j2_state>);
+static_assert(rkpm::ListsOutputFields<m::johnson_cook_state> && !rkpm::ListsOutputFields<m::j2_state>);
+static_assert(rkpm::SlopeFromFlow<h::power_law> && !rkpm::SlopeFromFlow<h::johnson_cook>);
+static_assert(rkpm::RateDependentHardening<h::johnson_cook> && !rkpm::RateDependentHardening<h::voce>);
+static_assert(rkpm::SlopesFromFlow<h::johnson_cook::at_temperature_t> && !rkpm::SlopesFromFlow<h::johnson_cook>);
+static_assert(rkpm::HardensAlongStep<h::johnson_cook::at_temperature_t> && !rkpm::HardensAlongStep<h::johnson_cook>);
 
 // ---- what the concepts cannot state, checked at run time on every shipped law -------------
 // A Material starts with no plastic strain or work, is stress-free at F = I, returns a

@@ -34,10 +34,12 @@
 #include <string>
 #include <utility>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include <rkpm/concepts/material.hpp>
 #include <rkpm/core/process_group.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/body_partition.hpp>
@@ -69,11 +71,6 @@ inline std::vector<named_value> energy_terms(const energy_balance& e, bool remap
                              {"balance_error", e.balance_error()}});
   return terms;
 }
-
-// Extra per-point scalars a material state lists for output: `static constexpr auto
-// output_fields()` returning pairs {name, &state::member}, e.g. {"temperature_K", &s::temperature}.
-template <class State>
-concept has_output_fields = requires { State::output_fields(); };
 
 // When a snapshot's arrays are computed: now (a point_data the caller reads), or deferred to
 // the writer (io/vtk.hpp), one at a time, for a snapshot written at once from a solver that
@@ -180,7 +177,7 @@ point_data snapshot_fields(const Solver& s, field_arrays when = field_arrays::no
   add("det_F", 1, [&s] {
     return s.template project_to_particles<double>([&](index_t q) { return s.point_det_F(q); });
   });
-  if constexpr (has_output_fields<state_type>)
+  if constexpr (ListsOutputFields<state_type>)
     for (const auto& [name, member] : state_type::output_fields()) {
       const auto& states = s.point_states();
       const bool unused =
@@ -234,7 +231,7 @@ template <class Solver, class Select>
 double largest_state_field(const Solver& s, std::string_view name, Select in) {
   using state_type = typename Solver::state_type;
   double largest = std::numeric_limits<double>::quiet_NaN();
-  if constexpr (has_output_fields<state_type>)
+  if constexpr (ListsOutputFields<state_type>)
     for (const auto& [field, member] : state_type::output_fields()) {
       if (field != name) continue;
       const auto& states = s.point_states();
@@ -254,7 +251,7 @@ double failed_fraction(const Solver& s, Select in) {
   for (std::size_t q = 0; q < states.size(); ++q) {
     if (!in(q)) continue;
     ++chosen;
-    if constexpr (requires { states[q].failed(); }) failed += states[q].failed() ? 1 : 0;
+    if constexpr (FailingState<std::remove_cvref_t<decltype(states[q])>>) failed += states[q].failed() ? 1 : 0;
   }
   return chosen > 0 ? static_cast<double>(failed) / static_cast<double>(chosen) : 0.0;
 }
@@ -266,12 +263,12 @@ std::vector<std::pair<std::string, double>> state_summary(const Solver& s) {
   using state_type = typename Solver::state_type;
   std::vector<std::pair<std::string, double>> out;
   const auto every = [](std::size_t) { return true; };
-  if constexpr (has_output_fields<state_type>)
+  if constexpr (ListsOutputFields<state_type>)
     for (const auto& [name, member] : state_type::output_fields()) {
       const double v = largest_state_field(s, name, every);
       if (!std::isnan(v)) out.emplace_back("max_" + std::string(name), v);
     }
-  if constexpr (requires(const state_type& st) { st.failed(); })
+  if constexpr (FailingState<state_type>)
     if (!out.empty()) out.emplace_back("failed_fraction", failed_fraction(s, every));
   return out;
 }

@@ -82,7 +82,7 @@ basic_block_lanes<V> kirchhoff_stress_batch(const j2_plasticity<H>& m, const bas
   std::array<double, lanes> dgamma{}, work{};
   typename V::mask_type yields(false);
   for (int k = 0; k < lanes; ++k) {
-    const material_step at{step.dt, step.time, state_temperature(s[k]), step.log_dt};
+    const material_step at{step.dt, step.time, state_temperature(s[k])};
     const auto flow = m.plastic_flow_of(q[k], s[k].equivalent_plastic_strain, at);
     yields[k] = flow.yields;
     dgamma[k] = flow.increment;

@@ -44,7 +44,12 @@
 
 namespace rkpm::material {
 
-// j2_state's members (b_e, F_n, eps_p, W_p) and the point's temperature and damage.
+// j2_state's members (b_e, F_n, eps_p, W_p) and the point's temperature and damage, then three
+// speed caches. The caches are checkpointed with the rest (points.state holds the state's bytes)
+// because none follows from eps_p and T to the bit: T*^m is carried by a series, the flow stress
+// at rest is the return mapping's strain factor times 1 - T*^m, and ln dgamma is where the next
+// Newton iteration starts, which moves its root within the tolerance. Recomputed at a restart,
+// they would change every later plastic step of the run it continues.
 struct johnson_cook_state {
   block_matrix elastic_left_cauchy_green;  // b_e
   block_matrix previous_deformation;       // F of the last accepted step
@@ -150,6 +155,11 @@ class johnson_cook {
   // Advances s from s.previous_deformation to F (dt from step; the temperature is s's) and
   // returns the Kirchhoff stress.
   RKPM_HOT_INLINE mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step = {}) const {
+    return kirchhoff_stress(F, s, step, std::numeric_limits<double>::quiet_NaN());
+  }
+  // The same with log_dt = ln step.dt given (UpdatesWithStepLog, concepts/material.hpp: the force
+  // loop takes it once per step); NaN: the return mapping takes it. The same bits either way.
+  RKPM_HOT_INLINE mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step, double log_dt) const {
     check_deformation_gradient(F, "material::johnson_cook");
     j2_trial t = j2_trial::of(F, s.elastic_left_cauchy_green, s.previous_deformation, mu_);
     s.previous_deformation = block_matrix::of(F);
@@ -171,7 +181,7 @@ class johnson_cook {
       return mat3::Identity() * (bulk_ * t.volumetric);
     }
     const radial_return_result rr = radial_return(law, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
-                                                  material_step{step.dt, step.time, T, step.log_dt}, s.log_last_increment);
+                                                  material_step{step.dt, step.time, T}, s.log_last_increment, log_dt);
     const double dgamma = rr.increment;
     s.log_last_increment = rr.log_increment;
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);

@@ -50,11 +50,14 @@ namespace detail {
 // log_first_guess, if finite, is the log of an increment near the root (a point's last
 // increment: the plastic rate changes little from one explicit step to the next) where a law on
 // a step curve starts its iteration in x = ln dgamma, if that increment lies in the bracket.
+// log_dt: ln step.dt when the caller has it (UpdatesWithStepLog, concepts/material.hpp), for a
+// law on a step curve; NaN: the law takes it.
 template <Hardening H>
 radial_return_result radial_return(const H& hardening, double q_trial, double three_mu,
                                    double eps_p_n, double tolerance, int max_iterations, double flow_at_start,
                                    const material_step& step = {},
-                                   double log_first_guess = -std::numeric_limits<double>::infinity()) {
+                                   double log_first_guess = -std::numeric_limits<double>::infinity(),
+                                   double log_dt = std::numeric_limits<double>::quiet_NaN()) {
   // Where on the curve an increment dg puts the point (rate dg / dt, the step's temperature).
   const auto at = [&](double dg) {
     if constexpr (hardens_with_state<H>) return flow_point{step.dt > 0.0 ? dg / step.dt : 0.0, step.temperature};
@@ -69,9 +72,9 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
   // (power_law's slope is n sigma / (eps0 + eps_p), which saves a pow per Newton update).
   const auto slope = [&](double dg, double flow) {
     const double eps_p = eps_p_n + dg;
-    if constexpr (requires { hardening.slope(eps_p, flow); })
+    if constexpr (SlopeFromFlow<H>)
       return hardening.slope(eps_p, flow);
-    else if constexpr (requires { hardening.slopes_at_flow(eps_p, at(dg), flow); }) {
+    else if constexpr (SlopesFromFlow<H>) {
       // Both slopes of a rate-dependent law from its flow stress (johnson_cook: no pow).
       const auto [strain_slope, rate_slope] = hardening.slopes_at_flow(eps_p, at(dg), flow);
       return strain_slope + (step.dt > 0.0 ? rate_slope / step.dt : 0.0);
@@ -85,11 +88,11 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
     const double dg = (q_trial - flow_at_start) / (three_mu + hardening.modulus);
     const double r = residual(dg);
     return {dg, 0, r, sigma};
-  } else if constexpr (requires { hardening.along_step(eps_p_n, step.dt, flow_at_start, step.log_dt); }) {
+  } else if constexpr (HardensAlongStep<H>) {
     // The same Newton in x = ln dgamma as the branch below, on the law's own curve along the
     // step (hardening::johnson_cook::at_temperature_t::step_curve): the flow stress and its
     // x-derivative together, ln rate* = x - ln(dt rate0) with no log, one exp per update.
-    const auto curve = hardening.along_step(eps_p_n, step.dt, flow_at_start, step.log_dt);
+    const auto curve = hardening.along_step(eps_p_n, step.dt, flow_at_start, log_dt);
     const double limit = tolerance * q_trial;
     // The upper bound of the branch below, (q_trial - sigma_y(eps_p,n)) / (3 mu), brackets the
     // root with 0 (the flow stress only rises along the step). From it the iterates fall to the
@@ -140,7 +143,7 @@ radial_return_result radial_return(const H& hardening, double q_trial, double th
       p = curve(dg, x);
       r = q_trial - three_mu * dg - p.flow;
     }
-  } else if constexpr (requires(const flow_point& p) { hardening.rate_slope(eps_p_n, p); }) {
+  } else if constexpr (RateDependentHardening<H>) {
     // A rate-dependent law (Johnson-Cook, docs/method.md (28a)): Newton in x = ln dgamma. The
     // flow stress rises with ln(rate) = x - ln dt and, for eps_p^n with n <= 1 or any
     // x-convex law, r(x) = q_trial - 3 mu e^x - sigma_y is concave and decreasing in x, so from

@@ -113,7 +113,7 @@ class zerilli_armstrong {
       return hencky_stress(t.frame, t.volumetric, t.dev, bulk_, mu_);
     }
     const radial_return_result rr = radial_return(flow_, t.q, 3.0 * mu_, eps_p, tolerance_, max_iterations_, yield,
-                                                  material_step{step.dt, step.time, T, step.log_dt});
+                                                  material_step{step.dt, step.time, T});
     const double dgamma = rr.increment;
     s.elastic_left_cauchy_green = t.return_by(dgamma, 3.0 * mu_);
     const double rate = step.dt > 0.0 ? dgamma / step.dt : 0.0;

@@ -86,14 +86,6 @@ inline crack_set cracks_on(const background_mesh& cells, const std::vector<cell_
   return crack_set(std::move(segments));
 }
 
-// A material whose points break: its state says whether it has failed, and across which normal
-// (in the current configuration).
-template <class State>
-concept breaking_state = requires(const State& s) {
-  { s.failed() } -> std::convertible_to<bool>;
-  { s.crack_normal } -> std::convertible_to<vec2>;
-};
-
 // The pieces of a model: particles are joined when a quadrature point's row holds both (they
 // interact through the forces), so a piece is a connected set of particles; a particle that no
 // point's row holds is a piece by itself (a free particle).

@@ -63,10 +63,10 @@ inline double quadrature_point_count(std::string_view rule, index_t cells, index
   boost::hana::for_each(policies::all_quadratures, [&](auto t) {
     using Q = typename decltype(t)::type;
     if (Q::name != rule) return;
-    if constexpr (requires { Q::points_per_cell; })
-      points = double(Q::points_per_cell) * double(cells);
-    else if constexpr (requires { Q::stabilization; })
+    if constexpr (NodalRule<Q>)
       points = Q::stabilization > 0.0 ? 4.0 * double(cells) : double(nodes);
+    else
+      points = double(Q::points_per_cell) * double(cells);
   });
   if (points < 0.0) fail("unknown quadrature '{}'; the choices are {}", rule, fmt::join(policy_names(policies::all_quadratures), ", "));
   return points;

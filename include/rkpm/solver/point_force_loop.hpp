@@ -20,6 +20,7 @@ void point_materials<G, M, V>::internal_force(const discrete_model& m, const mat
                                            step_context where) {
   const point_traversal& tr = m.traversal;
   tile_.assign(tr.tiles(), tile_summary{});
+  // ln dt once for every point, for a law that takes it (UpdatesWithStepLog, concepts/material.hpp).
   const double log_dt = where.dt > 0.0 ? std::log(where.dt) : std::numeric_limits<double>::quiet_NaN();
   const auto point = [&](index_t t, index_t q, const point_gradient& g, mat2& S, double& hoop) {
     tile_summary& tile = tile_[t];  // its points are visited in order by one thread
@@ -34,7 +35,7 @@ void point_materials<G, M, V>::internal_force(const discrete_model& m, const mat
     mat3 tau;
     try {
       tau = material_update(material.at_point(q), F, state_[q],
-                            material_step{where.dt, where.time, state_temperature(state_[q]), log_dt});
+                            material_step{where.dt, where.time, state_temperature(state_[q])}, log_dt);
     } catch (const std::exception& ex) {
       tile.fail(q, failure::material, J);
 #pragma omp critical(rkpm_material_error)
@@ -51,7 +52,7 @@ void point_materials<G, M, V>::internal_force(const discrete_model& m, const mat
   if constexpr (batched) {
     assemble_point_batches<G, lanes_of<V>>(
         m, d, f_int, [&](index_t t, index_t q0, int n, const point_gradient* g, mat2* S, double* hoop) {
-          if (n < lanes_of<V> || !batch_update(m, material, t, q0, g, S, hoop, where, log_dt))
+          if (n < lanes_of<V> || !batch_update(m, material, t, q0, g, S, hoop, where))
             for (int k = 0; k < n; ++k) point(t, q0 + k, g[k], S[k], hoop[k]);
         });
   } else {
@@ -71,7 +72,7 @@ void point_materials<G, M, V>::internal_force(const discrete_model& m, const mat
 template <Geometry G, Material M, class V>
 bool point_materials<G, M, V>::batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t,
                                          index_t q0, const point_gradient* g, mat2* S, double* hoop,
-                                         step_context where, double log_dt) {
+                                         step_context where) {
   // F relative to the current reference, and the total F the material takes (79).
   constexpr int lanes = lanes_of<V>;
   std::array<mat3, lanes> F;
@@ -88,7 +89,7 @@ bool point_materials<G, M, V>::batch_update(const discrete_model& m, const mater
   basic_block_lanes<V> tau;
   try {
     tau = kirchhoff_stress_batch(material.at_point(q0), F_lanes, &state_[q0],
-                                           material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN(), log_dt});
+                                           material_step{where.dt, where.time, std::numeric_limits<double>::quiet_NaN()});
   } catch (const std::exception&) {
     return false;
   }

@@ -46,23 +46,11 @@ template <Geometry G, Material M, class V = simd_double>
 class point_materials {
  public:
   using state_type = typename M::state_type;
-  // The state holds the F of its last update (material/j2_plasticity.hpp): no second copy.
-  static constexpr bool state_records_F = requires(const state_type& s) {
-    { s.previous_deformation } -> std::convertible_to<block_matrix>;
-  };
-  // The material gives the stress again from F and its state (concepts/material.hpp): no
-  // stress stored per point.
-  static constexpr bool stress_recomputed = requires(const M& m, const mat3& F, const state_type& s) {
-    { m.current_kirchhoff_stress(F, s) } -> std::same_as<mat3>;
-  };
-  // The material has a batched update (material/j2_batch.hpp; found by argument-dependent
-  // lookup, so a material of another namespace can offer one, with updates_in_lanes(m) saying
-  // for which of its bodies): the force loop takes lanes_of<V> points at a time.
-  static constexpr bool batched =
-      requires(const M& m, const basic_block_lanes<V>& F, state_type* s, const material_step& step) {
-        { kirchhoff_stress_batch(m, F, s, step) } -> std::same_as<basic_block_lanes<V>>;
-        { updates_in_lanes(m) } -> std::same_as<bool>;
-      } && state_records_F && stress_recomputed;
+  // The optional protocols of concepts/material.hpp: no F stored per point when the state keeps
+  // it, no stress when the material recomputes it, lanes_of<V> points at a time where it can.
+  static constexpr bool state_records_F = RecordsDeformation<state_type>;
+  static constexpr bool stress_recomputed = RecomputesStress<M>;
+  static constexpr bool batched = UpdatesInLanes<M, basic_block_lanes<V>> && state_records_F && stress_recomputed;
 
   point_materials() = default;
   point_materials(const discrete_model& m, const materials_by_body<M>& material)
@@ -191,7 +179,7 @@ class point_materials {
   // by one (updates_in_lanes), or a return that failed; the caller
   // then updates the points one by one, which reports the first failure as always.
   bool batch_update(const discrete_model& m, const materials_by_body<M>& material, index_t t, index_t q0,
-                    const point_gradient* g, mat2* S, double* hoop, step_context where, double log_dt);
+                    const point_gradient* g, mat2* S, double* hoop, step_context where);
 
   const block_matrix& deformation_block(index_t q) const {
     if constexpr (state_records_F) return state_[q].previous_deformation;

@@ -57,7 +57,7 @@ std::vector<vec2> explicit_solver<G, M, Ct>::particle_displacements() const {
 // through its centroid normal to the first failed point's crack normal.
 template <Geometry G, Material M, Contact Ct>
 bool explicit_solver<G, M, Ct>::grow_cracks() {
-  if constexpr (!breaking_state<state_type>) {
+  if constexpr (!BreakingState<state_type>) {
     return false;
   } else {
     std::vector<std::pair<index_t, vec2>> failed;  // allocates only when a cell is to be cut

@@ -161,7 +161,7 @@ class heat_coupling : public step_companion<Solver> {
 
   // (101): every point at the field's temperature, when the material has one.
   void write_temperatures(Solver& s) const {
-    if constexpr (requires(typename Solver::state_type& st) { st.temperature = 0.0; })
+    if constexpr (TemperatureState<typename Solver::state_type>)
       s.set_point_temperatures([&](index_t q) { return heat_.temperature_at_point(q); });
   }
 
@@ -169,8 +169,8 @@ class heat_coupling : public step_companion<Solver> {
   // each boundary edge whose two ends touch the same tool, in the current configuration, times
   // omega (16): the body's contact length, without the sides at its corners.
   void contact_heat(const Solver& s, double dt) {
-    if constexpr (requires { s.contact().active_pairs(); }) tool_contact_heat(s, dt);
-    if constexpr (requires { s.contact().bodies().active_pairs(); }) body_contact_heat(s, dt);
+    if constexpr (ReportsToolPairs<typename Solver::contact_type>) tool_contact_heat(s, dt);
+    if constexpr (ReportsBodyPairs<typename Solver::contact_type>) body_contact_heat(s, dt);
   }
 
   // A_J of (100): half of each boundary edge whose two ends carry the same contact mark

@@ -68,7 +68,7 @@ void check_lanes(const j2_plasticity<H>& m, const std::array<int, rkpm::lanes_of
   for (int n = 1; n <= 20; ++n) {
     std::array<mat3, lanes> F;
     for (int k = 0; k < lanes; ++k) F[k] = deformation(kinds[k], k, n);
-    const material_step step{1e-7, 1e-7 * n, std::numeric_limits<double>::quiet_NaN(), std::log(1e-7)};
+    const material_step step{1e-7, 1e-7 * n, std::numeric_limits<double>::quiet_NaN()};
     const rkpm::basic_block_lanes<V> tau = rkpm::material::kirchhoff_stress_batch(
         m, rkpm::gather_block<V>([&](int k) { return block_matrix::of(F[k]); }), batch.data(), step);
     for (int k = 0; k < lanes; ++k) {

@@ -385,4 +385,23 @@ TEST_CASE("johnson_cook::set_temperature: a point at a conducted temperature is 
   CHECK(s.flow_stress_at_rest < 0.8 * cold);  // (1 - T*^m) with T* = 0.57
 }
 
+TEST_CASE("johnson_cook: ln dt from the force loop (UpdatesWithStepLog) or taken by the law, the same bits") {
+  const mat::johnson_cook jc(copper, copper_flow, mat::johnson_cook_heating{383.0, 0.9, 294.0});
+  static_assert(rkpm::UpdatesWithStepLog<mat::johnson_cook>);
+  const double dt = 1e-7;
+  auto given = jc.initial_state(), taken = given;
+  int yielded = 0;
+  for (int n = 1; n <= 300; ++n) {
+    const double e = 2e-4 * n;
+    const mat3 F = diagonal(std::exp(e), std::exp(-0.5 * e), std::exp(-0.5 * e));
+    const double before = given.equivalent_plastic_strain;
+    const mat3 a = rkpm::material_update(jc, F, given, {dt, n * dt, given.temperature}, std::log(dt));
+    const mat3 b = jc.kirchhoff_stress(F, taken, {dt, n * dt, taken.temperature});
+    yielded += given.equivalent_plastic_strain > before;
+    REQUIRE(a == b);  // equal values, neither NaN nor a signed zero in play: the same bits
+    REQUIRE(given.log_last_increment == taken.log_last_increment);
+  }
+  CHECK(yielded > 200);
+}
+
 }  // namespace test_unit_material_johnson_cook

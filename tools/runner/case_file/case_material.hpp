@@ -149,6 +149,12 @@ class basic_material_type {
     }
     return j2_.kirchhoff_stress(F, s, step);
   }
+  // With ln dt from the force loop (UpdatesWithStepLog, concepts/material.hpp), for Johnson-Cook.
+  mat3 kirchhoff_stress(const mat3& F, state_type& s, const material_step& step, double log_dt) const {
+    if constexpr (holds_johnson_cook)
+      if (johnson_cook_) return johnson_cook_->kirchhoff_stress(F, s, step, log_dt);
+    return kirchhoff_stress(F, s, step);
+  }
   mat3 current_kirchhoff_stress(const mat3& F, const state_type& s) const {
     if constexpr (holds_johnson_cook) {
       if (johnson_cook_) return johnson_cook_->current_kirchhoff_stress(F, s);
