@@ -20,8 +20,9 @@
 
 namespace rkpm {
 
-// T: double, or a SIMD vector of doubles holding one entry of several points (core/simd.hpp),
-// which the batched material update (material/j2_batch.hpp) computes with the same formulas.
+// T: double, or a SIMD vector of doubles holding one entry of several points (core/simd.hpp):
+// the formulas written once for a number type (material/hencky.hpp, material/j2_plasticity.hpp,
+// solver/point_force_terms.hpp) take it for one point or for the lanes of the batched update.
 template <class T>
 struct basic_block_matrix {
   T xx = T(1.0), xy = T(0.0), yx = T(0.0), yy = T(1.0), zz = T(1.0);  // the identity by default

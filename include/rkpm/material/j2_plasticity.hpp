@@ -17,7 +17,9 @@
 // trapezoidal rule, which is exact for linear hardening.
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <string_view>
 
@@ -26,6 +28,7 @@
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/hot_inline.hpp>
 #include <rkpm/core/joined_name.hpp>
+#include <rkpm/core/simd.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/material/elastic_constants.hpp>
 #include <rkpm/material/hardening.hpp>
@@ -62,34 +65,64 @@ double plastic_work_increment(const H& h, double eps_p, double dgamma, double fl
     return 0.5 * (flow_from + flow_to) * dgamma;
 }
 
-// The elastic predictor (25)-(27) of one step from (F_n, b_e,n) to F and the radial return
-// (30)-(31) of an increment dgamma: shared by j2_plasticity and johnson_cook (johnson_cook.hpp).
-struct j2_trial {
-  block_matrix b;         // b_e^trial = f b_e,n f^T
-  principal_frame frame;  // its principal frame
-  double volumetric;      // theta, the trace of the log strain
-  vec3 dev;               // e^trial (e^e after return_by)
-  double q;               // q^trial, the trial von Mises stress
+// exp(2 eps_i) of the principal elastic strains, by Eigen's array exp of a point's three strains
+// (a packet exp of its own, whose bits std::exp need not share): for the lanes, lane by lane
+// where `only` holds (1 elsewhere), each lane as its point.
+RKPM_HOT_INLINE vec3 squared_stretches(const vec3& eps, bool /*only*/ = true) {
+  return (2.0 * eps).array().exp().matrix();
+}
+template <class V>
+  requires(!std::same_as<V, double>)
+RKPM_HOT_INLINE std::array<V, 3> squared_stretches(const std::array<V, 3>& eps, const typename V::mask_type& only) {
+  std::array<V, 3> squared{V(1.0), V(1.0), V(1.0)};
+  for (int k = 0; k < lanes_of<V>; ++k) {
+    if (!only[k]) continue;
+    const vec3 lane = squared_stretches(vec3(eps[0][k], eps[1][k], eps[2][k]));
+    for (int i = 0; i < 3; ++i) squared[i][k] = lane(i);
+  }
+  return squared;
+}
 
-  RKPM_HOT_INLINE static j2_trial of(const mat3& F, const block_matrix& b_e_n, const block_matrix& F_n, double mu) {
+// The elastic predictor (25)-(27) of one step from (F_n, b_e,n) to F and the radial return
+// (30)-(31) of an increment dgamma: shared by j2_plasticity, its batched update (j2_batch.hpp,
+// T a vector of doubles, one point per lane), johnson_cook and zerilli_armstrong (T = double).
+template <class T>
+struct basic_j2_trial {
+  basic_block_matrix<T> b;         // b_e^trial = f b_e,n f^T
+  basic_principal_frame<T> frame;  // its principal frame
+  T volumetric;                    // theta, the trace of the log strain
+  principal_values<T> dev;         // e^trial (e^e after return_by)
+  T q;                             // q^trial, the trial von Mises stress
+
+  RKPM_HOT_INLINE static basic_j2_trial of(const basic_block_matrix<T>& F, const basic_block_matrix<T>& b_e_n,
+                                           const basic_block_matrix<T>& F_n, double mu) {
     // In block arithmetic (core/block_matrix.hpp): the values of the mat3 products, a third
     // of their cost.
-    const block_matrix f = block_matrix::of(F) * inverse(F_n);
-    const block_matrix b_trial = f * b_e_n * f.transpose();
-    const principal_frame frame = principal_frame::of(b_trial.full());
-    const vec3 eps = principal_log_strains(frame.values);
-    const double volumetric = eps.sum();
-    const vec3 dev = eps - vec3::Constant(volumetric / 3.0);
-    return {b_trial, frame, volumetric, dev, std::sqrt(1.5) * 2.0 * mu * dev.norm()};
+    const basic_block_matrix<T> f = F * inverse(F_n);
+    const basic_block_matrix<T> b_trial = f * b_e_n * f.transpose();
+    const basic_hencky_strains<T> e = basic_hencky_strains<T>::of(b_trial);
+    return {b_trial, e.frame, e.volumetric, e.dev, e.von_mises(mu)};
+  }
+  RKPM_HOT_INLINE static basic_j2_trial of(const mat3& F, const block_matrix& b_e_n, const block_matrix& F_n, double mu)
+    requires std::same_as<T, double>
+  {
+    return of(block_matrix::of(F), b_e_n, F_n, mu);
   }
 
-  // (30)-(31): scales the deviator back by dgamma (three_mu = 3 mu) and returns b_e,n+1.
-  RKPM_HOT_INLINE block_matrix return_by(double dgamma, double three_mu) {
-    dev *= 1.0 - three_mu * dgamma / q;
-    const vec3 eps_e = dev + vec3::Constant(volumetric / 3.0);
-    return block_matrix::of(frame.assemble((2.0 * eps_e).array().exp().matrix()));
+  // (30)-(31): scales the deviator back by dgamma (three_mu = 3 mu) and returns b_e,n+1; for
+  // the lanes, only where `yields` holds (the deviator and the trial b kept elsewhere).
+  RKPM_HOT_INLINE basic_block_matrix<T> return_by(const T& dgamma, double three_mu, const mask_of<T>& yields = true) {
+    const T scale = 1.0 - three_mu * dgamma / q;
+    for (int i = 0; i < 3; ++i) assign_where(yields, dev[i], T(dev[i] * scale));
+    const T third = volumetric / 3.0;
+    const principal_values<T> eps_e{dev[0] + third, dev[1] + third, dev[2] + third};
+    basic_block_matrix<T> b_e = b;
+    assign_where(yields, b_e, frame.assemble_block(squared_stretches(eps_e, yields)));
+    return b_e;
   }
 };
+
+using j2_trial = basic_j2_trial<double>;
 
 template <Hardening H>
 class j2_plasticity {

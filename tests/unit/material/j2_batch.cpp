@@ -1,6 +1,7 @@
 // The batched J2 update (material/j2_batch.hpp) against the point-by-point update it stands for
 // (j2_plasticity::kirchhoff_stress, checked against theory in j2_paths.cpp, j2_shear.cpp and
-// j2_uniaxial.cpp): on lanes that stay elastic, yield, turn rigidly or mix all three, with the
+// j2_uniaxial.cpp), that is the formulas of basic_j2_trial and hencky.hpp at a vector type
+// against the same formulas at double, with the yield checks and returns of the lanes: on lanes that stay elastic, yield, turn rigidly or mix all three, with the
 // linear law's closed-form return and the power law's Newton iteration, every stress entry and
 // every state member must have the scalar update's bits. A failed return must leave every state
 // as it was. At every width users build: the native vector of this build (core/simd.hpp) and
