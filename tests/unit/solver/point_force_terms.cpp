@@ -1,6 +1,7 @@
-// The end of the point rule in lanes (solver/point_force_terms.hpp) against its one-point form
-// (the same header: S = tau F^-T w, the hoop term and the support stretch with Eigen's 2x2
-// arithmetic): every lane's bits, on deformation gradients that stretch,
+// The end of the point rule (solver/point_force_terms.hpp: S = tau F^-T w, the hoop term and the
+// support stretch, written once for a number type) against Eigen's 2x2 arithmetic, whose order
+// the formulas write out: the one-point form (double) must have Eigen's bits, and every lane of
+// the batched form (a vector V) the one-point form's, on deformation gradients that stretch,
 // shear, turn and compress, in both geometries, and a support stretch of 1 at F = I. At every
 // width users build: this build's native vector and 2, 4 and 8 lanes (simd_of<N>, core/simd.hpp,
 // fixed-size vectors that need no AVX2 or AVX-512 to run).
@@ -24,14 +25,15 @@ using rkpm::mat3;
 using rkpm::vec2;
 
 // The same bits, unless Eigen's 2x2 products use fused multiply-adds (a build with -march for a
-// machine with FMA units, RKPM_NATIVE_ARCH), which the lanes' separate products and sums do not:
+// machine with FMA units, RKPM_NATIVE_ARCH), which the written-out products and sums do not:
 // then rounding apart, relative to the size of the terms summed (scale).
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 bool agree(double a, double b, double scale) {
 #ifdef EIGEN_VECTORIZE_FMA
   return std::abs(a - b) <= 1e-14 * scale;
 #else
   (void)scale;
-  return std::memcmp(&a, &b, sizeof a) == 0;
+  return same_bits(a, b);
 #endif
 }
 
@@ -49,6 +51,22 @@ mat3 stress(int n, int k) {
   tau.topLeftCorner<2, 2>() << 3e8 * std::sin(t), -1e8 * std::cos(3.0 * t), -1e8 * std::cos(3.0 * t), -2e8 * std::cos(t);
   tau(2, 2) = 1.5e8 * std::sin(2.0 * t);
   return tau;
+}
+
+// The point rule with Eigen's 2x2 inverse, products and squared norm.
+struct eigen_terms {
+  mat2 Fi, S;
+  double hoop, stretch;
+};
+template <class G>
+eigen_terms eigen_point_rule(const mat3& F, const mat3& tau, double weight, double radius, const vec2& support_inverse) {
+  const mat2 Fi = F.topLeftCorner<2, 2>().inverse();
+  const mat2 S = tau.topLeftCorner<2, 2>() * Fi.transpose() * weight;
+  const double hoop = G::is_axisymmetric ? tau(2, 2) / F(2, 2) * weight / radius : 0.0;
+  const mat2 B = Fi.transpose() * support_inverse.asDiagonal();
+  const double s = B.squaredNorm(), det = B.determinant();
+  const double largest = std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
+  return {Fi, S, hoop, support_inverse.maxCoeff() / largest};
 }
 
 template <class G, class V>
@@ -79,11 +97,19 @@ void check_samples() {
       mat2 S_k;
       double hoop_k;
       const mat2 Fi_k = rkpm::point_forces_of<G>(F[k], tau[k], weight[k], radius[k], S_k, hoop_k);
+      const double stretch_k = rkpm::support_stretch(Fi_k, support_inverse);
+      const eigen_terms eigen = eigen_point_rule<G>(F[k], tau[k], weight[k], radius[k], support_inverse);
+      const double scale = tau[k].cwiseAbs().maxCoeff() * eigen.Fi.cwiseAbs().maxCoeff() * weight[k];
       for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j)
-          CHECK(agree(S[k](i, j), S_k(i, j), tau[k].cwiseAbs().maxCoeff() * Fi_k.cwiseAbs().maxCoeff() * weight[k]));
-      CHECK(agree(hoop[k], hoop_k, std::abs(hoop_k)));
-      CHECK(agree(stretch[k], rkpm::support_stretch(Fi_k, support_inverse), 1.0));
+        for (int j = 0; j < 2; ++j) {
+          CHECK(agree(Fi_k(i, j), eigen.Fi(i, j), 1.0));
+          CHECK(agree(S_k(i, j), eigen.S(i, j), scale));
+          CHECK(same_bits(S[k](i, j), S_k(i, j)));
+        }
+      CHECK(agree(hoop_k, eigen.hoop, std::abs(eigen.hoop)));
+      CHECK(same_bits(hoop[k], hoop_k));
+      CHECK(agree(stretch_k, eigen.stretch, 1.0));
+      CHECK(same_bits(stretch[k], stretch_k));
     }
   }
 }
@@ -91,7 +117,7 @@ void check_samples() {
 // The widths: this build's native vector, and 2, 4 and 8 lanes on any x86-64.
 using widths = std::tuple<rkpm::simd_double, rkpm::simd_of<2>, rkpm::simd_of<4>, rkpm::simd_of<8>>;
 
-TEST_CASE_TEMPLATE_DEFINE("point_force_terms: S, the hoop term and the support stretch of every lane as point by point",
+TEST_CASE_TEMPLATE_DEFINE("point_force_terms: S, the hoop term and the support stretch of a point and of every lane as Eigen's",
                           V, point_force_terms_samples) {
   CAPTURE(rkpm::lanes_of<V>);
   check_samples<rkpm::geometry::axisymmetric, V>();
