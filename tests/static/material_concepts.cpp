@@ -129,6 +129,9 @@ static_assert(rkpm::SlopeFromFlow<h::power_law> && !rkpm::SlopeFromFlow<h::johns
 static_assert(rkpm::RateDependentHardening<h::johnson_cook> && !rkpm::RateDependentHardening<h::voce>);
 static_assert(rkpm::SlopesFromFlow<h::johnson_cook::at_temperature_t> && !rkpm::SlopesFromFlow<h::johnson_cook>);
 static_assert(rkpm::HardensAlongStep<h::johnson_cook::at_temperature_t> && !rkpm::HardensAlongStep<h::johnson_cook>);
+static_assert(rkpm::WorkIntegralFromFlow<h::power_law> && !rkpm::WorkIntegralFromFlow<h::linear>);
+static_assert(rkpm::WorkIntegral<h::linear> && rkpm::WorkIntegral<h::voce> && !rkpm::WorkIntegral<h::johnson_cook>);
+static_assert(rkpm::BoundedBelow<h::voce> && rkpm::BoundedBelow<h::power_law> && !rkpm::BoundedBelow<h::linear>);
 
 // ---- what the concepts cannot state, checked at run time on every shipped law -------------
 // A Material starts with no plastic strain or work, is stress-free at F = I, returns a

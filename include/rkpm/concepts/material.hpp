@@ -218,4 +218,23 @@ concept HardensAlongStep = requires(const H& h, double e, double dt, double flow
   h.along_step(e, dt, flow, log_dt);
 };
 
+// The plastic work of an increment in closed form (plastic_work_increment, material/
+// j2_plasticity.hpp): WorkIntegralFromFlow, `integral(e0, e1, flow0, flow1)` with the flow
+// stresses at both ends known (power_law: no pow), or WorkIntegral, `integral(e0, e1)` (power_law,
+// voce, linear); otherwise the trapezoidal rule.
+template <class H>
+concept WorkIntegralFromFlow = requires(const H& h, double e, double flow) {
+  { h.integral(e, e, flow, flow) } -> std::convertible_to<double>;
+};
+template <class H>
+concept WorkIntegral = requires(const H& h, double e) {
+  { h.integral(e, e) } -> std::convertible_to<double>;
+};
+// BoundedBelow: `lowest_flow_stress()`, a lower bound of the law's flow stress over every state,
+// by which J2 skips the return mapping of a point far inside the yield surface (power_law, voce).
+template <class H>
+concept BoundedBelow = requires(const H& h) {
+  { h.lowest_flow_stress() } -> std::convertible_to<double>;
+};
+
 }  // namespace rkpm

@@ -53,13 +53,9 @@ struct j2_state {
 // run-time choice of law (tools/runner/case_file/case_material.hpp) can hand it to its law.
 template <Hardening H>
 double plastic_work_increment(const H& h, double eps_p, double dgamma, double flow_from, double flow_to) {
-  if constexpr (requires {
-                  { h.integral(eps_p, eps_p, flow_from, flow_to) } -> std::convertible_to<double>;
-                })
+  if constexpr (WorkIntegralFromFlow<H>)
     return h.integral(eps_p, eps_p + dgamma, flow_from, flow_to);
-  else if constexpr (requires {
-                       { h.integral(eps_p, eps_p) } -> std::convertible_to<double>;
-                     })
+  else if constexpr (WorkIntegral<H>)
     return h.integral(eps_p, eps_p + dgamma);
   else
     return 0.5 * (flow_from + flow_to) * dgamma;
@@ -150,7 +146,7 @@ class j2_plasticity {
            max_iterations_);
     mu_ = constants_.shear_modulus();
     bulk_ = constants_.bulk_modulus();
-    if constexpr (requires { hardening_.lowest_flow_stress(); }) lowest_flow_stress_ = hardening_.lowest_flow_stress();
+    if constexpr (BoundedBelow<H>) lowest_flow_stress_ = hardening_.lowest_flow_stress();
   }
 
   state_type initial_state() const { return {}; }
