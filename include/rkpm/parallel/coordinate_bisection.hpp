@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <numeric>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
@@ -106,7 +107,7 @@ partition_costs partition_cost(const shape_table<Dim>& table, const particle_par
   for (index_t I = 0; I < graph.vertices(); ++I)
     for (idx_t k = graph.xadj[I]; k < graph.xadj[I + 1]; ++k)
       if (graph.adjncy[k] > I && p.part[graph.adjncy[k]] != p.part[I]) c.links_cut += graph.edge_weight[k];
-  std::vector<std::vector<char>> ghost(p.parts, std::vector<char>(p.particles(), 0));
+  std::vector<std::pair<stored_index, particle_index>> ghost;  // (part, another part's particle in its points)
   std::vector<stored_index> touched;
   for (index_t q = 0; q < table.points(); ++q) {
     touched.clear();
@@ -115,14 +116,18 @@ partition_costs partition_cost(const shape_table<Dim>& table, const particle_par
     touched.erase(std::ranges::unique(touched).begin(), touched.end());
     if (touched.empty()) continue;
     c.shared_points += static_cast<index_t>(touched.size()) - 1;
-    for (const stored_index r : touched)
-      for (index_t e = table.offset[q]; e < table.offset[q + 1]; ++e)
-        if (p.part[table.neighbor[e]] != r) ghost[r][table.neighbor[e]] = 1;
+    if (touched.size() > 1)
+      for (const stored_index r : touched)
+        for (index_t e = table.offset[q]; e < table.offset[q + 1]; ++e)
+          if (p.part[table.neighbor[e]] != r) ghost.emplace_back(r, table.neighbor[e]);
   }
+  std::ranges::sort(ghost);
+  ghost.erase(std::ranges::unique(ghost).begin(), ghost.end());
+  std::vector<index_t> ghosts(p.parts, 0);
+  for (const auto& [r, I] : ghost) ++ghosts[r];
   std::vector<double> work(p.parts, 0.0);
   for (index_t I = 0; I < p.particles(); ++I) work[p.part[I]] += graph.vertex_weight[I];
-  for (index_t r = 0; r < p.parts; ++r)
-    c.max_ghosts = std::max<index_t>(c.max_ghosts, std::count(ghost[r].begin(), ghost[r].end(), 1));
+  c.max_ghosts = *std::ranges::max_element(ghosts);
   const double mean = std::accumulate(work.begin(), work.end(), 0.0) / static_cast<double>(p.parts);
   c.imbalance = mean > 0.0 ? *std::ranges::max_element(work) / mean : 1.0;
   return c;

@@ -97,6 +97,19 @@ inline shape_table<2> rows_at_particles(const model_layout& l, const neighbor_se
   return t;
 }
 
+// Row I of `a` where `a` has it, else of `b` (tables from rows_at_particles of disjoint sets).
+inline shape_table<2> merged_rows(const shape_table<2>& a, const shape_table<2>& b) {
+  shape_table<2> t;
+  for (index_t I = 0; I < a.points(); ++I) {
+    const shape_table<2>& from = a.offset[I + 1] > a.offset[I] ? a : b;
+    const std::span<const particle_index> row = from.columns(I);
+    t.neighbor.insert(t.neighbor.end(), row.begin(), row.end());
+    t.N.insert(t.N.end(), from.N.begin() + from.offset[I], from.N.begin() + from.offset[I + 1]);
+    t.offset.push_back(static_cast<stored_index>(t.neighbor.size()));
+  }
+  return t;
+}
+
 }  // namespace detail
 
 // A rank's plan and model, as from the whole model (shared_particles and local_model, with
@@ -133,9 +146,10 @@ rank_model rank_model_of(const model_layout& l, const particle_partition& partit
   r.shared = static_cast<index_t>(shared.size());
   r.plan = make_halo_plan(partition, point_rows, rank, &rows, shared);
   // The ghosts' rows too (local_model keeps those whose columns the rank holds).
+  std::vector<char> added(n, 0);
   bool more = false;
-  for (const stored_index I : r.plan.ghosts) more |= !std::exchange(wanted[I], char{1});
-  if (more) rows = detail::rows_at_particles(l, search, wanted);
+  for (const stored_index I : r.plan.ghosts) more |= (added[I] = !wanted[I]) != 0;
+  if (more) rows = detail::merged_rows(rows, detail::rows_at_particles(l, search, added));
 
   const halo_plan& h = r.plan;
   discrete_model& m = r.local;
