@@ -109,11 +109,7 @@ class distributed_solver {
                         [&](const shape_table<2>& rows) { return shared_of(rows, prob); });
     });
     comm.agree();
-    {
-      const neighbor_search<2> search(layout.whole.particles);
-      group_ = std::make_unique<mpi_process_group>(comm, partition, r.plan,
-                                                   search_rows<2>(search, layout.whole.points.position));
-    }
+    group_ = std::make_unique<mpi_process_group>(comm, partition, r.plan, r.point_owner);
     layout = model_layout{};
     group_->forward(r.local.lumped_volume);  // the ghosts' volumes, from their owners
     finish(comm, std::move(r), std::move(prob), options);

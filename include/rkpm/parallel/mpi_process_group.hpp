@@ -68,7 +68,7 @@ class mpi_process_group final : public process_group {
   void guarded(const std::function<void()>& work) override { comm_.guarded(work); }
   void agree() { comm_.agree(); }
 
- private:
+  // `point_owner`: every point's owner (point_owners), when the caller has it.
   mpi_process_group(communicator& comm, const particle_partition& particles, halo_plan plan,
                     const particle_partition& point_owner)
       : comm_(comm),
@@ -82,6 +82,7 @@ class mpi_process_group final : public process_group {
     blocks_ = {p.whole_first, p.whole_size, p.partial};
   }
 
+ private:
   communicator& comm_;
   owned_blocks blocks_;
   std::vector<stored_index> owned_points_;

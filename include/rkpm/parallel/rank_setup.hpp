@@ -27,6 +27,7 @@
 #include <rkpm/concepts/kernel.hpp>
 #include <rkpm/concepts/quadrature.hpp>
 #include <rkpm/discretization/search_rows.hpp>
+#include <rkpm/parallel/global_blocks.hpp>
 #include <rkpm/parallel/halo.hpp>
 #include <rkpm/parallel/local_model.hpp>
 #include <rkpm/solver/discrete_model.hpp>
@@ -120,6 +121,7 @@ struct rank_model {
   halo_plan plan;
   discrete_model local;
   index_t shared = 0;
+  particle_partition point_owner;  // every point's owner (global_blocks.hpp), from the same search
 };
 
 template <class SharedRegion>
@@ -173,6 +175,7 @@ rank_model rank_model_of(const model_layout& l, const particle_partition& partit
   m.at_points = l.evaluate(search, at, {});
   for (particle_index& I : m.at_points.neighbor) I = local[I];
   m.traversal = local_traversal(h, make_point_traversal(point_rows, n));
+  r.point_owner = point_owners(partition, point_rows);
   // V_I = sum_q N_I(X_q) w_q (lumped_volumes) over the rank's points in the whole model's order:
   // every point of an owned particle is here, so its sum is the whole model's.
   m.lumped_volume.assign(h.local_particles(), 0.0);
