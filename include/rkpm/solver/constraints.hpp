@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
@@ -46,6 +47,9 @@ using constraint_factor = Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eige
 template <class Factor>
 class basic_constraint_projector {
  public:
+  // The relative weight eps of (51a): far below any independent row's pivot, far above round-off.
+  static constexpr double dependent_rows_tolerance = 1e-10;
+
   basic_constraint_projector() = default;
 
   // `global_id`: each particle's index in the whole model when this is one rank's part of it
@@ -144,9 +148,24 @@ basic_constraint_projector<Factor>::basic_constraint_projector(std::vector<veloc
     L.setFromTriplets(lambda.begin(), lambda.end());
     A += Eigen::SparseMatrix<double>(L * inverse_mass.asDiagonal() * L.transpose());  // disjoint patterns
   }
+  std::vector<std::pair<index_t, int>> given;
+  for (const auto& c : constraints_) given.emplace_back(c.particle, c.direction);
+  std::ranges::sort(given);
+  if (const auto twice = std::ranges::adjacent_find(given); twice != given.end())
+    fail("two velocity constraints prescribe direction {} of particle {}: give each once", twice->second, twice->first);
   auto llt = std::make_shared<Factor>(A);
-  if (llt->info() != Eigen::Success)
-    fail("the {} velocity constraints are linearly dependent (a particle or direction given twice?)", n);
+  if (llt->info() != Eigen::Success) {
+    // Rows dependent to round-off: particles packed closer than their supports resolve (a layer
+    // squeezed against a tool, re-referenced: docs/method.md section 5.8) see almost the same
+    // neighbours with almost the same values. Their conditions are then one condition, met
+    // already by the others; the factor of A + eps diag(A) gives the minimum-norm projection
+    // onto what the rows can tell apart (51a).
+    Eigen::SparseMatrix<double> regularized = A;
+    for (index_t r = 0; r < n; ++r) regularized.coeffRef(r, r) *= 1.0 + dependent_rows_tolerance;
+    llt = std::make_shared<Factor>(regularized);
+    if (llt->info() != Eigen::Success)
+      fail("the {} velocity constraints cannot be factored: a row of the shape functions is empty or not finite", n);
+  }
   llt_ = std::move(llt);
   rhs_ = Eigen::VectorXd::Zero(n);
   work_ = Eigen::VectorXd::Zero(n);

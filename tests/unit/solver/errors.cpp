@@ -120,4 +120,53 @@ TEST_CASE("the body inverts: the error gives step, time and point") {
 #endif
 }
 
+// Velocity constraints (docs/method.md section 5.7): the same particle and direction twice is an
+// error; rows equal to round-off are one condition, projected through (51a). Here seven rows of
+// particles squeezed into one line (the limit of a layer squeezed against a tool and
+// re-referenced, as the Taylor bar's at 400 m/s): their axis particles have equal rows, and the
+// plain Cholesky factor of Lambda M^-1 Lambda^T fails or divides by round-off.
+TEST_CASE("velocity constraints: a particle twice is an error, rows equal to round-off are one condition") {
+  auto particles = make_grid_particles<2>(vec2(0, 0), vec2(1, 1), Eigen::Vector2i(6, 10), 2.0);
+  const double h = 1.0 / 9.0;
+  for (index_t I = 0; I < particles.size(); ++I)  // rows 0 to 6 onto one line under row 7
+    if (const index_t row = I / 6; row < 7) particles.position[I][1] = 6.0 * h;
+  const neighbor_search<2> search(particles);
+  const auto table = build_shape_table<kernel::cubic_spline, correction::linear>(search, particles.position);
+  std::vector<velocity_constraint> axis;
+  for (index_t row = 0; row < 10; ++row) axis.push_back({6 * row, 0, {}});
+  const std::vector<double> mass(particles.size(), 1.0);
+  const auto residual = [&](const std::vector<vec2>& v) {
+    double worst = 0.0;
+    for (const auto& c : axis) {
+      double lv = 0.0;
+      for (index_t e = table.offset[c.particle]; e < table.offset[c.particle + 1]; ++e)
+        lv += table.N[e] * v[table.neighbor[e]][0];
+      worst = std::max(worst, std::abs(lv));
+    }
+    return worst;
+  };
+  std::vector<vec2> v(particles.size());
+  for (index_t I = 0; I < particles.size(); ++I) v[I] = vec2(std::sin(3.0 * I + 1.0), std::cos(2.0 * I));
+  const std::vector<vec2> given = v;
+  REQUIRE(residual(v) > 0.1);
+  constraint_projector projector(axis, table, mass);
+  projector.apply(0.0, v);
+  CHECK(residual(v) < 1e-6);
+  // A projection in the mass norm: the kinetic energy never grows, however often it is applied.
+  const auto energy = [&](const std::vector<vec2>& w) {
+    double e = 0.0;
+    for (index_t I = 0; I < particles.size(); ++I) e += 0.5 * mass[I] * w[I].squaredNorm();
+    return e;
+  };
+  const double first = energy(v);
+  CHECK(first < energy(given));
+  projector.apply(0.0, v);
+  CHECK(energy(v) <= first);
+  CHECK(residual(v) < 1e-6);
+
+  axis.push_back(axis[2]);
+  CHECK(message_of([&] { constraint_projector twice(axis, table, mass); }).find("give each once") !=
+        std::string::npos);
+}
+
 }  // namespace test_unit_solver_errors
