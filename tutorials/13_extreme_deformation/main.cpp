@@ -17,8 +17,8 @@
 //
 // Usage: tutorial_13_extreme_deformation [output directory] [velocity m/s] [resolution K]
 //                                         [max stretch] [end time s]
-//        (defaults: results/13_extreme_deformation, 300, 1, 1.5 and the paper's 80e-6 s; above
-//        about 350 m/s the re-referenced run stops where the impact face meets the axis,
+//        (defaults: results/13_extreme_deformation, 300, 1, 1.5 and the paper's 80e-6 s; much
+//        above 400 m/s the re-referenced run stops where the impact face meets the axis,
 //        docs/method.md section 5.8)
 
 #include <chrono>
