@@ -14,7 +14,11 @@
 //  - a run continued from a checkpoint written while the crack grows is the uninterrupted run, bit
 //    for bit (the cuts are in the checkpoint, the model rebuilt from them);
 //  - a particle that cracks cut off alone becomes a free particle (its own row, its own volume),
-//    not a singular moment matrix.
+//    not a singular moment matrix;
+//  - a Johnson-Cook bar whose halves are thrown apart, with damage that opens cracks (32f), fails
+//    in tension at the middle and breaks in two, with its total momentum kept to round-off; with
+//    the damage alone (no opens_cracks) its failed points carry no tension but the kernels still
+//    join the halves: one piece, and no cell cut.
 
 #include <doctest/doctest.h>
 
@@ -22,6 +26,7 @@
 #include <filesystem>
 #include <vector>
 
+#include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/material/rankine_fracture.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 #include <rkpm/solver/make_model.hpp>
@@ -266,6 +271,79 @@ TEST_CASE("fracture: a particle cut off alone by cracks is a free particle") {
   CHECK(m.at_particles.N[0] == 1.0);
   CHECK(m.lumped_volume[0] == doctest::Approx(particles.volume[0]));
   CHECK(crack_fragments(m, lumped_masses(m, 1.0)).pieces == 2);
+}
+
+namespace {
+
+using ductile = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
+                       material::johnson_cook, contact::none>;
+
+struct pulled_bar {
+  index_t pieces = 0;
+  index_t cuts = 0;
+  index_t failed = 0;                   // failed points at the end
+  double worst_total_momentum = 0.0;    // max |P(t) - P(0)| over the steps / (m V)
+  double largest_mass_fraction = 0.0;   // the largest piece's mass / the bar's
+};
+
+// A steel-like bar, as long as the brittle one and two cells thick, its halves thrown apart at V:
+// the jump flows plastically and necks at the middle until the failure strain (D1 = 0.1, eps_f
+// constant) is reached there, in tension.
+pulled_bar pull_johnson_cook_bar(bool opens_cracks) {
+  constexpr double steel_V = 50.0, h = 0.5e-3, thickness = 2.0 * h;
+  const Eigen::Vector2i n(static_cast<int>(std::lround(L / h)) + 1, static_cast<int>(std::lround(thickness / h)) + 1);
+  const vec2 lo(0.0, 0.0), hi(L, thickness);
+  material::johnson_cook_damage damage{0.1, 0.0, 0.0, 0.0, 0.0};
+  damage.opens_cracks = opens_cracks;
+  problem_for<ductile> p{
+      .particles = make_grid_particles<2>(lo, hi, n, 2.0),
+      .mesh = make_grid_mesh(lo, hi, n),
+      .material = material::johnson_cook({200e9, 0.3, 7800.0},
+                                         material::hardening::johnson_cook{300e6, 100e6, 0.3, 0.0, 1.0, 1.0, 294.0, 1800.0},
+                                         material::johnson_cook_heating{460.0}, damage),
+      .contact = {}};
+  p.initial_particle_velocity = [](index_t, const vec2& X) { return vec2(X[0] <= 0.5 * L + 1e-9 ? -steel_V : steel_V, 0.0); };
+  run_options o;
+  o.end_time = 8e-6;
+  auto s = make_solver<ductile>(std::move(p), o);
+  double m = 0.0;
+  for (double mI : s.mass()) m += mI;
+  const auto total = [&] {
+    vec2 P = vec2::Zero();
+    for (index_t I = 0; I < s.model().particle_count(); ++I) P += s.mass()[I] * s.coefficient_velocities()[I];
+    return P;
+  };
+  const vec2 P0 = total();
+  pulled_bar out;
+  while (s.before_end()) {
+    s.step_to_end();
+    out.worst_total_momentum = std::max(out.worst_total_momentum, (total() - P0).norm() / (m * steel_V));
+  }
+  const fragment_count pieces = s.fragments();
+  out.pieces = pieces.pieces;
+  out.largest_mass_fraction = pieces.largest_mass / m;
+  out.cuts = static_cast<index_t>(s.cracks().size());
+  for (const auto& state : s.point_states()) out.failed += state.failed() ? 1 : 0;
+  MESSAGE("Johnson-Cook bar, opens_cracks " << opens_cracks << ": " << out.failed << " failed points, " << out.cuts
+                                            << " cells cut, " << out.pieces << " pieces (the largest "
+                                            << out.largest_mass_fraction << " of the mass), momentum drift "
+                                            << out.worst_total_momentum << ", " << s.steps() << " steps");
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("fracture: a Johnson-Cook bar pulled apart breaks in two only when its damage opens cracks") {
+  const pulled_bar opened = pull_johnson_cook_bar(true);
+  CHECK(opened.failed > 0);
+  CHECK(opened.cuts > 0);
+  CHECK(opened.pieces == 2);
+  CHECK(opened.largest_mass_fraction < 0.75);
+  CHECK(opened.worst_total_momentum < 1e-12);
+  const pulled_bar joined = pull_johnson_cook_bar(false);
+  CHECK(joined.failed > 0);
+  CHECK(joined.cuts == 0);
+  CHECK(joined.pieces == 1);
 }
 
 }  // namespace test_numeric_fracture

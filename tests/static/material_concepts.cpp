@@ -121,7 +121,9 @@ static_assert(rkpm::RecomputesStress<m::j2_plasticity<h::linear>> && rkpm::Recom
 static_assert(rkpm::RecordsDeformation<m::j2_state> && rkpm::RecordsDeformation<m::johnson_cook_state>);
 static_assert(rkpm::UpdatesInLanes<m::j2_plasticity<h::voce>, rkpm::basic_block_lanes<rkpm::simd_of<2>>>);
 static_assert(!rkpm::UpdatesInLanes<m::johnson_cook, rkpm::basic_block_lanes<rkpm::simd_of<2>>>);
-static_assert(rkpm::FailingState<m::johnson_cook_state> && !rkpm::BreakingState<m::johnson_cook_state>);
+static_assert(rkpm::FailingState<m::johnson_cook_state> && rkpm::BreakingState<m::johnson_cook_state>);
+// Johnson-Cook's failed points break only when its damage opens cracks; Rankine's always do.
+static_assert(rkpm::OpensCracks<m::johnson_cook> && !rkpm::OpensCracks<m::rankine_fracture>);
 static_assert(rkpm::BreakingState<m::rankine_fracture::state_type>);
 static_assert(rkpm::TemperatureState<m::johnson_cook_state> && !rkpm::TemperatureState<m::j2_state>);
 static_assert(rkpm::ListsOutputFields<m::johnson_cook_state> && !rkpm::ListsOutputFields<m::j2_state>);

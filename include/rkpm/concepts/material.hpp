@@ -14,7 +14,7 @@
 // Optional protocols, each a named concept below that the solver checks: RecomputesStress (no
 // stress stored per point), RecordsDeformation (no F stored per point), UpdatesWithStepLog (ln dt
 // taken once per step), UpdatesInLanes (several points at once), FailingState, BreakingState,
-// TemperatureState and ListsOutputFields (what a state may say of its point).
+// TemperatureState and ListsOutputFields (what a state may say of its point), OpensCracks.
 //
 // Hardening: the flow stress sigma_y in Pa and its slope d sigma_y / d eps_p, for J2 return
 // mappings, either of eps_p alone (`flow_stress(e)`, `slope(e)`: linear, power, Voce) or of eps_p
@@ -140,10 +140,18 @@ concept TemperatureState = requires(State& s) {
 
 // Optional: a FailingState whose failure is a crack, with its `crack_normal` in the current
 // configuration (zero for a hoop crack); the solver then cuts the failed points' cells
-// (solver/crack_growth.hpp). Offered by rankine_fracture's state.
+// (solver/crack_growth.hpp). Offered by rankine_fracture's state and johnson_cook's.
 template <class State>
 concept BreakingState = FailingState<State> && requires(const State& s) {
   { s.crack_normal } -> std::convertible_to<vec2>;
+};
+// Optional: `opens_cracks()`, whether this material's failed points break (a law whose failure
+// cuts cells only when asked, johnson_cook's damage with opens_cracks); without it every
+// failed point of a BreakingState breaks. The solver looks for failed points only when one of
+// its materials opens cracks (explicit_solver::cracks_can_grow).
+template <class M>
+concept OpensCracks = requires(const M& m) {
+  { m.opens_cracks() } -> std::convertible_to<bool>;
 };
 // Optional: `static constexpr auto output_fields()`, pairs {name, &State::member} of extra
 // per-point scalars that snapshots and summaries write (io/solver_output.hpp), e.g.

@@ -21,4 +21,14 @@ using vec2 = Eigen::Vector2d;
 using mat2 = Eigen::Matrix2d;
 using mat3 = Eigen::Matrix3d;
 
+// A vec2 kept as two doubles, for a per-point state: trivially copyable (a state is checkpointed
+// as its bytes) and 8-byte aligned (no padding after the state's doubles); read back as a vec2.
+struct packed_vec2 {
+  double x = 0.0, y = 0.0;
+
+  packed_vec2() = default;
+  packed_vec2(const vec2& v) : x(v[0]), y(v[1]) {}
+  operator vec2() const { return {x, y}; }
+};
+
 }  // namespace rkpm

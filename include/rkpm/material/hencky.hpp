@@ -11,6 +11,7 @@
 // construction. principal_frame, hencky_strains and hencky_stress are the one-point forms.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <concepts>
@@ -87,6 +88,16 @@ struct basic_principal_frame {
 };
 
 using principal_frame = basic_principal_frame<double>;
+
+// The first in-plane principal direction n1 = (cos theta, sin theta), theta in (-90, 90], from
+// the frame's (cos 2 theta, sin 2 theta): the crack normal of the laws that break
+// (rankine_fracture, johnson_cook's damage with opens_cracks).
+inline vec2 principal_direction(const principal_frame& frame) {
+  const double c = std::sqrt(std::max(0.0, 0.5 * (1.0 + frame.cos2)));
+  const double s = std::sqrt(std::max(0.0, 0.5 * (1.0 - frame.cos2)));
+  const vec2 n(c, frame.sin2 < 0.0 ? -s : s);
+  return n / n.norm();
+}
 
 // Principal logarithmic strains eps_i = ln(lambda_i) = ln(lambda_i^2) / 2, by the C library's
 // log lane by lane.

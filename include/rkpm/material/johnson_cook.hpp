@@ -18,6 +18,10 @@
 //     tension the more damaging. A point with D >= 1 has failed: from then on it carries no
 //     deviatoric stress and no tension, tau = K theta 1 when theta = ln J < 0 and 0 otherwise
 //     (32d). eps_f <= 0 (possible with D1 < 0) fails the point at its next plastic step.
+//     With johnson_cook_damage::opens_cracks, a point that fails with its largest principal
+//     stress tensile records that principal direction as its crack normal (32f), and the solver
+//     cuts its cell (solver/crack_growth.hpp); one that fails in compression or shear records
+//     none and cuts nothing.
 // The temperature is the state's (the solver passes it back as material_step::temperature);
 // the state starts at the initial temperature. The heat is part of the plastic work that the
 // energy ledger already counts (no new balance term); failure removes stress, which the ledger's
@@ -45,11 +49,12 @@
 namespace rkpm::material {
 
 // j2_state's members (b_e, F_n, eps_p, W_p) and the point's temperature and damage, then three
-// speed caches. The caches are checkpointed with the rest (points.state holds the state's bytes)
-// because none follows from eps_p and T to the bit: T*^m is carried by a series, the flow stress
-// at rest is the return mapping's strain factor times 1 - T*^m, and ln dgamma is where the next
-// Newton iteration starts, which moves its root within the tolerance. Recomputed at a restart,
-// they would change every later plastic step of the run it continues.
+// speed caches and the crack normal. The caches are checkpointed with the rest (points.state
+// holds the state's bytes) because none follows from eps_p and T to the bit: T*^m is carried by
+// a series, the flow stress at rest is the return mapping's strain factor times 1 - T*^m, and
+// ln dgamma is where the next Newton iteration starts, which moves its root within the
+// tolerance. Recomputed at a restart, they would change every later plastic step of the run it
+// continues.
 struct johnson_cook_state {
   block_matrix elastic_left_cauchy_green;  // b_e
   block_matrix previous_deformation;       // F of the last accepted step
@@ -65,6 +70,10 @@ struct johnson_cook_state {
   // T*^m at T (hardening::johnson_cook::homologous_power), carried from step to step by a short
   // series instead of a pow (homologous_power_after).
   double homologous_power = 0.0;
+  // Unit normal of the crack in the current configuration, (32f): the direction of the largest
+  // principal stress at the update where the point failed, when that stress was tensile, in
+  // plane, and the damage opens cracks; zero otherwise.
+  packed_vec2 crack_normal;
 
   bool failed() const { return damage >= 1.0; }
   // The snapshot fields (io/solver_output.hpp).
@@ -81,9 +90,10 @@ struct johnson_cook_heating {
   double initial_temperature = std::numeric_limits<double>::quiet_NaN();  // K; NaN: the room temperature
 };
 
-// The failure strain (32c).
+// The failure strain (32c), and whether a failed point opens a crack (32f).
 struct johnson_cook_damage {
   double D1, D2, D3, D4, D5;
+  bool opens_cracks = false;
 
   // eps_f at the triaxiality sigma* (positive in tension), the rate factor's ln max(rate*, 1) and T*.
   double failure_strain(double triaxiality, double log_rate, double homologous) const {
@@ -206,6 +216,7 @@ class johnson_cook {
       const double eps_f = damage_->failure_strain(triaxiality, log_rate, flow_.homologous_temperature(T));
       s.damage = eps_f > 0.0 ? s.damage + dgamma / eps_f : std::max(1.0, s.damage);  // (32b)
       if (s.failed()) {
+        if (damage_->opens_cracks) s.crack_normal = crack_normal_at_failure(t);
         s.elastic_left_cauchy_green = isotropic(t.volumetric);
         return failed_stress(t.volumetric);
       }
@@ -235,6 +246,9 @@ class johnson_cook {
   const flow_type& flow() const { return flow_; }
   const johnson_cook_heating& heating() const { return heating_; }
   const std::optional<johnson_cook_damage>& damage() const { return damage_; }
+  // Whether failed points open cracks (OpensCracks, concepts/material.hpp): the solver looks
+  // for failed points only then.
+  bool opens_cracks() const { return damage_ && damage_->opens_cracks; }
   // K per J/m^3 of plastic work: beta / (rho0 c_p).
   double heat_per_work() const { return heat_per_work_; }
 
@@ -242,6 +256,14 @@ class johnson_cook {
   // (32d): pressure in compression only.
   mat3 failed_stress(double volumetric) const {
     return volumetric < 0.0 ? mat3(mat3::Identity() * (bulk_ * volumetric)) : mat3(mat3::Zero());
+  }
+  // (32f): the in-plane direction of the largest principal stress of the returned trial t (the
+  // stress the point carried as it failed, tau_i = K theta + 2 mu e_i, e_0 >= e_1 in plane),
+  // when it is tensile and larger than the out-of-plane one; zero otherwise.
+  vec2 crack_normal_at_failure(const j2_trial& t) const {
+    const double in_plane = bulk_ * t.volumetric + 2.0 * mu_ * t.dev[0];
+    const double out_of_plane = bulk_ * t.volumetric + 2.0 * mu_ * t.dev[2];
+    return in_plane > 0.0 && in_plane >= out_of_plane ? principal_direction(t.frame) : vec2::Zero();
   }
   // b_e with the volume change theta and no deviator: exp(2 theta / 3) 1.
   static block_matrix isotropic(double volumetric) {

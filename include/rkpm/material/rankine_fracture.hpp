@@ -120,7 +120,7 @@ class rankine_fracture {
       s.damage = damage_at(kappa);
       s.fracture_work = dissipation_at(kappa);
       s.plastic_work = s.fracture_work;
-      if (starts) s.crack_normal = effective(0) >= effective(2) ? first_direction(frame) : vec2::Zero();
+      if (starts) s.crack_normal = effective(0) >= effective(2) ? principal_direction(frame) : vec2::Zero();
     }
     return degraded(frame, effective, s.damage);
   }
@@ -170,13 +170,6 @@ class rankine_fracture {
     vec3 tau;
     for (int i = 0; i < 3; ++i) tau(i) = effective(i) > 0.0 ? integrity * effective(i) : effective(i);
     return frame.assemble(tau);
-  }
-  // n1 = (cos theta, sin theta) from the frame's (cos 2 theta, sin 2 theta), theta in (-90, 90].
-  static vec2 first_direction(const principal_frame& frame) {
-    const double c = std::sqrt(std::max(0.0, 0.5 * (1.0 + frame.cos2)));
-    const double s = std::sqrt(std::max(0.0, 0.5 * (1.0 - frame.cos2)));
-    const vec2 n(c, frame.sin2 < 0.0 ? -s : s);
-    return n / n.norm();
   }
 
   elastic_constants constants_;

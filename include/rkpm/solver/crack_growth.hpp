@@ -11,7 +11,7 @@
 //   crack_chord      the cut's segment on the cells at their current corners, lengthened past
 //                    the cell's sides so that the cuts of neighbouring cells overlap
 //   cracks_on        every cut's segment, as the crack_set the model builder reads
-//   breaks           whether a material's states tell failure and the crack normal
+//   opens_cracks     whether the failed points of some body's material cut cells
 //   crack_fragments  the pieces the cracks have made: particles joined by a point's row
 
 #include <algorithm>
@@ -20,9 +20,11 @@
 #include <optional>
 #include <vector>
 
+#include <rkpm/concepts/material.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/crack_set.hpp>
+#include <rkpm/solver/body_materials.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm {
@@ -84,6 +86,22 @@ inline crack_set cracks_on(const background_mesh& cells, const std::vector<cell_
   segments.reserve(cuts.size());
   for (const cell_crack& cut : cuts) segments.push_back(crack_chord(cells, cut));
   return crack_set(std::move(segments));
+}
+
+// Whether failed points may cut cells: a state that breaks (BreakingState) and a material that
+// opens cracks in some body, where the material says (OpensCracks); otherwise the solver does
+// not look for failed points at all.
+template <Material M>
+bool opens_cracks(const materials_by_body<M>& materials) {
+  if constexpr (!BreakingState<typename M::state_type>) {
+    return false;
+  } else if constexpr (!OpensCracks<M>) {
+    return true;
+  } else {
+    for (index_t b = 0; b < materials.count(); ++b)
+      if (materials.of_body(b).opens_cracks()) return true;
+    return false;
+  }
 }
 
 // The pieces of a model: particles are joined when a quadrature point's row holds both (they

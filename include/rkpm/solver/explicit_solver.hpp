@@ -107,6 +107,7 @@ class explicit_solver {
   void cut_cells(const std::vector<std::pair<index_t, vec2>>& cells_and_normals);
   // The cells cut by cracks (solver/crack_growth.hpp), and the pieces (a body each until it breaks).
   const std::vector<cell_crack>& cracks() const { return cracks_; }
+  bool cracks_can_grow() const { return opens_cracks(materials_); }  // whether failed points cut cells
   fragment_count fragments() const { return crack_fragments(model_, physical_mass()); }
   // The particles' initial reference positions X_I (the model's until the first re-reference).
   const std::vector<vec2>& initial_positions() const {

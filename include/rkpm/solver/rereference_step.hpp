@@ -60,6 +60,7 @@ bool explicit_solver<G, M, Ct>::grow_cracks() {
   if constexpr (!BreakingState<state_type>) {
     return false;
   } else {
+    if (!cracks_can_grow()) return false;  // no pass over the points (Johnson-Cook without opens_cracks)
     std::vector<std::pair<index_t, vec2>> failed;  // allocates only when a cell is to be cut
     for (index_t q = 0; q < model_.point_count(); ++q) {
       const state_type& s = points_.states()[q];

@@ -299,4 +299,41 @@ TEST_CASE("johnson_cook damage along a path whose triaxiality changes: shear, te
   CHECK(std::abs(r.integral_failure - 0.85 * (1.0 + 0.014 * std::log(rate))) > 0.1);
 }
 
+// (32f): with opens_cracks, a point that fails with its largest principal stress tensile records
+// that principal direction as its crack normal, a point that fails under pressure records none,
+// and without opens_cracks no point records one. Stretched along n at 30 degrees (isochoric, with
+// a superposed volume increase of 1%), and in pure shear under a volume decrease of 2% (the mean
+// stress K ln J = -2.6 GPa, far below the deviator's 2 mu e < 0.5 GPa).
+TEST_CASE("johnson_cook damage that opens cracks: the crack normal is the tensile principal direction") {
+  mat::johnson_cook_damage opening = ductility;
+  opening.opens_cracks = true;
+  const mat::johnson_cook jc(copper, copper_flow, mat::johnson_cook_heating{specific_heat, 0.0}, opening);
+  const mat::johnson_cook closed(copper, copper_flow, mat::johnson_cook_heating{specific_heat, 0.0}, ductility);
+  CHECK(jc.opens_cracks());
+  CHECK(!closed.opens_cracks());
+  const double angle = 0.5235987755982988;  // 30 degrees
+  const rkpm::vec2 n(std::cos(angle), std::sin(angle));
+  mat3 Q = mat3::Identity();
+  Q.topLeftCorner<2, 2>() << n[0], -n[1], n[1], n[0];
+  const auto stretched = [&](int k) {
+    const double a = strain_step * k;  // the equivalent strain of an isochoric stretch (a, -a/2, -a/2)
+    return mat3(std::exp(0.01 / 3.0) * Q * diagonal(std::exp(a), std::exp(-0.5 * a), std::exp(-0.5 * a)) * Q.transpose());
+  };
+  const auto fail_along = [&](const mat::johnson_cook& law, auto F_of_step) {
+    auto s = law.initial_state();
+    for (int k = 1; k <= 4000 && !s.failed(); ++k) law.kirchhoff_stress(F_of_step(k), s, {dt, k * dt, s.temperature});
+    REQUIRE(s.failed());
+    return rkpm::vec2(s.crack_normal);
+  };
+  const rkpm::vec2 normal = fail_along(jc, stretched);
+  CHECK(normal.norm() == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(std::abs(normal.dot(n)) == doctest::Approx(1.0).epsilon(1e-12));
+  // Under pressure with these constants eps_f = 0.05 + 0.8 exp(1.5 x 9) would never be reached:
+  // a constant failure strain there.
+  const mat::johnson_cook pressed(copper, copper_flow, mat::johnson_cook_heating{specific_heat, 0.0},
+                                  mat::johnson_cook_damage{0.3, 0.0, 0.0, 0.0, 0.0, true});
+  CHECK(fail_along(pressed, [](int k) { return pure_shear(k, -0.02); }).norm() == 0.0);
+  CHECK(fail_along(closed, stretched).norm() == 0.0);
+}
+
 }  // namespace test_unit_material_johnson_cook_damage

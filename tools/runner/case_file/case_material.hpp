@@ -8,7 +8,7 @@
 // here. Two states, so that a run keeps per point only what its laws need:
 //   j2_material     J2 and elastic bodies: material::j2_state (96 B per point)
 //   material_type   any law, Johnson-Cook and Zerilli-Armstrong included:
-//                   material::johnson_cook_state (136 B); its J2 points leave temperature and
+//                   material::johnson_cook_state (152 B); its J2 points leave temperature and
 //                   damage NaN (no temperature: the solver passes NaN as before, and the
 //                   snapshots leave out a field that is NaN everywhere, io/solver_output.hpp),
 //                   its Zerilli-Armstrong points damage
@@ -183,6 +183,9 @@ class basic_material_type {
   const material::zerilli_armstrong* zerilli_armstrong() const {
     return zerilli_armstrong_ ? &*zerilli_armstrong_ : nullptr;
   }
+  // Whether failed points open cracks (OpensCracks, concepts/material.hpp): Johnson-Cook's
+  // damage with opens_cracks.
+  bool opens_cracks() const { return johnson_cook_ && johnson_cook_->opens_cracks(); }
   // The J2 material (with a law that never yields for an elastic body).
   const j2_type& j2() const { return j2_; }
 
