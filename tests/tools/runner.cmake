@@ -40,11 +40,11 @@ endforeach()
 
 # Case files (runner/check_case_files.py): cases/*.json against the built-in cases, a restart,
 # bad files, a Gmsh body, several bodies, the energy ledger of summary.json, the Johnson-Cook and
-# Zerilli-Armstrong files and fields given as expressions. One thread, so that the comparisons can ask for equality.
+# Zerilli-Armstrong files, a Johnson-Cook bar that breaks (fracture) and fields given as expressions. One thread, so that the comparisons can ask for equality.
 set(rkpm_case_file_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_case_files.py)
 # The paper's cases are one test each (paper_*), so that they run side by side.
 foreach(mode paper_taylor_bar paper_block_forging paper_wheel_forging paper_override restart errors mesh bodies
-             ledger voce johnson_cook zerilli_armstrong expressions)
+             ledger voce johnson_cook zerilli_armstrong fracture expressions)
   add_test(NAME tools.runner.case_files_${mode}
            COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_case_file_check} ${mode} $<TARGET_FILE:rkpm_run>
                    ${PROJECT_SOURCE_DIR}/cases ${rkpm_runner_work}/case_files)

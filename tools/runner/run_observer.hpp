@@ -33,6 +33,13 @@
 
 namespace rkpm::runner {
 
+// Whether a run rebuilds its model (re-referencing, or cracks that grow, docs/method.md sections
+// 5.8 and 5.12): its energy then shows the remap term.
+template <class Solver>
+bool rebuilds_model(const Solver& s) {
+  return s.options().rereference.enabled() || s.cracks_can_grow();
+}
+
 template <class Case, class Solver>
 class run_observer {
  public:
@@ -176,7 +183,8 @@ class run_observer {
     record_.snapshots.emplace_back(t, vtu.filename().string());
   }
 
-  // history.csv columns: time, the case's measures, tool forces, energies.
+  // history.csv columns: time, the case's measures, tool forces, energies, the fragments when
+  // cracks can grow.
   std::vector<std::string> column_names(const Solver& s) const {
     std::vector<std::string> columns{"time_s"};
     for (const auto& [k, v] : measures_) columns.push_back(k);
@@ -184,9 +192,10 @@ class run_observer {
       columns.push_back(tool.name() + "_force_x_N");
       columns.push_back(tool.name() + "_force_y_N");
     }
-    for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+    for (const auto& [name, value] : io::energy_terms(s.energy(), rebuilds_model(s)))
       columns.emplace_back(name);
     if (s.options().mass_scaling.enabled()) columns.emplace_back("kinetic_to_internal");
+    for (const auto& [name, value] : io::fragment_terms(s)) columns.emplace_back(name);
     for (const auto& companion : s.companions())
       for (const auto& [name, value] : companion->report(s)) columns.push_back(name);
     return columns;
@@ -218,12 +227,13 @@ class run_observer {
       row.push_back(f[0]);
       row.push_back(f[1]);
     }
-    for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+    for (const auto& [name, value] : io::energy_terms(s.energy(), rebuilds_model(s)))
       row.push_back(value);
     if (s.options().mass_scaling.enabled()) {
       row.push_back(s.energy().internal > 0.0 ? s.energy().kinetic / s.energy().internal : 0.0);
       warn_if_dynamic(s);
     }
+    for (const auto& [name, value] : io::fragment_terms(s)) row.push_back(value);
     for (const auto& companion : s.companions())
       for (const auto& [name, value] : companion->report(s)) row.push_back(value);
     history_.row(row);

@@ -114,7 +114,7 @@ inline io::vtu_format snapshot_format(const run_request& request) {
 
 // summary.json's figures of a run that has ended, failed or stopped: sizes, steps, time-step
 // range, timings, the energy ledger, what ran beside the solver, the mass scaling's and the
-// re-references' record, and the material state's extremes.
+// re-references' record, the fragments and the material state's extremes.
 template <class Solver, class Observer>
 void add_run_summary(json& summary, const Solver& s, const Observer& observe, int processes) {
   summary["particles"] = s.model().particle_count();
@@ -132,7 +132,7 @@ void add_run_summary(json& summary, const Solver& s, const Observer& observe, in
   if (!observe.last_checkpoint().empty()) summary["last_checkpoint"] = observe.last_checkpoint().filename().string();
   json& energy = summary["energy"];
   energy = json::object();
-  for (const auto& [name, value] : io::energy_terms(s.energy(), s.options().rereference.enabled()))
+  for (const auto& [name, value] : io::energy_terms(s.energy(), rebuilds_model(s)))
     energy[std::string(name)] = value;
   // What ran beside the solver (a case file's "heat": the heat flows and temperatures at the end).
   for (const auto& companion : s.companions())
@@ -152,7 +152,8 @@ void add_run_summary(json& summary, const Solver& s, const Observer& observe, in
     m["quasi_static"] = !q.left();
     if (q.left()) m["left_quasi_static_at_s"] = q.left_at;
   }
-  if (s.options().rereference.enabled()) {
+  for (const auto& [name, value] : io::fragment_terms(s)) summary[std::string(name)] = value;  // cracks can grow
+  if (rebuilds_model(s)) {
     summary["rereferences"] = s.rereferences();
     summary["rereference_times_s"] = s.rereference_times();
   }

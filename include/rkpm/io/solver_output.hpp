@@ -23,6 +23,9 @@
 //                        the fraction of them that have failed (a state with `failed()`);
 //   state_summary(s)     both over every point, by output name ("max_temperature_K",
 //                        "max_damage", "failed_fraction"), for a run's summary.
+//   fragment_terms(s)    the pieces cracks have made, "fragments" and "largest_fragment_mass_kg"
+//                        (solver/crack_growth.hpp), when the solver's cracks can grow; none
+//                        otherwise (a history's columns stay as they were).
 
 #include <algorithm>
 #include <array>
@@ -271,6 +274,19 @@ std::vector<std::pair<std::string, double>> state_summary(const Solver& s) {
   if constexpr (FailingState<state_type>)
     if (!out.empty()) out.emplace_back("failed_fraction", failed_fraction(s, every));
   return out;
+}
+
+// The pieces and the largest one's mass (kg per metre of depth in plane strain, kg per radian in
+// axisymmetric geometry, as the masses) when s.cracks_can_grow(), else nothing.
+template <class Solver>
+std::vector<named_value> fragment_terms(const Solver& s) {
+  if constexpr (requires { s.cracks_can_grow(); }) {
+    if (!s.cracks_can_grow()) return {};
+    const auto pieces = s.fragments();
+    return {{"fragments", static_cast<double>(pieces.pieces)}, {"largest_fragment_mass_kg", pieces.largest_mass}};
+  } else {
+    return {};
+  }
 }
 
 }  // namespace rkpm::io

@@ -28,6 +28,12 @@
                                                             snapshots (no damage field), the length is the height
                                                             less the lowest point; a bad key stops the run with its
                                                             pointer and fix
+    check_case_files.py fracture RKPM_RUN CASES_DIR WORK_DIR
+                                                            cases/bar_pulled_apart.json: a Johnson-Cook bar whose
+                                                            damage opens cracks breaks in two (history.csv's and
+                                                            summary.json's fragments go from 1 to 2) keeping its
+                                                            momentum; without opens_cracks no fragment columns; a
+                                                            bad opens_cracks stops the run with its pointer
     check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
                                                             has the geometry's mass (kinetic energy 1/2 rho A v^2),
                                                             keeps its symmetry line and stays on the wall's side;
@@ -455,6 +461,55 @@ def johnson_cook(rkpm_run, cases, work):
         print(f"ok  {name}: {r.stderr.strip()}")
 
 
+def fracture(rkpm_run, cases, work):
+    """cases/bar_pulled_apart.json (docs/method.md (32f), section 5.12): the bar's points fail in
+    tension at its middle and cut their cells, so history.csv's fragments go from 1 to 2 and the
+    largest piece's mass from the bar's to about half; summary.json says the same at the end, with
+    the remap term of the rebuilds in its energy; the momentum history stays at its start to
+    round-off. With opens_cracks off, the failed points cut nothing and the outputs have no
+    fragment columns; a value that is not true or false stops the run with its pointer."""
+    path = os.path.join(cases, "bar_pulled_apart.json")
+    out = os.path.join(work, "bar_pulled_apart")
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, path, "--out", out, "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"fracture: the run failed: {r.stderr}")
+    if r.returncode != 0:
+        return
+    s = summary(out)
+    rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+    pieces = [float(row["fragments"]) for row in rows]
+    largest = [float(row["largest_fragment_mass_kg"]) for row in rows]
+    check(pieces[0] == 1.0 and pieces[-1] == 2.0 and all(b >= a for a, b in zip(pieces, pieces[1:])),
+          f"fracture: fragments over time {pieces}")
+    check(0.4 * largest[0] < largest[-1] < 0.75 * largest[0], f"fracture: largest fragment mass {largest[0]} -> {largest[-1]}")
+    check(s.get("fragments") == 2.0 and s.get("largest_fragment_mass_kg") == largest[-1],
+          f"fracture: summary.json fragments {s.get('fragments')}, {s.get('largest_fragment_mass_kg')}")
+    check("remap_J" in s["energy"] and s.get("rereferences", 0) >= 1, f"fracture: summary.json {s['energy']}")
+    momentum = [float(row["momentum_x_N_s"]) for row in rows]
+    scale = largest[0] * 50.0  # the bar's mass times the halves' speed
+    check(max(abs(p - momentum[0]) for p in momentum) <= 1e-12 * scale, f"fracture: momentum {momentum[:2]} ... {momentum[-2:]}")
+    print(f"ok  bar_pulled_apart.json: {s['steps']} steps, fragments {pieces[0]:g} -> {pieces[-1]:g}, largest "
+          f"{largest[-1] / largest[0]:.3f} of the mass, {s['rereferences']} rebuilds")
+
+    joined = os.path.join(work, "bar_joined")
+    shutil.rmtree(joined, ignore_errors=True)
+    r = run([rkpm_run, path, "--out", joined, "--no-plots", "--quiet", "--set",
+             "/bodies/0/material/damage/opens_cracks=false"])
+    check(r.returncode == 0, f"fracture: the run without opens_cracks failed: {r.stderr}")
+    if r.returncode == 0:
+        s = summary(joined)
+        header = open(os.path.join(joined, "history.csv")).readline()
+        check("fragments" not in header and "fragments" not in s, f"fracture: fragments without opens_cracks: {header}")
+        check(s["points"]["failed_fraction"] > 0.0, f"fracture: no point failed without opens_cracks: {s['points']}")
+        print(f"ok  without opens_cracks: failed fraction {s['points']['failed_fraction']:.3f}, no fragment columns")
+
+    r = run([rkpm_run, path, "--out", os.path.join(work, "bar_bad"), "--no-plots", "--quiet", "--set",
+             "/bodies/0/material/damage/opens_cracks=\"yes\""])
+    words = ["/bodies/0/material/damage/opens_cracks", "true or false"]
+    check(r.returncode != 0 and all(w in r.stderr for w in words), f"fracture: a bad opens_cracks: {r.stderr!r}")
+    print(f"ok  bad opens_cracks: {r.stderr.strip()}")
+
+
 def zerilli_armstrong(rkpm_run, cases, work):
     with open(os.path.join(cases, "taylor_copper_za.json")) as f:
         doc = json.load(f)
@@ -584,6 +639,7 @@ def main(argv):
         return exit_status()
     { "restart": restart, "errors": errors, "mesh": mesh, "bodies": bodies,
      "ledger": ledger, "voce": voce, "johnson_cook": johnson_cook, "zerilli_armstrong": zerilli_armstrong,
+     "fracture": fracture,
      "expressions": expressions}[mode](
         rkpm_run, cases, work)
     return exit_status()

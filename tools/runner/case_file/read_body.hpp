@@ -184,12 +184,14 @@ inline void read_johnson_cook(diagnostics& d, const object_reader& r, material_d
   }
   std::optional<material::johnson_cook_damage> damage;
   if (const json* v = r.find("damage")) {
-    object_reader dr(d, *v, r.at("damage"), {"D1", "D2", "D3", "D4", "D5"});
+    object_reader dr(d, *v, r.at("damage"), {"D1", "D2", "D3", "D4", "D5", "opens_cracks"});
     if (dr.valid()) {
       const auto D1 = dr.number("D1", "0.54 (OFHC copper)"), D2 = dr.number("D2", "4.89 (OFHC copper)"),
                  D3 = dr.number("D3", "-3.03 (OFHC copper)"), D4 = dr.number("D4", "0.014 (OFHC copper)"),
                  D5 = dr.number("D5", "1.12 (OFHC copper)");
-      if (D1 && D2 && D3 && D4 && D5) damage = material::johnson_cook_damage{*D1, *D2, *D3, *D4, *D5};
+      // Whether a point that fails in tension cuts its cell (docs/method.md (32f), section 5.12).
+      const bool opens_cracks = dr.boolean_or("opens_cracks", false);
+      if (D1 && D2 && D3 && D4 && D5) damage = material::johnson_cook_damage{*D1, *D2, *D3, *D4, *D5, opens_cracks};
     }
     if (!damage) ok = false;
   }
