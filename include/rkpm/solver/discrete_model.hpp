@@ -14,8 +14,7 @@
 //                        for a rule with variationally consistent integration (vci<Rule>,
 //                        docs/method.md section 3.5); empty: the test gradients are the trial
 //                        gradients. The deformation gradient always uses at_points.grad.
-//   own                  the particles and points this process owns, and its ghost particles
-//                        (core/execution.hpp; one process: all owned, no ghosts)
+//   own                  the particles and points this process owns, and its ghosts (one process: all)
 //   bodies               the bodies: each particle's, cell's and point's, their surfaces
 //                        (discretization/model_bodies.hpp), found once by the builder
 // For a nodal rule (scni, docs/method.md section 3.6) the points are those of the smoothing
@@ -104,17 +103,18 @@ inline void check_body(const particle_set<2>& particles, const background_mesh& 
          particle_volume, cell_area);
 }
 
-// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive. `cracked`: a particle no
-// point's row holds (a free particle, section 3.7), or only negative lobes near a crack's tip,
-// takes its own volume (its mass is kept through rebuilds; the projections read this).
+// Lumped volumes V_I = sum_q N_I(X_q) w_q; each must be positive. `tolerant` (cracks, or a model
+// rebuilt, whose masses are kept and whose V_I only the projections read): a particle no point's
+// row holds (a free particle, section 3.7), or only negative lobes (near a crack's tip, in a
+// layer squeezed thinner than the supports, section 5.8), takes its own volume.
 inline std::vector<double> lumped_volumes(const particle_set<2>& particles, const quadrature_points& points,
-                                          const shape_table<2>& at_points, bool cracked = false) {
+                                          const shape_table<2>& at_points, bool tolerant = false) {
   std::vector<double> volume(particles.size(), 0.0);
   for (index_t q = 0; q < points.size(); ++q)
     for (index_t e = at_points.offset[q]; e < at_points.offset[q + 1]; ++e)
       volume[at_points.neighbor[e]] += at_points.N[e] * points.weight[q];
   for (index_t I = 0; I < particles.size(); ++I)
-    if (cracked && !(volume[I] > 0.0)) volume[I] = particles.volume[I];
+    if (tolerant && !(volume[I] > 0.0)) volume[I] = particles.volume[I];
   for (index_t I = 0; I < particles.size(); ++I)
     if (!(volume[I] > 0.0))
       fail("particle {} at ({:.6g}, {:.6g}) gets a lumped mass of {:.3g} x density: it is covered by "
@@ -143,11 +143,11 @@ inline shape_table<2> with_free_particles(shape_table<2> rows) {
   return out;
 }
 
-// The model on given quadrature points: only this depends on the kernel and the correction,
-// so a program compiles it once per (kernel, correction), whatever rules and geometries it uses.
+// The model on given quadrature points (`rebuilt`: carried, section 5.8): only this depends on the
+// kernel and the correction, so a program compiles it once per (kernel, correction).
 template <Kernel K, Correction C>
 discrete_model build_discrete_model_on(particle_set<2> particles, background_mesh mesh, quadrature_points points,
-                                       double max_condition = default_max_moment_condition) {
+                                       double max_condition = default_max_moment_condition, bool rebuilt = false) {
   discrete_model m;
   m.points = std::move(points);
   const neighbor_search<2> search(particles, &mesh.cracks);
@@ -156,7 +156,7 @@ discrete_model build_discrete_model_on(particle_set<2> particles, background_mes
   m.at_particles = build_shape_table<K, C, 2>(search, particles.position, rk, values_only);
   if (!mesh.cracks.empty()) m.at_particles = with_free_particles(std::move(m.at_particles));
   m.traversal = make_point_traversal(m.at_points, particles.size());
-  m.lumped_volume = lumped_volumes(particles, m.points, m.at_points, !mesh.cracks.empty());
+  m.lumped_volume = lumped_volumes(particles, m.points, m.at_points, rebuilt || !mesh.cracks.empty());
   m.own = ownership::single_process(particles.size(), m.point_count());
   m.particles = std::move(particles);
   m.mesh = std::move(mesh);
@@ -197,8 +197,8 @@ discrete_model build_one_model(particle_set<2> particles, background_mesh mesh, 
                                       max_condition);
   } else {
     quadrature_points points = carried ? *carried : make_quadrature_points<Q, G>(mesh);
-    discrete_model m =
-        build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points), max_condition);
+    discrete_model m = build_discrete_model_on<K, C>(std::move(particles), std::move(mesh), std::move(points),
+                                                     max_condition, carried != nullptr);
     if constexpr (CorrectedRule<Q>)
       m.test_gradient = vci_test_gradients(
           m.points, m.at_points, boundary_integrals<K, C, G>(m.particles, m.mesh, Q::edge_points, max_condition),

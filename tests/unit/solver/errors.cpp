@@ -169,4 +169,29 @@ TEST_CASE("velocity constraints: a particle twice is an error, rows equal to rou
         std::string::npos);
 }
 
+// A lumped volume below zero (docs/method.md section 5.8): in a first model it is an error (the
+// masses come from it); a model rebuilt on carried points keeps its masses and gives such a
+// particle its own volume. Here the points within the corner particle's support are removed, so
+// that no point's row holds it (a layer squeezed thinner than its supports leaves a particle
+// with only negative lobes at the points, the same branch).
+TEST_CASE("a lumped volume below zero: an error in a first model, the particle's own volume in a rebuilt one") {
+  const auto particles = make_grid_particles<2>(vec2(0, 0), vec2(1, 1), Eigen::Vector2i(9, 9), 2.0);
+  const auto mesh = make_grid_mesh(vec2(0, 0), vec2(1, 1), Eigen::Vector2i(9, 9));
+  const quadrature_points all = make_quadrature_points<quadrature::q4, geometry::plane_strain>(mesh);
+  quadrature_points far;
+  for (index_t q = 0; q < all.size(); ++q)
+    if (all.position[q].cwiseAbs().maxCoeff() >= 2.0 / 8.0) {  // the support: 2 spacings
+      far.position.push_back(all.position[q]);
+      far.weight.push_back(all.weight[q]);
+      far.cell.push_back(all.cell[q]);
+    }
+  using K = kernel::cubic_spline;
+  using C = correction::linear;
+  CHECK(message_of([&] { build_discrete_model_on<K, C>(particles, mesh, far); }).find("lumped mass") !=
+        std::string::npos);
+  const discrete_model rebuilt = build_discrete_model_on<K, C>(particles, mesh, far, default_max_moment_condition, true);
+  CHECK(rebuilt.lumped_volume[0] == particles.volume[0]);
+  for (index_t I = 1; I < rebuilt.particle_count(); ++I) CHECK(rebuilt.lumped_volume[I] > 0.0);
+}
+
 }  // namespace test_unit_solver_errors
