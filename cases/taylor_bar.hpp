@@ -5,7 +5,9 @@
 // the final radius of the impact face and the final height. Parameters are SI; results are
 // reported in millimetres, as the paper does.
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +17,7 @@
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/fields.hpp>
 #include <rkpm/solver/problem.hpp>
 
 #include "cases/contact_setup.hpp"
@@ -112,21 +115,35 @@ struct taylor_bar {
   // z: what experiments and other codes report, since the bar lifts off the wall after the
   // impact and the height then exceeds it) and the largest equivalent plastic strain.
   template <class Solver>
-  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
-                                                             const std::vector<vec2>& /*tool_force*/) {
-    const auto x = s.particle_positions();
+  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
+                                                             const std::vector<vec2>& tool_force) {
+    return measure_from(measure_maxima(s), s, p, tool_force);
+  }
+  // The measures' maxima over the solver's own particles and its points: the radius, the
+  // height, minus the lowest z, the plastic strain. On several processes each rank takes its
+  // part's and one maximum combines them (tools/runner/row_maxima.hpp).
+  template <class Solver>
+  static std::array<double, 4> measure_maxima(const Solver& s) {
     const auto& X = s.initial_positions();
-    double radius = 0.0, height = 0.0, lowest = x.empty() ? 0.0 : x[0][1], eps_p = 0.0;
-    for (std::size_t I = 0; I < x.size(); ++I) {
-      if (X[I][1] <= 1e-12) radius = std::max(radius, x[I][0]);
-      height = std::max(height, x[I][1]);
-      lowest = std::min(lowest, x[I][1]);
+    std::array<double, 4> m{0.0, 0.0, -std::numeric_limits<double>::infinity(), 0.0};
+    for (index_t I = s.model().own.particles.begin; I < s.model().own.particles.end; ++I) {
+      const vec2 x = position_at_particle(s.model(), s.coefficients(), I);
+      if (X[I][1] <= 1e-12) m[0] = std::max(m[0], x[0]);
+      m[1] = std::max(m[1], x[1]);
+      m[2] = std::max(m[2], -x[1]);
     }
-    for (const auto& st : s.point_states()) eps_p = std::max(eps_p, st.equivalent_plastic_strain);
+    for (const auto& st : s.point_states()) m[3] = std::max(m[3], st.equivalent_plastic_strain);
+    return m;
+  }
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure_from(const std::array<double, 4>& m, const Solver&,
+                                                                  const parameters&,
+                                                                  const std::vector<vec2>& /*tool_force*/) {
+    const double radius = m[0], height = m[1], lowest = -m[2];
     return {{"radius_mm", radius * 1e3},
             {"height_mm", height * 1e3},
             {"length_mm", (height - lowest) * 1e3},
-            {"max_equivalent_plastic_strain", eps_p}};
+            {"max_equivalent_plastic_strain", m[3]}};
   }
 };
 

@@ -4,9 +4,12 @@
 // over several processes (rkpm_run under mpiexec; ranks.hpp implements it with MPI), rank 0
 // observes a one-process solver of the whole model, `whole`, which never steps itself: the
 // ranks step their parts, and the object puts their state into `whole`
-// (parallel::mirror_state) at the calls where the observer reads more than the time and step.
-// `whole` is then the solver one process would have, bit for bit, so the observer writes the
-// one-process files unchanged. Every call is collective: the other ranks make the same calls
+// (parallel::mirror_state) at the calls where the observer reads the model's particles or points
+// beyond a history row's extremes (the last call, figure shapes, checkpoints, a caller's hook, a
+// case whose measures are not extremes). `whole` is then the solver one process would have, bit
+// for bit, so the observer writes the one-process files unchanged. A call that adds a history
+// row (or a snapshot's index) alone observes rank 0's part instead, with the case's extremes
+// reduced over the ranks (row_maxima.hpp): no gather, the same row. Every call is collective: the other ranks make the same calls
 // with no `whole` (follow_run in ranks.hpp), so an error on any rank is thrown on every rank
 // alike.
 
@@ -14,21 +17,25 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <rkpm/solver/checkpoint.hpp>
 
 namespace rkpm::runner {
 
 // What rank 0's observer (run_observer.hpp) tells the divided run at each observation, at (time,
-// end time): whether `whole` must be brought up to date and observe(whole) called, or pass(time,
-// end time, steps) alone; and the .pvtu index of the snapshot that call writes, if any (empty
-// if none), whose pieces every rank writes before it.
+// end time): whether the call reads the state (needs), and then whether it reads the whole
+// model (needs_whole: `whole` is brought up to date and observe(whole) called) or only a history
+// row's reductions (observe_part(rank 0's part, the case's maxima reduced over the ranks:
+// row_maxima.hpp)); else pass(time, end time, steps) alone. And the .pvtu index of the snapshot
+// that call writes, if any (empty if none), whose pieces every rank writes before it.
 template <class Solver>
 struct rank0_observation {
-  std::function<bool(double, double)> needs;
+  std::function<bool(double, double)> needs, needs_whole;
   std::function<std::filesystem::path(double, double)> snapshot;
   std::function<void(double, double, long)> pass;
   std::function<void(const Solver&)> observe;
+  std::function<void(const Solver&, std::vector<double>)> observe_part;
 };
 
 template <class Solver>

@@ -3,19 +3,26 @@
 // `tools/rkpm run CASE --ranks P`; docs/method.md section 9.8). Every rank builds the whole
 // problem and model alike, METIS divides the particles, and each rank steps its part
 // (parallel::distributed_solver). Rank 0 runs simulate() as one process does, on a whole solver
-// that never steps itself: rank_steps puts the parts' state into it (parallel::mirror_state)
-// at each call where the observer reads more than the time, so summary.json, history.csv, the
-// figures and the checkpoints are the files one process writes, bit for bit. The snapshots are
-// written in pieces, each rank its own at the same time (parallel/snapshot_pieces.hpp), and
-// rank 0 adds their .pvtu index to the .pvd. The other ranks follow the same collective calls
-// (follow_run) and write nothing else.
-// Costs of this first form: rank 0 holds the whole model beside its part, and a history row,
-// snapshot or checkpoint gathers the whole state there.
+// that never steps itself. What each observer call gathers:
+//   the time and step only (most calls)   nothing: the progress line (pass)
+//   a history row, a snapshot             nothing whole: each rank takes the case's extremes
+//                                         over its part, one MPI_MAX brings them to rank 0
+//                                         (row_maxima.hpp), which observes its own part, whose
+//                                         time, energies and tool impulses are the run's; each
+//                                         rank writes its snapshot piece (snapshot_pieces.hpp)
+//   the last call, a figure shape, a      the whole state into the whole solver
+//   checkpoint, a caller's hook, every    (parallel::mirror_state), observed as one process
+//   row of a case without extremes        observes its own
+// so summary.json, history.csv, the figures and the checkpoints are the files one process
+// writes, bit for bit, and rank 0 adds the snapshots' .pvtu indexes to the .pvd. The other ranks
+// follow the same collective calls (follow_run) and write nothing else.
+// Cost of this form: rank 0 holds the whole model beside its part.
 
 #include <functional>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <mpi.h>
 
@@ -27,6 +34,7 @@
 #include <rkpm/solver/make_model.hpp>
 
 #include "process_steps.hpp"
+#include "row_maxima.hpp"
 #include "run_record.hpp"
 #include "simulate.hpp"
 
@@ -37,9 +45,12 @@ class rank_steps final : public process_steps<Solver> {
  public:
   using problem_type = problem<typename Solver::material_type, typename Solver::contact_type>;
 
-  // snapshot_format: the snapshots' (alike on every rank: simulate.hpp's snapshot_format).
-  rank_steps(parallel::communicator& comm, std::string configuration, io::vtu_format snapshot_format)
-      : comm_(comm), configuration_(std::move(configuration)), snapshot_format_(snapshot_format) {}
+  // snapshot_format: the snapshots' (alike on every rank: simulate.hpp's snapshot_format);
+  // maxima: the case's measures' extremes over a part (row_maxima_of; empty: the rows gather).
+  rank_steps(parallel::communicator& comm, std::string configuration, io::vtu_format snapshot_format,
+             std::function<std::vector<double>(const Solver&)> maxima = {})
+      : comm_(comm), configuration_(std::move(configuration)), snapshot_format_(snapshot_format),
+        maxima_(std::move(maxima)) {}
 
   // Collective: builds the problem and the whole model on every rank, divides the particles, and
   // returns on rank 0 the whole solver it observes (empty elsewhere).
@@ -84,19 +95,24 @@ class rank_steps final : public process_steps<Solver> {
     comm_.agree();
   }
 
-  // Each observation: rank 0 says in one byte whether the whole solver is brought up to date
-  // and whether a snapshot is due, then the snapshot's index, whose pieces every rank writes.
+  // Each observation: rank 0 says in one byte whether the whole solver is brought up to date, or
+  // the row's extremes reduced, and whether a snapshot is due, then the snapshot's index, whose
+  // pieces every rank writes.
   void run(Solver* whole, const rank0_observation<Solver>& o) override {
     comm_.agree();  // rank 0's set-up (abandon)
     started_ = true;
     const bool root = comm_.rank() == 0;
     Solver& part = run_->solver();
     const double end = part.options().end_time;
-    constexpr char observe_whole = 1, snapshot = 2;
+    constexpr char observe_whole = 1, snapshot = 2, observe_part = 4;
+    const auto reads = [&](double t) -> char {
+      if (!o.needs(t, end)) return 0;
+      return maxima_ && !o.needs_whole(t, end) ? observe_part : observe_whole;
+    };
     part.run(
         [&](const Solver& at) {
           std::string index = root ? o.snapshot(at.time(), end).string() : std::string();
-          char wanted = !root ? 0 : (o.needs(at.time(), end) ? observe_whole : 0) | (index.empty() ? 0 : snapshot);
+          char wanted = !root ? 0 : reads(at.time()) | (index.empty() ? 0 : snapshot);
           MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
           if (wanted & snapshot) {
             unsigned long size = index.size();
@@ -104,6 +120,16 @@ class rank_steps final : public process_steps<Solver> {
             index.resize(size);
             MPI_Bcast(index.data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
             pieces_->write(part, index, snapshot_format_);
+          }
+          if (wanted & observe_part) {
+            std::vector<double> maxima = maxima_(part);
+            MPI_Reduce(root ? MPI_IN_PLACE : maxima.data(), maxima.data(), static_cast<int>(maxima.size()),
+                       MPI_DOUBLE, MPI_MAX, 0, comm_.get());
+            comm_.guarded([&] {
+              if (root) o.observe_part(part, std::move(maxima));
+            });
+            comm_.agree();
+            return;
           }
           if (!(wanted & observe_whole)) {
             if (root) o.pass(at.time(), end, static_cast<long>(at.steps()));
@@ -131,6 +157,7 @@ class rank_steps final : public process_steps<Solver> {
   std::string configuration_;
   std::optional<parallel::distributed_solver<Solver>> run_;
   io::vtu_format snapshot_format_;
+  std::function<std::vector<double>(const Solver&)> maxima_;
   std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers, built once
   std::optional<parallel::snapshot_pieces> pieces_;
   bool started_ = false;
@@ -158,7 +185,7 @@ run_outcome run_on_ranks(const run_request& r, const typename Case::parameters& 
                          const method_names& method, const run_options& options,
                          const std::optional<restart_point>& restart) {
   parallel::communicator world;
-  rank_steps<Solver> steps(world, policies.configuration, snapshot_format(r));
+  rank_steps<Solver> steps(world, policies.configuration, snapshot_format(r), row_maxima_of<Case, Solver>());
   if (world.rank() == 0)
     return simulate<Case, Solver>(
         r, p, policies, [&] { return std::move(*steps.build(make_problem, method, options)); }, restart, &steps);

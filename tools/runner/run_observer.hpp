@@ -29,6 +29,7 @@
 #include "interrupt.hpp"
 #include "json.hpp"
 #include "run_hooks.hpp"
+#include "row_maxima.hpp"
 #include "run_record.hpp"
 
 namespace rkpm::runner {
@@ -66,6 +67,7 @@ class run_observer {
     record_.start_impulse.resize(tools_, vec2::Zero());
     record_.previous_start_impulse.resize(tools_, vec2::Zero());
     for (const auto& row : record_.history_rows) history_.row(row);
+    rows_by_maxima_ = MeasuredByMaxima<Case, Solver> && s.companions().empty();
   }
 
   // Called at the start, after every step and at the end of the run; its time is output_s().
@@ -114,9 +116,23 @@ class run_observer {
   bool needs_state(double t, double end_time) const {
     if (skip_next_) return false;
     const bool last = is_last(t, end_time);
-    return last || t >= record_.next_history || snapshot_at(t, last) || figures_.due(t, last) ||
-           (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint) || pending_interrupt().load() != 0 ||
-           static_cast<bool>(hooks_.observe);
+    return t >= record_.next_history || snapshot_at(t, last) || reads_model(t, last);
+  }
+  // Of those calls, on several processes, the ones that read the whole model: all but a history
+  // row whose measures are extremes (observe_part) and a snapshot written in pieces.
+  bool needs_whole_state(double t, double end_time) const {
+    return !(pieces_ && rows_by_maxima_) || reads_model(t, is_last(t, end_time));
+  }
+  // A call that needs_whole_state declines: rank 0's part of the run observed as the whole (its
+  // time, step, energies and tool impulses are the run's), the case's measures from `maxima`,
+  // the whole model's (row_maxima.hpp).
+  void observe_part(const Solver& part, std::vector<double> maxima) {
+    row_maxima_ = std::move(maxima);
+    const struct forget {
+      std::vector<double>& m;
+      ~forget() { m.clear(); }
+    } after{row_maxima_};
+    (*this)(part);
   }
   // The snapshot the call at time t writes, if any (empty if none): next to the .pvd, a .vtu, or
   // the .pvtu index of a snapshot the ranks write in pieces (write_snapshots_in_pieces).
@@ -172,6 +188,12 @@ class run_observer {
   // The call at the end time (within rounding), and whether a call at t writes a snapshot.
   static bool is_last(double t, double end_time) { return t >= end_time * (1.0 - 1e-12); }
   bool snapshot_at(double t, bool last) const { return last || t >= record_.next_snapshot; }
+  // Whether the call reads more than a row's measures and a snapshot's index: the last call, a
+  // figure shape, a checkpoint, an interrupt, a caller's hook.
+  bool reads_model(double t, bool last) const {
+    return last || figures_.due(t, last) || (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint) ||
+           pending_interrupt().load() != 0 || static_cast<bool>(hooks_.observe);
+  }
 
   // The points, the cells, the vectors and the stress made piecewise as they are written, the
   // other arrays computed one at a time: at 10^6 particles the cells would hold 41 MB through
@@ -220,7 +242,11 @@ class run_observer {
     record_.start_impulse = impulse;
     record_.previous_span = span;
     record_.interval_start = t;
-    measures_ = Case::measure(s, params_, mean_force_);
+    if constexpr (MeasuredByMaxima<Case, Solver>)
+      measures_ = row_maxima_.empty() ? Case::measure(s, params_, mean_force_)
+                                      : measures_from_maxima<Case>(row_maxima_, s, params_, mean_force_);
+    else
+      measures_ = Case::measure(s, params_, mean_force_);
     std::vector<double> row{t};
     for (const auto& [k, v] : measures_) row.push_back(v);
     for (const vec2& f : mean_force_) {
@@ -273,6 +299,10 @@ class run_observer {
   bool skip_next_ = false;
   double output_s_ = 0.0;
   bool pieces_ = false;
+  // Whether the rows' measures are extremes reduced over the ranks (a case with
+  // measure_maxima and no companions), and the current call's (observe_part).
+  bool rows_by_maxima_ = false;
+  std::vector<double> row_maxima_;
 };
 
 }  // namespace rkpm::runner

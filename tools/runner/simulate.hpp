@@ -253,9 +253,11 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   };
   try {
     steps->run(&s, {.needs = [&](double t, double end) { return observe.needs_state(t, end); },
+                    .needs_whole = [&](double t, double end) { return observe.needs_whole_state(t, end); },
                     .snapshot = [&](double t, double end) { return observe.snapshot_due(t, end); },
                     .pass = [&](double t, double end, long n) { observe.pass(t, end, n); },
-                    .observe = [&](const Solver& at) { observe(at); }});
+                    .observe = [&](const Solver& at) { observe(at); },
+                    .observe_part = [&](const Solver& p, auto m) { observe.observe_part(p, std::move(m)); }});
     settle();
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
   } catch (const stop_requested&) {

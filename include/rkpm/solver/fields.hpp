@@ -22,10 +22,13 @@ inline std::vector<vec2> values_at_particles(const discrete_model& m, const std:
 
 // at_point(q) carried to the particles by the lumped L2 projection.
 // One serial pass over the points: each particle's sum runs over its points in ascending order.
-// Current positions x_I = X_I + sum_J N_J(X_I) d_J.
+// Current position x_I = X_I + sum_J N_J(X_I) d_J of particle I, and of every particle.
+inline vec2 position_at_particle(const discrete_model& m, const std::vector<vec2>& d, index_t I) {
+  return m.at_particles.interpolate(I, d) + m.particles.position[I];
+}
 inline std::vector<vec2> positions_at_particles(const discrete_model& m, const std::vector<vec2>& d) {
-  std::vector<vec2> x = values_at_particles(m, d);
-  for (index_t I = 0; I < m.particle_count(); ++I) x[I] += m.particles.position[I];
+  std::vector<vec2> x(m.particle_count());
+  for (index_t I = 0; I < m.particle_count(); ++I) x[I] = position_at_particle(m, d, I);
   return x;
 }
 
