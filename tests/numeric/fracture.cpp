@@ -15,6 +15,10 @@
 //    for bit (the cuts are in the checkpoint, the model rebuilt from them);
 //  - a particle that cracks cut off alone becomes a free particle (its own row, its own volume),
 //    not a singular moment matrix;
+//  - the snapshot of the broken bar draws the crack open: each cut cell as its two sides, whose
+//    crack points, with coefficients linear on each side (different on the two), sit where the
+//    field of their own side puts them to round-off; in the run, the right side's points right
+//    of the left side's; every failed point a vertex of its own;
 //  - a Johnson-Cook bar whose halves are thrown apart, with damage that opens cracks (32f), fails
 //    in tension at the middle and breaks in two, with its total momentum kept to round-off; with
 //    the damage alone (no opens_cracks) its failed points carry no tension but the kernels still
@@ -26,6 +30,7 @@
 #include <filesystem>
 #include <vector>
 
+#include <rkpm/io/crack_snapshot.hpp>
 #include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/material/rankine_fracture.hpp>
 #include <rkpm/solver/checkpoint.hpp>
@@ -132,6 +137,88 @@ TEST_CASE("fracture: a brittle bar thrown apart breaks in two, keeps its momentu
     CHECK(b.dissipated == doctest::Approx(G_c * H).epsilon(0.10));
     CHECK(b.balance_error < 0.02);
   }
+}
+
+TEST_CASE("fracture: the snapshot draws each cut cell as its two sides, its crack points on their own side") {
+  const double h = 1e-3;
+  auto s = thrown_bar(h);
+  while (s.before_end()) s.step_to_end();
+  const discrete_model& m = s.model();
+  const std::vector<cell_crack>& cuts = s.cracks();
+  REQUIRE(s.fragments().pieces == 2);
+  REQUIRE(!cuts.empty());
+  const auto n = static_cast<std::size_t>(m.particle_count());
+  const auto left = [&](index_t I) { return s.initial_positions()[I][0] <= 0.5 * L + 1e-9; };
+
+  // Coefficients linear on each side, a different field on each: the approximation reproduces
+  // each side's field there (its kernels do not reach across), and so must the crack points.
+  const mat2 G_left{{0.01, -0.02}, {0.03, 0.005}}, G_right{{-0.04, 0.01}, {0.02, -0.03}};
+  const vec2 a_left(1e-4, -2e-4), a_right(3e-4, 5e-5);
+  const auto field = [&](bool on_left, const vec2& X) -> vec2 {
+    return on_left ? (a_left + G_left * X).eval() : (a_right + G_right * X).eval();
+  };
+  std::vector<vec2> d(n);
+  for (index_t I = 0; I < m.particle_count(); ++I) d[I] = field(left(I), m.particles.position[I]);
+  const io::crack_faces linear = io::crack_face_points(m, cuts, d);
+  REQUIRE(linear.position.size() == 4 * cuts.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < linear.position.size(); ++k) {
+    const cell_crack& cut = cuts[k / 4];
+    const int e = (k % 4 == 0 || k % 4 == 3) ? 0 : 1;  // the crossing's cell side (crack_snapshot.hpp's order)
+    const auto& corner = m.mesh.cell[cut.cell];
+    const vec2 X_c = (1.0 - cut.at[e]) * m.particles.position[corner[cut.side[e]]] +
+                     cut.at[e] * m.particles.position[corner[(cut.side[e] + 1) % 4]];
+    const vec2 expected = X_c + field(left(linear.corner[k]), X_c);
+    worst = std::max(worst, (linear.position[k] - expected).norm());
+  }
+  MESSAGE(cuts.size() << " cells cut; crack points off their side's linear field by " << worst << " m");
+  CHECK(worst < 1e-12 * L);
+
+  // The run's own snapshot.
+  const io::snapshot_extras extras = io::snapshot_extras_of(s);
+  index_t failed = 0;
+  for (const auto& state : s.point_states()) failed += state.failed() ? 1 : 0;
+  std::size_t faces = 0, failed_points = 0, quads = 0, polygons = 0;
+  for (const std::uint8_t k : extras.kind) (k == io::point_kind_crack_face ? faces : failed_points) += 1;
+  CHECK(faces == 4 * cuts.size());
+  CHECK(failed_points == static_cast<std::size_t>(failed));
+  for (std::size_t c = 0; c < extras.cells.size(); ++c) {
+    const std::int64_t begin = c == 0 ? 0 : extras.cells.offsets[c - 1];
+    if (extras.cells.types[c] == io::vtk_quad) ++quads;
+    if (extras.cells.types[c] != io::vtk_polygon) continue;
+    ++polygons;
+    int sides_seen = 0;  // a polygon's particles lie on one side of the crack
+    for (std::int64_t k = begin; k < extras.cells.offsets[c]; ++k) {
+      const std::int64_t p = extras.cells.connectivity[static_cast<std::size_t>(k)];
+      if (p < static_cast<std::int64_t>(n)) sides_seen |= left(static_cast<index_t>(p)) ? 1 : 2;
+    }
+    CHECK(extras.cells.offsets[c] - begin >= 3);
+    CHECK((sides_seen == 1 || sides_seen == 2));
+  }
+  CHECK(polygons == 2 * cuts.size());
+  CHECK(quads + cuts.size() == static_cast<std::size_t>(m.mesh.cells()));
+  // The crack is open: at each crossing the right side's point lies right of the left side's.
+  for (std::size_t cut = 0; cut < cuts.size(); ++cut)
+    for (const auto& [first, second] : {std::pair{4 * cut, 4 * cut + 3}, std::pair{4 * cut + 1, 4 * cut + 2}}) {
+      const bool first_left = left(extras.source[first]);
+      CHECK(first_left != left(extras.source[second]));
+      const double gap = first_left ? extras.position[second][0] - extras.position[first][0]
+                                    : extras.position[first][0] - extras.position[second][0];
+      CHECK(gap > 0.01 * h);
+    }
+
+  // Written: every point array on the extras too, and the cells valid on them.
+  const auto file = std::filesystem::temp_directory_path() / "rkpm_fracture_snapshot.vtu";
+  io::snapshot_parts parts = io::snapshot_of(s);
+  CHECK(parts.points == n + extras.position.size());
+  io::vtu_format text;
+  text.encoding = io::vtu_encoding::ascii;
+  io::write_vtu(file, parts.points, parts.xyz, parts.cells, parts.fields, text);
+  std::vector<vec2> points(parts.points);
+  const auto xyz = io::filled_values<double>(3 * parts.points, parts.xyz);
+  for (std::size_t k = 0; k < parts.points; ++k) points[k] = vec2(xyz[3 * k], xyz[3 * k + 1]);
+  CHECK_NOTHROW(io::write_vtu(file, points, io::cells_of(parts.cells), parts.fields));
+  std::filesystem::remove(file);
 }
 
 namespace {

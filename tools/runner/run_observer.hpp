@@ -18,6 +18,7 @@
 #include <rkpm/io/checkpoint.hpp>
 #include <rkpm/io/csv.hpp>
 #include <rkpm/io/progress.hpp>
+#include <rkpm/io/crack_snapshot.hpp>
 #include <rkpm/io/solver_output.hpp>
 #include <rkpm/io/pvd_series.hpp>
 #include <rkpm/io/vtk.hpp>
@@ -199,8 +200,8 @@ class run_observer {
   // other arrays computed one at a time: at 10^6 particles the cells would hold 41 MB through
   // the run, the raw arrays 200 MB at once.
   void write_snapshot(const Solver& s, double t) {
-    const auto vtu = vtk_.add_snapshot(t, static_cast<std::size_t>(s.model().particle_count()), io::snapshot_points(s),
-                                       io::snapshot_cell_layout(s), io::snapshot_fields(s, io::field_arrays::deferred),
+    io::snapshot_parts snapshot = io::snapshot_of(s);  // with its crack faces and failed points, if any
+    const auto vtu = vtk_.add_snapshot(t, snapshot.points, std::move(snapshot.xyz), snapshot.cells, snapshot.fields,
                                        snapshot_format_, io::snapshot_tools(s));
     record_.snapshots.emplace_back(t, vtu.filename().string());
   }

@@ -3,7 +3,9 @@
 // deferred (computed when the writer reaches them) or filled (made piecewise as they are written).
 
 #include <cstddef>
+#include <algorithm>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <utility>
@@ -114,5 +116,44 @@ class point_data {
   }
   std::vector<array> arrays_;
 };
+
+// `data`, on n points, on n + source.size(): extra point j carries the values of point source[j]
+// in every array, and each array stays given, deferred or filled as it was (the crack faces and
+// failed points of a snapshot, io/crack_snapshot.hpp).
+inline point_data with_extra_points(point_data data, std::size_t n, std::vector<index_t> source) {
+  const auto extras = std::make_shared<const std::vector<index_t>>(std::move(source));
+  const auto extend = [n, extras](std::vector<double>& values, std::size_t c) {
+    values.resize((n + extras->size()) * c);
+    for (std::size_t j = 0; j < extras->size(); ++j)
+      std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>((*extras)[j]) * c), c,
+                  values.begin() + static_cast<std::ptrdiff_t>((n + j) * c));
+  };
+  point_data out;
+  for (point_data::array& a : std::move(data).take()) {
+    const auto c = static_cast<std::size_t>(a.components);
+    if (a.prepare) {
+      out.add_filled(a.name, a.components, (n + extras->size()) * c, [prepare = a.prepare, n, c, extras] {
+        return point_data::filler([fill = prepare(), n, c, extras](std::size_t first, std::size_t count, double* o) {
+          const std::size_t own = first < n * c ? std::min(count, n * c - first) : 0;
+          if (own > 0) fill(first, own, o);
+          for (std::size_t k = own; k < count; ++k) {
+            const std::size_t entry = first + k - n * c;
+            fill(static_cast<std::size_t>((*extras)[entry / c]) * c + entry % c, 1, o + k);
+          }
+        });
+      });
+    } else if (a.produce) {
+      out.add_deferred(a.name, a.components, [produce = a.produce, c, extend] {
+        std::vector<double> values = produce();
+        extend(values, c);
+        return values;
+      });
+    } else {
+      extend(a.values, c);
+      out.add_values(a.name, a.components, std::move(a.values));
+    }
+  }
+  return out;
+}
 
 }  // namespace rkpm::io

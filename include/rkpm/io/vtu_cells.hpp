@@ -9,13 +9,15 @@
 //                          stays a VTK_VERTEX, after the quads
 //   cell_layout            either of them as a rule instead of arrays, each entry made when
 //                          asked for: a snapshot writes its cells piecewise (io/vtk.hpp) without
-//                          holding them (41 MB at 10^6 particles)
+//                          holding them (41 MB at 10^6 particles); or cells given as arrays
+//                          (a cracked body's, io/crack_snapshot.hpp)
 // VTK orders a quad's nodes counter-clockwise around it; background_mesh::validate() refuses a
 // cell that is not counter-clockwise in the reference configuration, so its node order is VTK's.
 // In an axisymmetric run the points are (r, z) -> (x, y): the section drawn in its plane.
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <rkpm/core/error.hpp>
@@ -24,6 +26,7 @@
 namespace rkpm::io {
 
 inline constexpr std::uint8_t vtk_vertex = 1;  // VTK_VERTEX in VTK's vtkCellType.h
+inline constexpr std::uint8_t vtk_polygon = 7; // VTK_POLYGON
 inline constexpr std::uint8_t vtk_quad = 9;    // VTK_QUAD
 
 struct vtu_cells {
@@ -41,6 +44,7 @@ struct vtu_cells {
 //                                  mesh.node.size() are the mesh's nodes in order; every point no
 //                                  cell uses (a node left out of the cells, or a point beyond the
 //                                  nodes) a vertex cell after the quads
+//   cell_layout::given(cells)      the cells given as arrays
 class cell_layout {
  public:
   static cell_layout vertices(std::size_t points) {
@@ -64,23 +68,35 @@ class cell_layout {
     return c;
   }
 
-  std::size_t size() const { return quads_ + vertices_; }
-  std::size_t connectivity_size() const { return 4 * quads_ + vertices_; }
+  static cell_layout given(vtu_cells cells) {
+    cell_layout c;
+    c.given_ = std::make_shared<const vtu_cells>(std::move(cells));
+    return c;
+  }
+
+  std::size_t size() const { return given_ ? given_->size() : quads_ + vertices_; }
+  std::size_t connectivity_size() const { return given_ ? given_->connectivity.size() : 4 * quads_ + vertices_; }
   // Entry k of the connectivity, cell c's end in it and its type.
   std::int64_t connectivity(std::size_t k) const {
+    if (given_) return given_->connectivity[k];
     if (k < 4 * quads_) return mesh_->cell[k / 4][k % 4];
     k -= 4 * quads_;
     return mesh_ ? loose_[k] : static_cast<std::int64_t>(k);
   }
   std::int64_t offset(std::size_t c) const {
+    if (given_) return given_->offsets[c];
     return static_cast<std::int64_t>(c < quads_ ? 4 * (c + 1) : 4 * quads_ + (c - quads_) + 1);
   }
-  std::uint8_t type(std::size_t c) const { return c < quads_ ? vtk_quad : vtk_vertex; }
+  std::uint8_t type(std::size_t c) const {
+    if (given_) return given_->types[c];
+    return c < quads_ ? vtk_quad : vtk_vertex;
+  }
 
  private:
   const background_mesh* mesh_ = nullptr;  // quads: the mesh (kept by the caller)
   std::size_t quads_ = 0, vertices_ = 0;
   std::vector<std::int64_t> loose_;  // quads: the points no quad uses, a vertex cell each after them
+  std::shared_ptr<const vtu_cells> given_;  // given: the arrays
 };
 
 // The same as arrays.
