@@ -22,12 +22,16 @@
 //  - a Johnson-Cook bar whose halves are thrown apart, with damage that opens cracks (32f), fails
 //    in tension at the middle and breaks in two, with its total momentum kept to round-off; with
 //    the damage alone (no opens_cracks) its failed points carry no tension but the kernels still
-//    join the halves: one piece, and no cell cut.
+//    join the halves: one piece, and no cell cut;
+//  - the same bar eight cells thick, whose band of failed cells is several cells wide, is cut
+//    once across it, not in every cell (beside_a_cut): two pieces, neither a sliver, and the
+//    stable step above a tenth of the first (with every failed cell cut: 0.0036).
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <numeric>
 #include <vector>
 
 #include <rkpm/io/crack_snapshot.hpp>
@@ -371,13 +375,16 @@ struct pulled_bar {
   index_t failed = 0;                   // failed points at the end
   double worst_total_momentum = 0.0;    // max |P(t) - P(0)| over the steps / (m V)
   double largest_mass_fraction = 0.0;   // the largest piece's mass / the bar's
+  double smallest_step = 0.0;           // the smallest stable step over the first
+  double smallest_piece_fraction = 0.0; // the smallest piece's mass / the bar's
 };
 
 // A steel-like bar, as long as the brittle one and two cells thick, its halves thrown apart at V:
 // the jump flows plastically and necks at the middle until the failure strain (D1 = 0.1, eps_f
 // constant) is reached there, in tension.
-pulled_bar pull_johnson_cook_bar(bool opens_cracks) {
-  constexpr double steel_V = 50.0, h = 0.5e-3, thickness = 2.0 * h;
+pulled_bar pull_johnson_cook_bar(bool opens_cracks, int cells_thick = 2) {
+  constexpr double steel_V = 50.0, h = 0.5e-3;
+  const double thickness = cells_thick * h;
   const Eigen::Vector2i n(static_cast<int>(std::lround(L / h)) + 1, static_cast<int>(std::lround(thickness / h)) + 1);
   const vec2 lo(0.0, 0.0), hi(L, thickness);
   material::johnson_cook_damage damage{0.1, 0.0, 0.0, 0.0, 0.0};
@@ -402,11 +409,33 @@ pulled_bar pull_johnson_cook_bar(bool opens_cracks) {
   };
   const vec2 P0 = total();
   pulled_bar out;
+  const double first_step = s.time_step();
+  out.smallest_step = 1.0;
   while (s.before_end()) {
     s.step_to_end();
     out.worst_total_momentum = std::max(out.worst_total_momentum, (total() - P0).norm() / (m * steel_V));
+    out.smallest_step = std::min(out.smallest_step, s.time_step() / first_step);
   }
   const fragment_count pieces = s.fragments();
+  {
+    std::vector<index_t> parent(s.model().particle_count());  // the pieces' masses: crack_fragments' joins
+    std::iota(parent.begin(), parent.end(), index_t{0});
+    const auto root = [&](index_t i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    const shape_table<2>& rows = s.model().at_points;
+    for (index_t q = 0; q < s.model().point_count(); ++q)
+      for (index_t e = rows.offset[q] + 1; e < rows.offset[q + 1]; ++e) {
+        const index_t a = root(rows.neighbor[rows.offset[q]]), b = root(rows.neighbor[e]);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+      }
+    std::vector<double> piece(parent.size(), 0.0);
+    for (index_t I = 0; I < s.model().particle_count(); ++I) piece[root(I)] += s.mass()[I];
+    out.smallest_piece_fraction = 1.0;
+    for (index_t I = 0; I < s.model().particle_count(); ++I)
+      if (root(I) == I) out.smallest_piece_fraction = std::min(out.smallest_piece_fraction, piece[I] / m);
+  }
   out.pieces = pieces.pieces;
   out.largest_mass_fraction = pieces.largest_mass / m;
   out.cuts = static_cast<index_t>(s.cracks().size());
@@ -414,7 +443,9 @@ pulled_bar pull_johnson_cook_bar(bool opens_cracks) {
   MESSAGE("Johnson-Cook bar, opens_cracks " << opens_cracks << ": " << out.failed << " failed points, " << out.cuts
                                             << " cells cut, " << out.pieces << " pieces (the largest "
                                             << out.largest_mass_fraction << " of the mass), momentum drift "
-                                            << out.worst_total_momentum << ", " << s.steps() << " steps");
+                                            << out.worst_total_momentum << ", " << s.steps()
+                                            << " steps, smallest step / first " << out.smallest_step
+                                            << ", smallest piece " << out.smallest_piece_fraction);
   return out;
 }
 
@@ -431,6 +462,14 @@ TEST_CASE("fracture: a Johnson-Cook bar pulled apart breaks in two only when its
   CHECK(joined.failed > 0);
   CHECK(joined.cuts == 0);
   CHECK(joined.pieces == 1);
+}
+
+TEST_CASE("fracture: a thick Johnson-Cook bar breaks across its band of failed cells once, leaving no sliver") {
+  const pulled_bar thick = pull_johnson_cook_bar(true, 8);
+  CHECK(thick.pieces == 2);
+  CHECK(thick.smallest_piece_fraction > 0.25);
+  CHECK(thick.smallest_step > 0.1);
+  CHECK(thick.worst_total_momentum < 1e-12);
 }
 
 }  // namespace test_numeric_fracture

@@ -8,6 +8,8 @@
 // that it moves with the cell's corners (the particles) through later re-references:
 //   cell_crack       a cell's cut: the two sides it crosses and where along each
 //   cut_cell         the cut of a cell through its centroid with a given normal
+//   beside_a_cut     whether a cut runs in a neighbouring cell alongside a new one (a band of
+//                    failed cells is cut once across, not into slivers)
 //   crack_chord      the cut's segment on the cells at their current corners, lengthened past
 //                    the cell's sides so that the cuts of neighbouring cells overlap
 //   cracks_on        every cut's segment, as the crack_set the model builder reads
@@ -65,6 +67,36 @@ inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t 
   }
   if (found < 2) return std::nullopt;
   return cut;
+}
+
+// Each cell's neighbour across each of its sides (side k from corner k to k + 1), -1 at the boundary.
+inline std::vector<std::array<index_t, 4>> cell_neighbours(const background_mesh& cells) {
+  std::vector<std::vector<index_t>> at_node(cells.node.size());
+  for (index_t c = 0; c < cells.cells(); ++c)
+    for (const stored_index n : cells.cell[c]) at_node[n].push_back(c);
+  std::vector<std::array<index_t, 4>> out(static_cast<std::size_t>(cells.cells()));
+  for (index_t c = 0; c < cells.cells(); ++c)
+    for (int k = 0; k < 4; ++k) {
+      const stored_index a = cells.cell[c][k], b = cells.cell[c][(k + 1) % 4];
+      out[c][k] = -1;
+      for (const index_t other : at_node[a])
+        if (other != c && std::ranges::find(cells.cell[other], b) != cells.cell[other].end()) out[c][k] = other;
+    }
+  return out;
+}
+
+// Whether a cell across a side that `cut` does not cross is cut already (section 5.12): the crack
+// runs alongside, and the failed points of a band several cells wide would otherwise cut every
+// cell of it, parallel cuts a cell apart that leave slivers of one particle column, whose high
+// frequencies shrink the stable step a hundredfold. The band is cut once across; its other
+// failed points carry no tension anyway.
+inline bool beside_a_cut(const std::vector<std::array<index_t, 4>>& neighbours, const std::vector<cell_crack>& cuts,
+                         const cell_crack& cut) {
+  for (int k = 0; k < 4; ++k) {
+    if (k == cut.side[0] || k == cut.side[1]) continue;
+    if (const index_t other = neighbours[cut.cell][k]; other >= 0 && is_cut(cuts, other)) return true;
+  }
+  return false;
 }
 
 // The segment of `cut` on the cells at their current corners, lengthened by `overlap` of its

@@ -198,7 +198,7 @@ class explicit_solver {
                          std::optional<std::vector<index_t>> slaves = std::nullopt);
   bool rereference_due() const;
   bool grow_cracks();  // cuts the cells of newly failed points; whether it cut any
-  bool insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals);
+  bool insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals, bool not_beside_cuts);
   void scale_masses();
 
   // f_int at d; inside a step, at the step's end (the context names it in errors).

@@ -67,7 +67,7 @@ bool explicit_solver<G, M, Ct>::grow_cracks() {
       if (!s.failed() || !(vec2(s.crack_normal).squaredNorm() > 0.0)) continue;  // a hoop crack cuts no cell
       if (const index_t c = model_.points.cell[q]; !is_cut(cracks_, c)) failed.emplace_back(c, vec2(s.crack_normal));
     }
-    return !failed.empty() && insert_cuts(failed);
+    return !failed.empty() && insert_cuts(failed, true);
   }
 }
 
@@ -78,19 +78,24 @@ void explicit_solver<G, M, Ct>::cut_cells(const std::vector<std::pair<index_t, v
     if (c < 0 || c >= model_.mesh.cells() || !(n.norm() > 0.0))
       fail("cut_cells: cell {} with normal ({}, {}): give a cell of the mesh (0 to {}) and a nonzero normal", c, n[0],
            n[1], model_.mesh.cells() - 1);
-  if (insert_cuts(cells_and_normals)) rereference();
+  if (insert_cuts(cells_and_normals, false)) rereference();
 }
 
 // Adds the cut of each cell not cut yet, on the current configuration (cracks_ stays in cell
-// order); whether it added any. The model is rebuilt by the caller.
+// order), none beside a cut when `not_beside_cuts` (failed points, beside_a_cut); whether it added
+// any. The model is rebuilt by the caller.
 template <Geometry G, Material M, Contact Ct>
-bool explicit_solver<G, M, Ct>::insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals) {
+bool explicit_solver<G, M, Ct>::insert_cuts(const std::vector<std::pair<index_t, vec2>>& cells_and_normals,
+                                            bool not_beside_cuts) {
   std::optional<background_mesh> current;  // the cells at the current positions, when needed
+  std::vector<std::array<index_t, 4>> neighbours;
   bool cut = false;
   for (const auto& [c, n] : cells_and_normals) {
     if (is_cut(cracks_, c) || !(n.norm() > 0.0)) continue;
     if (!current) current.emplace(background_mesh{positions_at_particles(model_, d_), model_.mesh.cell});
+    if (not_beside_cuts && neighbours.empty()) neighbours = cell_neighbours(model_.mesh);
     if (const std::optional<cell_crack> k = cut_cell(*current, c, n.normalized())) {
+      if (not_beside_cuts && beside_a_cut(neighbours, cracks_, *k)) continue;
       cracks_.insert(cracks_.begin() + static_cast<std::ptrdiff_t>(cut_position(cracks_, c)), *k);
       cut = true;
     }
