@@ -9,6 +9,7 @@
 // symmetry the contact plane of two identical rods is a frictionless rigid wall, so the default
 // case reproduces taylor_bar. Parameters SI; results in millimetres.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -16,11 +17,13 @@
 #include <vector>
 
 #include <rkpm/contact/body_contact.hpp>
+#include <rkpm/core/exact_sum.hpp>
 #include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/fields.hpp>
 #include <rkpm/solver/problem.hpp>
 
 #include "cases/contact_setup.hpp"
@@ -115,29 +118,49 @@ struct rod_on_rod {
   // found so far, and the change of the total axial momentum relative to sum m |v0|.
   template <class Solver>
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
-                                                             const std::vector<vec2>& /*tool_force*/) {
-    const auto x = s.particle_positions();
-    const auto& X = s.initial_positions();
-    std::array<double, 2> zmin{1e300, 1e300}, zmax{-1e300, -1e300}, radius{0.0, 0.0};
-    double P = 0.0, P0 = 0.0, scale = 0.0;
-    for (std::size_t I = 0; I < x.size(); ++I) {
-      const auto b = static_cast<std::size_t>(s.body_of_particle(I));
-      zmin[b] = std::min(zmin[b], x[I][1]);
-      zmax[b] = std::max(zmax[b], x[I][1]);
-      if (std::abs(X[I][1]) <= 1e-9 * p.lower_height_m) radius[b] = std::max(radius[b], x[I][0]);
-      const double m = s.mass()[I];
-      P += m * s.coefficient_velocities()[I][1];
-      P0 += m * (b == 0 ? p.velocity_m_s : -p.velocity_m_s);
-      scale += m * p.velocity_m_s;
-    }
-    return {{"lower_final_height_mm", (zmax[0] - zmin[0]) * 1e3},
-            {"upper_final_height_mm", (zmax[1] - zmin[1]) * 1e3},
-            {"lower_final_radius_mm", radius[0] * 1e3},
-            {"upper_final_radius_mm", radius[1] * 1e3},
-            {"max_penetration_mm", s.max_penetration() * 1e3},
-            {"momentum_error", std::abs(P - P0) / scale}};
+                                                             const std::vector<vec2>& tool_force) {
+    return measure_from(measure_maxima(s), measure_sums(s, p), s, p, tool_force);
   }
-
+  // Per rod, the maxima over the solver's own particles of z, -z and the face's radius; the
+  // exact sums over them of the axial momentum's change and of m |v0|: on several processes each
+  // rank takes its part's, and one maximum and one exact sum combine them
+  // (tools/runner/row_maxima.hpp).
+  template <class Solver>
+  static std::array<double, 6> measure_maxima(const Solver& s) {
+    const auto& X = s.initial_positions();
+    std::array<double, 6> m{-1e300, -1e300, -1e300, -1e300, 0.0, 0.0};  // zmax, -zmin, radius per rod
+    for (index_t I = s.model().own.particles.begin; I < s.model().own.particles.end; ++I) {
+      const vec2 x = position_at_particle(s.model(), s.coefficients(), I);
+      const auto b = static_cast<std::size_t>(s.body_of_particle(I));
+      m[b] = std::max(m[b], x[1]);
+      m[2 + b] = std::max(m[2 + b], -x[1]);
+      if (std::abs(X[I][1]) <= 1e-12) m[4 + b] = std::max(m[4 + b], x[0]);  // on the face, to round-off
+    }
+    return m;
+  }
+  template <class Solver>
+  static std::array<exact_sum, 2> measure_sums(const Solver& s, const parameters& p) {
+    std::array<exact_sum, 2> sum;  // sum m (v - v0), sum m |v0|
+    for (index_t I = s.model().own.particles.begin; I < s.model().own.particles.end; ++I) {
+      const double m = s.mass()[I];
+      sum[0].add(m * s.coefficient_velocities()[I][1]);
+      sum[0].add(-(m * (s.body_of_particle(I) == 0 ? p.velocity_m_s : -p.velocity_m_s)));
+      sum[1].add(m * p.velocity_m_s);
+    }
+    return sum;
+  }
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure_from(const std::array<double, 6>& m,
+                                                                  const std::array<exact_sum, 2>& sum, const Solver& s,
+                                                                  const parameters&,
+                                                                  const std::vector<vec2>& /*tool_force*/) {
+    return {{"lower_final_height_mm", (m[0] + m[2]) * 1e3},
+            {"upper_final_height_mm", (m[1] + m[3]) * 1e3},
+            {"lower_final_radius_mm", m[4] * 1e3},
+            {"upper_final_radius_mm", m[5] * 1e3},
+            {"max_penetration_mm", s.max_penetration() * 1e3},
+            {"momentum_error", std::abs(sum[0].value()) / sum[1].value()}};
+  }
 };
 
 }  // namespace rkpm::cases

@@ -6,17 +6,21 @@
 // material up into the hub recess (r < 12 mm) and out into the rim recess (r > 24 mm).
 // Frictionless; power-law flow stress 576.79 (0.01658 + eps_p)^0.3593 MPa.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <rkpm/contact/rigid_tool.hpp>
+#include <rkpm/core/exact_sum.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
+#include <rkpm/solver/fields.hpp>
 #include <rkpm/solver/problem.hpp>
 
 #include "cases/contact_setup.hpp"
@@ -130,24 +134,42 @@ struct wheel_forging {
   // deformed volume sum_q J_q w_q, heights reached in the hub (r < 10 mm) and rim (r > 26 mm)
   // recesses, punch force (N, averaged over the last output interval).
   template <class Solver>
-  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters&,
+  static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
                                                              const std::vector<vec2>& tool_force) {
-    const auto x = s.particle_positions();
-    double hub = 0.0, rim = 0.0;
-    for (const vec2& xi : x) {
-      if (xi[0] < 10e-3) hub = std::max(hub, xi[1]);
-      if (xi[0] > 26e-3) rim = std::max(rim, xi[1]);
+    return measure_from(measure_maxima(s), measure_sums(s), s, p, tool_force);
+  }
+  // The heights' maxima over the solver's own particles, and the volumes' exact sums over its
+  // own points: on several processes each rank takes its part's, and one maximum and one exact
+  // sum combine them (tools/runner/row_maxima.hpp).
+  template <class Solver>
+  static std::array<double, 2> measure_maxima(const Solver& s) {
+    std::array<double, 2> m{0.0, 0.0};  // hub, rim
+    for (index_t I = s.model().own.particles.begin; I < s.model().own.particles.end; ++I) {
+      const vec2 x = position_at_particle(s.model(), s.coefficients(), I);
+      if (x[0] < 10e-3) m[0] = std::max(m[0], x[1]);
+      if (x[0] > 26e-3) m[1] = std::max(m[1], x[1]);
     }
-    double v0 = 0.0, v = 0.0;
+    return m;
+  }
+  template <class Solver>
+  static std::array<exact_sum, 2> measure_sums(const Solver& s) {
+    std::array<exact_sum, 2> v;  // sum_q w_q, sum_q J_q w_q
     const auto& w = s.model().points.weight;
-    for (std::size_t q = 0; q < w.size(); ++q) {
-      v0 += w[q];
-      v += w[q] * s.point_det_F(q);
-    }
+    for_each_owned_point(s.model(), [&](index_t q) {
+      v[0].add(w[q]);
+      v[1].add(w[q] * s.point_det_F(q));
+    });
+    return v;
+  }
+  template <class Solver>
+  static std::vector<std::pair<std::string, double>> measure_from(const std::array<double, 2>& m,
+                                                                  const std::array<exact_sum, 2>& v, const Solver& s,
+                                                                  const parameters&,
+                                                                  const std::vector<vec2>& tool_force) {
     return {{"max_penetration_mm", s.max_penetration() * 1e3},
-            {"volume_change", v / v0 - 1.0},
-            {"hub_height_mm", hub * 1e3},
-            {"rim_height_mm", rim * 1e3},
+            {"volume_change", v[1].value() / v[0].value() - 1.0},
+            {"hub_height_mm", m[0] * 1e3},
+            {"rim_height_mm", m[1] * 1e3},
             {"punch_force_N", tool_force.empty() ? 0.0 : std::abs(tool_force[0][1])}};
   }
 };

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <rkpm/core/process_group.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 
 namespace rkpm {
@@ -20,8 +21,6 @@ inline std::vector<vec2> values_at_particles(const discrete_model& m, const std:
   return out;
 }
 
-// at_point(q) carried to the particles by the lumped L2 projection.
-// One serial pass over the points: each particle's sum runs over its points in ascending order.
 // Current position x_I = X_I + sum_J N_J(X_I) d_J of particle I, and of every particle.
 inline vec2 position_at_particle(const discrete_model& m, const std::vector<vec2>& d, index_t I) {
   return m.at_particles.interpolate(I, d) + m.particles.position[I];
@@ -30,6 +29,18 @@ inline std::vector<vec2> positions_at_particles(const discrete_model& m, const s
   std::vector<vec2> x(m.particle_count());
   for (index_t I = 0; I < m.particle_count(); ++I) x[I] = position_at_particle(m, d, I);
   return x;
+}
+
+// f(q) for each point this process owns: every point of a whole model; of a part of a run on
+// several processes, the points it owns among those it computes (parallel/global_blocks.hpp), so
+// that a sum over every process's calls counts each point once.
+template <class F>
+void for_each_owned_point(const discrete_model& m, F&& f) {
+  if (!m.own.group) {
+    for (index_t q = 0; q < m.point_count(); ++q) f(q);
+    return;
+  }
+  for (const stored_index q : m.own.group->owned_points()) f(static_cast<index_t>(q));
 }
 
 namespace detail {
@@ -47,6 +58,8 @@ void project_into(const discrete_model& m, PointValue&& at_point, At&& at) {
 
 }  // namespace detail
 
+// at_point(q) carried to the particles by the lumped L2 projection.
+// One serial pass over the points: each particle's sum runs over its points in ascending order.
 template <class Value, class PointValue>
 std::vector<Value> project_to_particles(const discrete_model& m, PointValue&& at_point) {
   std::vector<Value> out(m.particle_count(), at_point(index_t{0}) * 0.0);

@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include <rkpm/core/exact_sum.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/solver_output.hpp>
 
@@ -146,19 +147,19 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
           return s.max_penetration();
         } else if constexpr (std::is_same_v<H, momentum_history>) {
           const auto body = body_particles(s, c, h.body);
-          double P = 0.0;
-          for (index_t I = body.first; I < body.last; ++I) P += s.mass()[I] * s.coefficient_velocities()[I][h.component];
-          return P;
+          exact_sum P;  // exact sums, as the typed cases' (a row's sums then reduce over processes)
+          for (index_t I = body.first; I < body.last; ++I) P.add(s.mass()[I] * s.coefficient_velocities()[I][h.component]);
+          return P.value();
         } else {
           const auto in_body = of_body(s, c, h.body);
-          double v0 = 0.0, v = 0.0;
+          exact_sum v0, v;
           const auto& w = s.model().points.weight;
           for (std::size_t q = 0; q < w.size(); ++q) {
             if (!in_body(q)) continue;
-            v0 += w[q];
-            v += w[q] * s.point_det_F(q);
+            v0.add(w[q]);
+            v.add(w[q] * s.point_det_F(q));
           }
-          return v / v0 - 1.0;
+          return v.value() / v0.value() - 1.0;
         }
       },
       kind);
