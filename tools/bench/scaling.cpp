@@ -5,9 +5,11 @@
 // round one window on 1 thread and one on 2 threads of the same length, in alternating order
 // (so that a drift of the cost along the impact does not read as a thread speed-up). The
 // speed-up is the median of the rounds' ratios: a burst of load from the host (this is a
-// virtual machine) spoils one round, not the figure. Prints a table and writes DIR/scaling.csv
-// and DIR/scaling.png (cost per particle-step against particles, log x). The machine may be
-// shared: read ratios within one run, not absolute times.
+// virtual machine) spoils one round, not the figure. With --rereference the child then rebuilds
+// the model in the current configuration once (explicit_solver::rereference, docs/method.md
+// section 5.8) on one thread, and reports it in steps on one thread.
+// Prints a table and writes DIR/scaling.csv and DIR/scaling.png (cost per particle-step against
+// particles, log x). The machine may be shared: read ratios within one run, not absolute times.
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -41,6 +43,7 @@ struct options {
   int rounds = 5;  // 1-thread / 2-thread window pairs
   std::string rule = "q2";
   bool two_threads = true;  // --one-thread: skip the 2-thread window (a busy machine)
+  bool rereference = false; // --rereference: time one rebuild of the model after the steps
   std::filesystem::path out = "results/bench";
 };
 
@@ -50,6 +53,8 @@ struct measurement {
   double setup_s = 0.0, one_thread_s = 0.0, two_threads_s = 0.0;
   double speedup = 0.0;  // median over the rounds of (1-thread time / 2-thread time)
   double resident_bytes = 0.0;  // resident set after the timed steps (the peak may be in the set-up)
+  double rebuild_s = 0.0;        // --rereference: one rebuild, on one thread
+  double rebuild_steps = 0.0;    // the same in steps on one thread
 };
 
 // The resident set now, from /proc/self/statm (pages).
@@ -102,6 +107,14 @@ measurement measure(int resolution, const options& o) {
     m.speedup = ratio.size() % 2 ? ratio[h] : 0.5 * (ratio[h - 1] + ratio[h]);
   }
   m.resident_bytes = resident_bytes_now();
+  if (o.rereference) {
+    omp_set_num_threads(1);  // against the steps on one thread
+    const double step_s = m.one_thread_s / static_cast<double>(rounds * per_round);
+    const auto t0 = std::chrono::steady_clock::now();
+    s.rereference();
+    m.rebuild_s = seconds_since(t0);
+    m.rebuild_steps = m.rebuild_s / step_s;
+  }
   return m;
 }
 
@@ -157,6 +170,7 @@ options parse(int argc, char** argv) {
     else if (a == "--warm-up") o.warm_up_steps = std::stoi(value());
     else if (a == "--rounds") o.rounds = std::stoi(value());
     else if (a == "--one-thread") o.two_threads = false;
+    else if (a == "--rereference") o.rereference = true;
     else if (a == "--rule") {
       o.rule = value();
       if (o.rule != "q2" && o.rule != "q4") fail("rkpm_scaling: --rule q2 or q4, not {}", o.rule);
@@ -164,10 +178,12 @@ options parse(int argc, char** argv) {
     else if (a == "--help" || a == "-h") {
       fmt::print(
           "usage: rkpm_scaling [--max-resolution K] [--resolutions 1,2,4,...] [--particle-steps N]\n"
-          "                    [--warm-up STEPS] [--rounds R] [--rule q2|q4] [--one-thread] [--out DIR]\n"
+          "                    [--warm-up STEPS] [--rounds R] [--rule q2|q4] [--one-thread] [--rereference]\n"
+          "                    [--out DIR]\n"
           "Taylor bar (cubic, linear, paper contact); one child process per resolution K (about\n"
           "1071 K^2 particles); timed steps per thread count = N / particles (default 4e6, 3 to 2000),\n"
-          "in R rounds (default 5) of a 1-thread and a 2-thread window; speed-up: the rounds' median.\n");
+          "in R rounds (default 5) of a 1-thread and a 2-thread window; speed-up: the rounds' median.\n"
+          "--rereference: then one rebuild of the model in the current configuration, in steps.\n");
       std::exit(0);
     } else fail("rkpm_scaling: unknown option {} (--help lists them)", a);
   }
@@ -202,7 +218,8 @@ int main(int argc, char** argv) try {
   const auto csv = o.out / "scaling.csv";
   std::ofstream out(csv);
   out << "particles,points,setup_s,us_per_particle_step_1_thread,us_per_particle_step_2_threads,speedup_2_threads,"
-         "peak_rss_bytes_per_particle,stepping_rss_bytes_per_particle,resolution,rule,timed_steps\n";
+         "peak_rss_bytes_per_particle,stepping_rss_bytes_per_particle,resolution,rule,timed_steps,rebuild_s,"
+         "rebuild_in_steps\n";
   fmt::print("Taylor bar, {}, cubic, linear, paper contact (one child process per size)\n", o.rule);
   fmt::print("{:>10} {:>10} {:>11} {:>11} {:>9} {:>11} {:>11} {:>10}\n", "particles", "points", "us/p-step 1",
              "us/p-step 2", "speed-up", "peak B/p", "stepping B/p", "set-up (s)");
@@ -212,11 +229,14 @@ int main(int argc, char** argv) try {
     const double one = 1e6 * m.one_thread_s / ps, two = 1e6 * m.two_threads_s / ps;  // two = 0: not timed
     const double bytes = rss / static_cast<double>(m.particles);
     const double stepping = m.resident_bytes / static_cast<double>(m.particles);
-    fmt::print("{:>10} {:>10} {:>11.3f} {:>11.3f} {:>9.2f} {:>11.0f} {:>11.0f} {:>10.2f}\n", m.particles, m.points, one,
+    fmt::print("{:>10} {:>10} {:>11.3f} {:>11.3f} {:>9.2f} {:>11.0f} {:>11.0f} {:>10.2f}", m.particles, m.points, one,
                two, m.speedup, bytes, stepping, m.setup_s);
+    if (o.rereference) fmt::print("  rebuild {:.3f} s = {:.1f} steps", m.rebuild_s, m.rebuild_steps);
+    fmt::print("\n");
     std::fflush(stdout);
-    out << fmt::format("{},{},{:.4f},{:.5f},{:.5f},{:.3f},{:.0f},{:.0f},{},{},{}\n", m.particles, m.points, m.setup_s, one,
-                       two, m.speedup, bytes, stepping, r, o.rule, m.steps);
+    out << fmt::format("{},{},{:.4f},{:.5f},{:.5f},{:.3f},{:.0f},{:.0f},{},{},{},{:.4f},{:.2f}\n", m.particles, m.points,
+                       m.setup_s, one, two, m.speedup, bytes, stepping, r, o.rule, m.steps, m.rebuild_s,
+                       m.rebuild_steps);
     out.flush();
   }
   out.close();
