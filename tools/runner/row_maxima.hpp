@@ -23,7 +23,6 @@
 #include <utility>
 #include <vector>
 
-#include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
 
 namespace rkpm::runner {
@@ -34,32 +33,28 @@ concept MeasuredByMaxima = requires(const Solver& s, const typename Case::parame
   { Case::measure_from(Case::measure_maxima(s), s, p, f) } -> std::same_as<std::vector<std::pair<std::string, double>>>;
 };
 
-// The case's maxima over the solver's part, as the reduction sends them.
+// The maxima function a run on several processes reduces: the case's maxima over the solver's
+// part, as the reduction sends them (empty for a case that has none).
 template <class Case, class Solver>
-std::vector<double> row_maxima(const Solver& s) {
-  const auto m = Case::measure_maxima(s);
-  return {m.begin(), m.end()};
+std::function<std::vector<double>(const Solver&)> row_maxima_of() {
+  if constexpr (MeasuredByMaxima<Case, Solver>)
+    return [](const Solver& s) {
+      const auto m = Case::measure_maxima(s);
+      return std::vector<double>(m.begin(), m.end());
+    };
+  else
+    return {};
 }
 
-// The case's measures from the whole model's maxima (`maxima`: row_maxima's length) and the
-// totals `s` holds (a part of the model).
+// The case's measures from the whole model's maxima (`maxima`: row_maxima_of's values reduced
+// over the ranks, so of the case's length) and the totals `s` holds (a part of the model).
 template <class Case, class Solver>
 std::vector<std::pair<std::string, double>> measures_from_maxima(const std::vector<double>& maxima, const Solver& s,
                                                                   const typename Case::parameters& p,
                                                                   const std::vector<vec2>& mean_tool_force) {
   decltype(Case::measure_maxima(s)) m{};
-  if (maxima.size() != m.size()) fail("history row: {} maxima for a case that takes {}", maxima.size(), m.size());
   std::copy(maxima.begin(), maxima.end(), m.begin());
   return Case::measure_from(m, s, p, mean_tool_force);
-}
-
-// The maxima function a run on several processes reduces (empty for a case that has none).
-template <class Case, class Solver>
-std::function<std::vector<double>(const Solver&)> row_maxima_of() {
-  if constexpr (MeasuredByMaxima<Case, Solver>)
-    return [](const Solver& s) { return row_maxima<Case>(s); };
-  else
-    return {};
 }
 
 }  // namespace rkpm::runner
