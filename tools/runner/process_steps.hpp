@@ -23,15 +23,20 @@
 
 namespace rkpm::runner {
 
+// What an observation reads of the solver beyond its time and step.
+enum class state_needed {
+  none,         // nothing: pass(time, end time, steps) alone
+  own_part,     // a history row's reductions (or a snapshot's index) alone: observe_part(rank
+                // 0's part, the case's maxima reduced over the ranks: row_maxima.hpp)
+  whole_model,  // `whole` is brought up to date and observe(whole) called
+};
+
 // What rank 0's observer (run_observer.hpp) tells the divided run at each observation, at (time,
-// end time): whether the call reads the state (needs), and then whether it reads the whole
-// model (needs_whole: `whole` is brought up to date and observe(whole) called) or only a history
-// row's reductions (observe_part(rank 0's part, the case's maxima reduced over the ranks:
-// row_maxima.hpp)); else pass(time, end time, steps) alone. And the .pvtu index of the snapshot
-// that call writes, if any (empty if none), whose pieces every rank writes before it.
+// end time): what the call reads (needs); and the .pvtu index of the snapshot that call writes,
+// if any (empty if none), whose pieces every rank writes before it.
 template <class Solver>
 struct rank0_observation {
-  std::function<bool(double, double)> needs, needs_whole;
+  std::function<state_needed(double, double)> needs;
   std::function<std::filesystem::path(double, double)> snapshot;
   std::function<void(double, double, long)> pass;
   std::function<void(const Solver&)> observe;

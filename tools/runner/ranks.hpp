@@ -106,8 +106,9 @@ class rank_steps final : public process_steps<Solver> {
     const double end = part.options().end_time;
     constexpr char observe_whole = 1, snapshot = 2, observe_part = 4;
     const auto reads = [&](double t) -> char {
-      if (!o.needs(t, end)) return 0;
-      return maxima_ && !o.needs_whole(t, end) ? observe_part : observe_whole;
+      const state_needed needs = o.needs(t, end);
+      if (needs == state_needed::none) return 0;
+      return maxima_ && needs == state_needed::own_part ? observe_part : observe_whole;
     };
     part.run(
         [&](const Solver& at) {

@@ -46,15 +46,21 @@ std::function<std::vector<double>(const Solver&)> row_maxima_of() {
     return {};
 }
 
-// The case's measures from the whole model's maxima (`maxima`: row_maxima_of's values reduced
-// over the ranks, so of the case's length) and the totals `s` holds (a part of the model).
+// A history row's measures: with `maxima` (row_maxima_of's values reduced over the ranks, so of
+// the case's length), from the whole model's maxima and the totals `s` holds (a part of the
+// model); with none, from `s`, the whole model (Case::measure).
 template <class Case, class Solver>
-std::vector<std::pair<std::string, double>> measures_from_maxima(const std::vector<double>& maxima, const Solver& s,
-                                                                  const typename Case::parameters& p,
-                                                                  const std::vector<vec2>& mean_tool_force) {
-  decltype(Case::measure_maxima(s)) m{};
-  std::copy(maxima.begin(), maxima.end(), m.begin());
-  return Case::measure_from(m, s, p, mean_tool_force);
+std::vector<std::pair<std::string, double>> row_measures(const std::vector<double>& maxima, const Solver& s,
+                                                          const typename Case::parameters& p,
+                                                          const std::vector<vec2>& mean_tool_force) {
+  if constexpr (MeasuredByMaxima<Case, Solver>) {
+    if (!maxima.empty()) {
+      decltype(Case::measure_maxima(s)) m{};
+      std::copy(maxima.begin(), maxima.end(), m.begin());
+      return Case::measure_from(m, s, p, mean_tool_force);
+    }
+  }
+  return Case::measure(s, p, mean_tool_force);
 }
 
 }  // namespace rkpm::runner

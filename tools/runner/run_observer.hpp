@@ -2,10 +2,10 @@
 // run_observer<Case, Solver>: what rkpm_run does after every step (simulate.hpp calls it through
 // explicit_solver::run): the progress line, a history.csv row at every history interval (the
 // case's measures, the tool forces averaged over the interval, the energies), a VTK snapshot at
-// every snapshot interval (the background cells on the particles, with the tools' vertices),
-// the figure shapes, and a checkpoint after the first step that
-// reaches each multiple of the checkpoint interval. Its whole state is a run_record, which the
-// checkpoints carry, so a restarted run continues the same outputs (run_record.hpp).
+// every snapshot interval (the background cells on the particles, with the tools' vertices), the
+// figure shapes, and a checkpoint after the first step that reaches each multiple of the
+// checkpoint interval. Its whole state is a run_record, which the checkpoints carry, so a
+// restarted run continues the same outputs (run_record.hpp).
 
 #include <chrono>
 #include <filesystem>
@@ -29,6 +29,7 @@
 #include "figures.hpp"
 #include "interrupt.hpp"
 #include "json.hpp"
+#include "process_steps.hpp"
 #include "run_hooks.hpp"
 #include "row_maxima.hpp"
 #include "run_record.hpp"
@@ -110,23 +111,19 @@ class run_observer {
       throw stop_requested{t, static_cast<long>(s.steps())};
   }
 
-  // Whether the call at time t would read the solver beyond its time and step (a history row, a
-  // snapshot, a shape, a checkpoint, an interrupt, a caller's hook). A run on several processes
-  // brings rank 0's whole solver up to date only for those calls (ranks.hpp) and makes the
-  // others through pass().
-  bool needs_state(double t, double end_time) const {
-    if (skip_next_) return false;
+  // What the call at time t reads of the solver beyond its time and step: none (a run on several
+  // processes then makes it through pass()); for a history row or a snapshot alone, rank 0's own
+  // part (observe_part) when the rows' measures are extremes reduced over the ranks and the
+  // snapshots are written in pieces; else (and for anything reads_model lists) the whole model.
+  state_needed needs(double t, double end_time) const {
+    if (skip_next_) return state_needed::none;
     const bool last = is_last(t, end_time);
-    return t >= record_.next_history || snapshot_at(t, last) || reads_model(t, last);
+    if (reads_model(t, last)) return state_needed::whole_model;
+    if (t < record_.next_history && !snapshot_at(t, last)) return state_needed::none;
+    return pieces_ && rows_by_maxima_ ? state_needed::own_part : state_needed::whole_model;
   }
-  // Of those calls, on several processes, the ones that read the whole model: all but a history
-  // row whose measures are extremes (observe_part) and a snapshot written in pieces.
-  bool needs_whole_state(double t, double end_time) const {
-    return !(pieces_ && rows_by_maxima_) || reads_model(t, is_last(t, end_time));
-  }
-  // A call that needs_whole_state declines: rank 0's part of the run observed as the whole (its
-  // time, step, energies and tool impulses are the run's), the case's measures from `maxima`,
-  // the whole model's (row_maxima.hpp).
+  // A call that needs own_part: rank 0's part observed as the whole (its time, step, energies and
+  // tool impulses are the run's), with `maxima`, the case's over the whole model (row_maxima.hpp).
   void observe_part(const Solver& part, std::vector<double> maxima) {
     row_maxima_ = std::move(maxima);
     const struct forget {
@@ -145,7 +142,7 @@ class run_observer {
   // that is due to write it (parallel/snapshot_pieces.hpp), which then adds the index to the .pvd.
   void write_snapshots_in_pieces() { pieces_ = true; }
 
-  // The call when needs_state(t, end_time) is false: the progress line only.
+  // The call when needs(t, end_time) is none: the progress line only.
   void pass(double t, double end_time, long steps) {
     if (std::exchange(skip_next_, false)) return;
     if (!quiet_) progress_.update(t, end_time, steps);
@@ -225,10 +222,9 @@ class run_observer {
   }
 
   // The tool forces are the impulses of the interval (explicit_solver::tool_impulses at its end
-  // less at its start) over its length. The run's last interval
-  // can be a step or two long (the row before fell just short of the end time): a force averaged
-  // over so short a span is one step's contact impulse, not a force, so that row averages over
-  // it and the interval before.
+  // less at its start) over its length. The run's last interval can be a step or two long (the
+  // row before fell just short of the end time): a force averaged over so short a span is one
+  // step's contact impulse, not a force, so that row averages over it and the interval before.
   void add_history_row(const Solver& s, double t, bool last) {
     const double span = t - record_.interval_start;
     const bool merge = last && span < 0.5 * record_.history_interval && record_.previous_span > 0.0;
@@ -243,11 +239,7 @@ class run_observer {
     record_.start_impulse = impulse;
     record_.previous_span = span;
     record_.interval_start = t;
-    if constexpr (MeasuredByMaxima<Case, Solver>)
-      measures_ = row_maxima_.empty() ? Case::measure(s, params_, mean_force_)
-                                      : measures_from_maxima<Case>(row_maxima_, s, params_, mean_force_);
-    else
-      measures_ = Case::measure(s, params_, mean_force_);
+    measures_ = row_measures<Case>(row_maxima_, s, params_, mean_force_);
     std::vector<double> row{t};
     for (const auto& [k, v] : measures_) row.push_back(v);
     for (const vec2& f : mean_force_) {
@@ -300,10 +292,8 @@ class run_observer {
   bool skip_next_ = false;
   double output_s_ = 0.0;
   bool pieces_ = false;
-  // Whether the rows' measures are extremes reduced over the ranks (a case with
-  // measure_maxima and no companions), and the current call's (observe_part).
-  bool rows_by_maxima_ = false;
-  std::vector<double> row_maxima_;
+  bool rows_by_maxima_ = false;     // the rows' measures are extremes (measure_maxima, no companions)
+  std::vector<double> row_maxima_;  // the current call's, reduced over the ranks (observe_part)
 };
 
 }  // namespace rkpm::runner

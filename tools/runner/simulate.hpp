@@ -228,8 +228,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     if (!std::exchange(settled, true)) steps->settle(&s);
   };
   try {
-    steps->run(&s, {.needs = [&](double t, double end) { return observe.needs_state(t, end); },
-                    .needs_whole = [&](double t, double end) { return observe.needs_whole_state(t, end); },
+    steps->run(&s, {.needs = [&](double t, double end) { return observe.needs(t, end); },
                     .snapshot = [&](double t, double end) { return observe.snapshot_due(t, end); },
                     .pass = [&](double t, double end, long n) { observe.pass(t, end, n); },
                     .observe = [&](const Solver& at) { observe(at); },
