@@ -16,7 +16,7 @@
 #include <rkpm/material/j2_plasticity.hpp>
 
 #include "tools/runner/case_file/case_material.hpp"
-#include "tools/runner/case_file/read_body.hpp"
+#include "tools/runner/case_file/read_material.hpp"
 
 #include "support/error_message.hpp"
 #include "support/tensors.hpp"

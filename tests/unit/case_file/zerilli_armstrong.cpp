@@ -1,7 +1,8 @@
-// "law": "zerilli_armstrong" in a case file (tools/runner/case_file/read_body.hpp; docs/method.md
-// section 4.6): cases/taylor_copper_za.json loads into the runner's temperature-carrying material,
-// whose updates are material::zerilli_armstrong's bit for bit; every key is checked with one line
-// naming its pointer and the fix, and each lattice takes exactly its own keys.
+// "law": "zerilli_armstrong" in a case file (tools/runner/case_file/read_temperature_laws.hpp;
+// docs/method.md section 4.6): cases/taylor_copper_za.json loads into the runner's
+// temperature-carrying material, whose updates are material::zerilli_armstrong's bit for bit;
+// every key is checked with one line naming its pointer and the fix, and each lattice takes
+// exactly its own keys.
 #include <doctest/doctest.h>
 
 #include <algorithm>
