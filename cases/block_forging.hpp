@@ -111,7 +111,7 @@ struct block_forging {
   }
   // The measures' maxima over the solver's own particles: the largest x and minus the smallest.
   // On several processes each rank takes its part's and one maximum combines them
-  // (tools/runner/row_maxima.hpp); the penetration is the same on every rank.
+  // (tools/runner/row_reduction.hpp); the penetration is the same on every rank.
   template <class Solver>
   static std::array<double, 2> measure_maxima(const Solver& s) {
     constexpr double none = -std::numeric_limits<double>::infinity();

@@ -124,7 +124,7 @@ struct rod_on_rod {
   // Per rod, the maxima over the solver's own particles of z, -z and the face's radius; the
   // exact sums over them of the axial momentum's change and of m |v0|: on several processes each
   // rank takes its part's, and one maximum and one exact sum combine them
-  // (tools/runner/row_maxima.hpp).
+  // (tools/runner/row_reduction.hpp).
   template <class Solver>
   static std::array<double, 6> measure_maxima(const Solver& s) {
     const auto& X = s.initial_positions();

@@ -136,11 +136,11 @@ struct wheel_forging {
   template <class Solver>
   static std::vector<std::pair<std::string, double>> measure(const Solver& s, const parameters& p,
                                                              const std::vector<vec2>& tool_force) {
-    return measure_from(measure_maxima(s), measure_sums(s), s, p, tool_force);
+    return measure_from(measure_maxima(s), measure_sums(s, p), s, p, tool_force);
   }
   // The heights' maxima over the solver's own particles, and the volumes' exact sums over its
   // own points: on several processes each rank takes its part's, and one maximum and one exact
-  // sum combine them (tools/runner/row_maxima.hpp).
+  // sum combine them (tools/runner/row_reduction.hpp).
   template <class Solver>
   static std::array<double, 2> measure_maxima(const Solver& s) {
     std::array<double, 2> m{0.0, 0.0};  // hub, rim
@@ -152,7 +152,7 @@ struct wheel_forging {
     return m;
   }
   template <class Solver>
-  static std::array<exact_sum, 2> measure_sums(const Solver& s) {
+  static std::array<exact_sum, 2> measure_sums(const Solver& s, const parameters&) {
     std::array<exact_sum, 2> v;  // sum_q w_q, sum_q J_q w_q
     const auto& w = s.model().points.weight;
     for_each_owned_point(s.model(), [&](index_t q) {

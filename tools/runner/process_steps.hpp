@@ -9,7 +9,7 @@
 // case whose measures are not extremes). `whole` is then the solver one process would have, bit
 // for bit, so the observer writes the one-process files unchanged. A call that adds a history
 // row (or a snapshot's index) alone observes rank 0's part instead, with the case's extremes
-// reduced over the ranks (row_maxima.hpp): no gather, the same row. Every call is collective: the other ranks make the same calls
+// reduced over the ranks (row_reduction.hpp): no gather, the same row. Every call is collective: the other ranks make the same calls
 // with no `whole` (follow_run in ranks.hpp), so an error on any rank is thrown on every rank
 // alike.
 
@@ -21,13 +21,15 @@
 
 #include <rkpm/solver/checkpoint.hpp>
 
+#include "row_reduction.hpp"
+
 namespace rkpm::runner {
 
 // What an observation reads of the solver beyond its time and step.
 enum class state_needed {
   none,         // nothing: pass(time, end time, steps) alone
   own_part,     // a history row's reductions (or a snapshot's index) alone: observe_part(rank
-                // 0's part, the case's maxima reduced over the ranks: row_maxima.hpp)
+                // 0's part, the case's maxima and sums reduced over the ranks: row_reduction.hpp)
   whole_model,  // `whole` is brought up to date and observe(whole) called
 };
 
@@ -40,7 +42,7 @@ struct rank0_observation {
   std::function<std::filesystem::path(double, double)> snapshot;
   std::function<void(double, double, long)> pass;
   std::function<void(const Solver&)> observe;
-  std::function<void(const Solver&, std::vector<double>)> observe_part;
+  std::function<void(const Solver&, row_reduction)> observe_part;
 };
 
 template <class Solver>

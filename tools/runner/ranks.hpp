@@ -6,18 +6,21 @@
 // that never steps itself. What each observer call gathers:
 //   the time and step only (most calls)   nothing: the progress line (pass)
 //   a history row, a snapshot             nothing whole: each rank takes the case's extremes
-//                                         over its part, one MPI_MAX brings them to rank 0
-//                                         (row_maxima.hpp), which observes its own part, whose
+//                                         and exact sums over its part, one MPI_MAX and one
+//                                         MPI_SUM bring them to rank 0 (row_reduction.hpp),
+//                                         which observes its own part, whose
 //                                         time, energies and tool impulses are the run's; each
 //                                         rank writes its snapshot piece (snapshot_pieces.hpp)
 //   the last call, a figure shape, a      the whole state into the whole solver
 //   checkpoint, a caller's hook, every    (parallel::mirror_state), observed as one process
-//   row of a case without extremes        observes its own
+//   row of a case without them            observes its own
 // so summary.json, history.csv, the figures and the checkpoints are the files one process
 // writes, bit for bit, and rank 0 adds the snapshots' .pvtu indexes to the .pvd. The other ranks
 // follow the same collective calls (follow_run) and write nothing else.
 // Cost of this form: rank 0 holds the whole model beside its part.
 
+#include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -34,7 +37,7 @@
 #include <rkpm/solver/make_model.hpp>
 
 #include "process_steps.hpp"
-#include "row_maxima.hpp"
+#include "row_reduction.hpp"
 #include "run_record.hpp"
 #include "simulate.hpp"
 
@@ -46,11 +49,12 @@ class rank_steps final : public process_steps<Solver> {
   using problem_type = problem<typename Solver::material_type, typename Solver::contact_type>;
 
   // snapshot_format: the snapshots' (alike on every rank: simulate.hpp's snapshot_format);
-  // maxima: the case's measures' extremes over a part (row_maxima_of; empty: the rows gather).
+  // reduction: the case's measures' extremes and sums over a part (row_reduction_of; empty: the
+  // rows gather).
   rank_steps(parallel::communicator& comm, std::string configuration, io::vtu_format snapshot_format,
-             std::function<std::vector<double>(const Solver&)> maxima = {})
+             std::function<row_reduction(const Solver&)> reduction = {})
       : comm_(comm), configuration_(std::move(configuration)), snapshot_format_(snapshot_format),
-        maxima_(std::move(maxima)) {}
+        reduction_(std::move(reduction)) {}
 
   // Collective: builds the problem and the whole model on every rank, divides the particles, and
   // returns on rank 0 the whole solver it observes (empty elsewhere).
@@ -108,7 +112,7 @@ class rank_steps final : public process_steps<Solver> {
     const auto reads = [&](double t) -> char {
       const state_needed needs = o.needs(t, end);
       if (needs == state_needed::none) return 0;
-      return maxima_ && needs == state_needed::own_part ? observe_part : observe_whole;
+      return reduction_ && needs == state_needed::own_part ? observe_part : observe_whole;
     };
     part.run(
         [&](const Solver& at) {
@@ -123,11 +127,9 @@ class rank_steps final : public process_steps<Solver> {
             pieces_->write(part, index, snapshot_format_);
           }
           if (wanted & observe_part) {
-            std::vector<double> maxima = maxima_(part);
-            MPI_Reduce(root ? MPI_IN_PLACE : maxima.data(), maxima.data(), static_cast<int>(maxima.size()),
-                       MPI_DOUBLE, MPI_MAX, 0, comm_.get());
+            row_reduction reduced = reduce_on_root(reduction_(part));
             comm_.guarded([&] {
-              if (root) o.observe_part(part, std::move(maxima));
+              if (root) o.observe_part(part, std::move(reduced));
             });
             comm_.agree();
             return;
@@ -154,11 +156,37 @@ class rank_steps final : public process_steps<Solver> {
  private:
   bool parts_between_steps() const { return run_->solver().between_steps(); }
 
+  // Collective: the parts' maxima (MPI_MAX) and exact sums (their limbs' MPI_SUM, exact) on rank 0.
+  row_reduction reduce_on_root(row_reduction r) {
+    const bool root = comm_.rank() == 0;
+    MPI_Reduce(root ? MPI_IN_PLACE : r.maxima.data(), r.maxima.data(), static_cast<int>(r.maxima.size()), MPI_DOUBLE,
+               MPI_MAX, 0, comm_.get());
+    if (r.sums.empty()) return r;
+    constexpr int L = exact_sum::limb_count;
+    std::vector<std::int64_t> limbs(r.sums.size() * L);
+    std::vector<double> special(r.sums.size());
+    for (std::size_t k = 0; k < r.sums.size(); ++k) {
+      r.sums[k].normalize();
+      std::copy_n(r.sums[k].limbs().begin(), L, limbs.begin() + static_cast<std::ptrdiff_t>(k * L));
+      special[k] = r.sums[k].special();
+    }
+    MPI_Reduce(root ? MPI_IN_PLACE : limbs.data(), limbs.data(), static_cast<int>(limbs.size()), MPI_INT64_T, MPI_SUM, 0,
+               comm_.get());
+    MPI_Reduce(root ? MPI_IN_PLACE : special.data(), special.data(), static_cast<int>(special.size()), MPI_DOUBLE,
+               MPI_SUM, 0, comm_.get());
+    for (std::size_t k = 0; k < r.sums.size(); ++k) {
+      std::copy_n(limbs.begin() + static_cast<std::ptrdiff_t>(k * L), L, r.sums[k].limbs().begin());
+      r.sums[k].special() = special[k];
+      r.sums[k].normalize();
+    }
+    return r;
+  }
+
   parallel::communicator& comm_;
   std::string configuration_;
   std::optional<parallel::distributed_solver<Solver>> run_;
   io::vtu_format snapshot_format_;
-  std::function<std::vector<double>(const Solver&)> maxima_;
+  std::function<row_reduction(const Solver&)> reduction_;
   std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers, built once
   std::optional<parallel::snapshot_pieces> pieces_;
   bool started_ = false;
@@ -186,7 +214,7 @@ run_outcome run_on_ranks(const run_request& r, const typename Case::parameters& 
                          const method_names& method, const run_options& options,
                          const std::optional<restart_point>& restart) {
   parallel::communicator world;
-  rank_steps<Solver> steps(world, policies.configuration, snapshot_format(r), row_maxima_of<Case, Solver>());
+  rank_steps<Solver> steps(world, policies.configuration, snapshot_format(r), row_reduction_of<Case, Solver>(p));
   if (world.rank() == 0)
     return simulate<Case, Solver>(
         r, p, policies, [&] { return std::move(*steps.build(make_problem, method, options)); }, restart, &steps);

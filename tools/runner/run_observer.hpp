@@ -31,7 +31,7 @@
 #include "json.hpp"
 #include "process_steps.hpp"
 #include "run_hooks.hpp"
-#include "row_maxima.hpp"
+#include "row_reduction.hpp"
 #include "run_record.hpp"
 
 namespace rkpm::runner {
@@ -69,7 +69,7 @@ class run_observer {
     record_.start_impulse.resize(tools_, vec2::Zero());
     record_.previous_start_impulse.resize(tools_, vec2::Zero());
     for (const auto& row : record_.history_rows) history_.row(row);
-    rows_by_maxima_ = MeasuredByMaxima<Case, Solver> && s.companions().empty();
+    rows_by_reduction_ = MeasuredByReduction<Case, Solver> && s.companions().empty();
   }
 
   // Called at the start, after every step and at the end of the run; its time is output_s().
@@ -113,23 +113,23 @@ class run_observer {
 
   // What the call at time t reads of the solver beyond its time and step: none (a run on several
   // processes then makes it through pass()); for a history row or a snapshot alone, rank 0's own
-  // part (observe_part) when the rows' measures are extremes reduced over the ranks and the
+  // part (observe_part) when the rows' measures are reduced over the ranks and the
   // snapshots are written in pieces; else (and for anything reads_model lists) the whole model.
   state_needed needs(double t, double end_time) const {
     if (skip_next_) return state_needed::none;
     const bool last = is_last(t, end_time);
     if (reads_model(t, last)) return state_needed::whole_model;
     if (t < record_.next_history && !snapshot_at(t, last)) return state_needed::none;
-    return pieces_ && rows_by_maxima_ ? state_needed::own_part : state_needed::whole_model;
+    return pieces_ && rows_by_reduction_ ? state_needed::own_part : state_needed::whole_model;
   }
   // A call that needs own_part: rank 0's part observed as the whole (its time, step, energies and
-  // tool impulses are the run's), with `maxima`, the case's over the whole model (row_maxima.hpp).
-  void observe_part(const Solver& part, std::vector<double> maxima) {
-    row_maxima_ = std::move(maxima);
+  // tool impulses are the run's), with `reduced`, the case's over the whole model (row_reduction.hpp).
+  void observe_part(const Solver& part, row_reduction reduced) {
+    row_reduced_ = std::move(reduced);
     const struct forget {
-      std::vector<double>& m;
-      ~forget() { m.clear(); }
-    } after{row_maxima_};
+      row_reduction& r;
+      ~forget() { r = {}; }
+    } after{row_reduced_};
     (*this)(part);
   }
   // The snapshot the call at time t writes, if any (empty if none): next to the .pvd, a .vtu, or
@@ -239,7 +239,7 @@ class run_observer {
     record_.start_impulse = impulse;
     record_.previous_span = span;
     record_.interval_start = t;
-    measures_ = row_measures<Case>(row_maxima_, s, params_, mean_force_);
+    measures_ = row_measures<Case>(row_reduced_, s, params_, mean_force_);
     std::vector<double> row{t};
     for (const auto& [k, v] : measures_) row.push_back(v);
     for (const vec2& f : mean_force_) {
@@ -292,8 +292,8 @@ class run_observer {
   bool skip_next_ = false;
   double output_s_ = 0.0;
   bool pieces_ = false;
-  bool rows_by_maxima_ = false;     // the rows' measures are extremes (measure_maxima, no companions)
-  std::vector<double> row_maxima_;  // the current call's, reduced over the ranks (observe_part)
+  bool rows_by_reduction_ = false;  // the rows' measures reduce over the ranks (measure_maxima, no companions)
+  row_reduction row_reduced_;       // the current call's, reduced over the ranks (observe_part)
 };
 
 }  // namespace rkpm::runner
