@@ -14,6 +14,7 @@
 
 #include <rkpm/contact/rigid_tool.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/particle_set.hpp>
 #include <rkpm/geometry/axisymmetric.hpp>
 #include <rkpm/material/j2_plasticity.hpp>
@@ -58,6 +59,8 @@ struct taylor_bar_parameters : taylor_copper {
   int axial_particles = 51;
   double support_factor = 2.0;
   double penalty_stiffness_N_m = 1e11;
+  double wall_extent = 8.0;  // the wall reaches from r = -R0 to r = wall_extent R0
+  int slave_layers = 1;      // 1: the boundary particles (the problem's default slaves)
 
   using P = taylor_bar_parameters;
   static constexpr auto fields = join_fields<P>(
@@ -72,7 +75,12 @@ struct taylor_bar_parameters : taylor_copper {
           parameter<P>{"axial_particles", "-", "particles along z at resolution 1", &P::axial_particles, 2},
           parameter<P>{"support_factor", "-", "support a = factor x spacing", &P::support_factor},
           parameter<P>{"penalty_stiffness_N_m", "N/m", "stiffness of the penalty contact policy",
-                       &P::penalty_stiffness_N_m}});
+                       &P::penalty_stiffness_N_m},
+          parameter<P>{"wall_extent", "-", "the wall reaches from r = -R0 to this many R0 (a face that spreads "
+                       "past it at high speed needs more)", &P::wall_extent},
+          parameter<P>{"slave_layers", "-", "contact slaves: 1 the boundary particles, k the particles within k "
+                       "cell layers of the surface, 0 every particle (a face that spreads so far that the rows "
+                       "behind it reach the wall between its particles)", &P::slave_layers, 0}});
 };
 
 struct taylor_bar {
@@ -94,6 +102,7 @@ struct taylor_bar {
     require_positive("radius_m", p.radius_m);
     require_positive("height_m", p.height_m);
     require_positive("end_time_s", p.end_time_s);
+    require_positive("wall_extent", p.wall_extent);
     if (resolution < 1) fail("resolution {} must be a whole number >= 1", resolution);
     const Eigen::Vector2i n(refined_count(p.radial_particles, resolution), refined_count(p.axial_particles, resolution));
     const vec2 lo(0.0, 0.0), hi(p.radius_m, p.height_m);
@@ -102,11 +111,15 @@ struct taylor_bar {
         .mesh = make_grid_mesh(lo, hi, n),
         .material = p.material(),
         .contact = make_contact<Contact>(
-            {contact::rigid_tool("wall", {vec2(-p.radius_m, 0.0), vec2(8.0 * p.radius_m, 0.0)},
+            {contact::rigid_tool("wall", {vec2(-p.radius_m, 0.0), vec2(p.wall_extent * p.radius_m, 0.0)},
                                  contact::side::left, contact::tool_motion::fixed())},
             p.friction, p.penalty_stiffness_N_m),
         .initial_velocity = [v = p.velocity_m_s](const vec2&) { return vec2(0.0, -v); },
     };
+    if (p.slave_layers == 0)
+      for (index_t I = 0; I < pr.particles.size(); ++I) pr.slave_particles.push_back(I);
+    else if (p.slave_layers > 1)  // the particles are the mesh nodes; the axis r = 0 is not a surface
+      pr.slave_particles = surface_layers(pr.mesh, p.slave_layers, [&](index_t I) { return pr.particles.position[I][0] <= 0.0; });
     return pr;
   }
 
@@ -121,7 +134,7 @@ struct taylor_bar {
   }
   // The measures' maxima over the solver's own particles and its points: the radius, the
   // height, minus the lowest z, the plastic strain. On several processes each rank takes its
-  // part's and one maximum combines them (tools/runner/row_maxima.hpp).
+  // part's and one maximum combines them (tools/runner/row_reduction.hpp).
   template <class Solver>
   static std::array<double, 4> measure_maxima(const Solver& s) {
     const auto& X = s.initial_positions();
