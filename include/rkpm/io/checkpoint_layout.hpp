@@ -5,10 +5,12 @@
 // The writer (io/checkpoint_writer.hpp) asks the layout for the whole array of every section
 // the layout names (each rank's owned values, gathered on the rank that writes the file); the
 // reader (io/checkpoint_reader.hpp) takes each local value from the whole array by its index
-// there. Arrays the layout does not name (the time, the energies, the contact's per-slave
+// there. A checkpoint in parts (io/checkpoint_parts.hpp) is read through a layout too. Arrays
+// the layout does not name (the time, the energies, the contact's per-slave
 // state) are the same on every rank and written as they are. No MPI here: a backend implements
 // it (parallel/distributed_checkpoint.hpp).
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
@@ -29,6 +31,13 @@ class checkpoint_layout {
   virtual std::string gather(std::string_view section, std::span<const char> local, std::size_t value_bytes) = 0;
   // Whether this rank writes the file.
   virtual bool writes() const = 0;
+  // For a checkpoint in parts (io/checkpoint_parts.hpp): puts the values of `section` at this
+  // rank's indices (whole_index) into `local` from the parts' files and returns true; false for
+  // a checkpoint in one file, whose reader takes them from its own bytes.
+  virtual bool take_from_parts(std::string_view /*section*/, std::span<char> /*local*/,
+                               std::size_t /*value_bytes*/) const {
+    return false;
+  }
 };
 
 }  // namespace rkpm::io

@@ -99,6 +99,8 @@ class checkpoint_reader {
       if (index->size() != values.size())
         fail("checkpoint '{}': section '{}': this rank holds {} values but its layout maps {}", name_, name,
              values.size(), index->size());
+      if (layout_->take_from_parts(name, {reinterpret_cast<char*>(values.data()), values.size() * sizeof(T)}, sizeof(T)))
+        return;
       for (std::size_t i = 0; i < values.size(); ++i) {
         if (static_cast<std::uint64_t>((*index)[i]) >= s.count)
           fail("checkpoint '{}': section '{}' has {} values, this problem's value {} is beyond them: a different "
@@ -143,11 +145,13 @@ class checkpoint_reader {
   }
 
   const std::string& file() const { return name_; }
-
- private:
   struct section : checkpoint_section {
     std::size_t offset = 0;  // of its values in the file
   };
+  // The section table (checked), for a reader of the parts of a checkpoint (io/checkpoint_parts.hpp).
+  const std::vector<section>& sections() const { return sections_; }
+
+ private:
   // The fields of a checked part [at, end): one that would pass `end` makes get() false.
   struct fields {
     const std::string& bytes;

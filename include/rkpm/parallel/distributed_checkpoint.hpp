@@ -34,12 +34,9 @@ namespace rkpm::parallel {
 
 class mpi_checkpoint_layout final : public io::checkpoint_layout {
  public:
-  // The solver's sections of per-particle and per-point arrays (solver/explicit_solver.hpp,
-  // solver/time_step_controller.hpp, solver/point_materials.hpp, solver/checkpoint.hpp).
-  static constexpr std::string_view particle_sections[] = {"solver.mass", "solver.d",  "solver.v",
-                                                           "solver.a",    "solver.f_int", "solver.v_half_prev",
-                                                           "clock.mode"};
-  static constexpr std::string_view point_sections[] = {"points.state", "points.tau", "points.F"};
+  // The solver's sections of per-particle and per-point arrays (solver/checkpoint.hpp).
+  static constexpr const auto& particle_sections = checkpoint_particle_sections;
+  static constexpr const auto& point_sections = checkpoint_point_sections;
 
   mpi_checkpoint_layout(mpi_process_group& group, const discrete_model& part) : group_(group) {
     const halo_plan& plan = group.plan();

@@ -13,6 +13,7 @@
 //   rkpm::read_checkpoint(again, path, Config::name());
 
 #include <filesystem>
+#include <numeric>
 #include <ranges>
 #include <string>
 #include <string_view>
@@ -20,9 +21,18 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
+#include <rkpm/io/checkpoint_parts.hpp>
 #include <rkpm/solver/explicit_solver.hpp>
 
 namespace rkpm {
+
+// The solver's sections of per-particle and per-point arrays (solver/explicit_solver.hpp,
+// solver/time_step_controller.hpp, solver/point_materials.hpp, write_checkpoint below): on several
+// processes, a rank holds its part of them (parallel/distributed_checkpoint.hpp,
+// io/checkpoint_parts.hpp); every other section is the same on every rank.
+inline constexpr std::string_view checkpoint_particle_sections[] = {
+    "solver.mass", "solver.d", "solver.v", "solver.a", "solver.f_int", "solver.v_half_prev", "clock.mode"};
+inline constexpr std::string_view checkpoint_point_sections[] = {"points.state", "points.tau", "points.F"};
 
 template <Geometry G, Material M, Contact Ct>
 io::checkpoint_identity checkpoint_identity_of(const explicit_solver<G, M, Ct>& s, std::string_view configuration) {
@@ -61,8 +71,25 @@ void load_checkpoint(Solver& s, io::checkpoint_reader& r) {
   r.finish();
 }
 
+// A checkpoint in parts (a folder, io/checkpoint_parts.hpp), written on any number of processes,
+// into a one-process solver: every part is read in turn, none is held whole with another.
+template <Geometry G, Material M, Contact Ct>
+void read_checkpoint_parts(explicit_solver<G, M, Ct>& s, const std::filesystem::path& folder,
+                           std::string_view configuration) {
+  std::vector<stored_index> particles(static_cast<std::size_t>(s.model().particle_count())),
+      points(static_cast<std::size_t>(s.model().point_count()));
+  std::iota(particles.begin(), particles.end(), stored_index{0});
+  std::iota(points.begin(), points.end(), stored_index{0});
+  io::checkpoint_parts parts(folder, checkpoint_identity_of(s, configuration),
+                             {checkpoint_particle_sections, {}, std::move(particles)},
+                             {checkpoint_point_sections, {}, std::move(points)});
+  load_checkpoint(s, parts.reader());
+}
+
+// A checkpoint file, or a folder of parts (read_checkpoint_parts).
 template <Geometry G, Material M, Contact Ct>
 void read_checkpoint(explicit_solver<G, M, Ct>& s, const std::filesystem::path& path, std::string_view configuration) {
+  if (std::filesystem::is_directory(path)) return read_checkpoint_parts(s, path, configuration);
   io::checkpoint_reader r(path, checkpoint_identity_of(s, configuration));
   load_checkpoint(s, r);
 }
