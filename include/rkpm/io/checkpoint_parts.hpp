@@ -52,6 +52,53 @@ inline std::filesystem::path checkpoint_part_path(const std::filesystem::path& f
   return folder / fmt::format("part-{}-of-{}{}", k, parts, checkpoint_extension);
 }
 
+// A set of parts refused: names the folder and the part.
+[[noreturn]] inline void refuse_checkpoint_part(const std::filesystem::path& folder, const std::filesystem::path& part,
+                                                std::string_view what) {
+  throw checkpoint_damaged(fmt::format("checkpoint '{}': part '{}': {}; restart from an earlier checkpoint",
+                                       folder.string(), part.string(), what));
+}
+
+// P of a folder of parts, from the parts' names, which must all say the same; refuses a missing part.
+inline std::uint64_t checkpoint_part_count(const std::filesystem::path& folder) {
+  if (!std::filesystem::is_directory(folder)) fail("cannot read checkpoint parts '{}': not a folder", folder.string());
+  std::optional<std::uint64_t> P;
+  std::filesystem::path named;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    const char* end = name.data() + name.size();
+    std::uint64_t k = 0, n = 0;
+    if (!name.starts_with("part-") || !name.ends_with(checkpoint_extension)) continue;
+    auto r = std::from_chars(name.data() + 5, end, k);
+    if (r.ec != std::errc() || !std::string_view(r.ptr, end).starts_with("-of-")) continue;
+    r = std::from_chars(r.ptr + 4, end, n);
+    if (r.ec != std::errc() || std::string_view(r.ptr, end) != checkpoint_extension) continue;
+    if (P && *P != n)
+      refuse_checkpoint_part(folder, entry.path(),
+                             fmt::format("it is of a set of {} parts, '{}' of {}", n, named.string(), *P));
+    P = n;
+    named = entry.path();
+  }
+  if (!P)
+    fail("checkpoint '{}' is a folder without checkpoint parts (part-K-of-P{})", folder.string(), checkpoint_extension);
+  for (std::uint64_t k = 0; k < *P; ++k)
+    if (!std::filesystem::exists(checkpoint_part_path(folder, k, *P)))
+      refuse_checkpoint_part(folder, checkpoint_part_path(folder, k, *P), "it is missing");
+  return *P;
+}
+
+// The header of a checkpoint file or of a folder of parts (every part there and intact; their
+// first's header), without a solver: what a restart needs to rebuild the problem.
+inline checkpoint_header read_any_checkpoint_header(const std::filesystem::path& path) {
+  if (!std::filesystem::is_directory(path)) return read_checkpoint_header(path);
+  const std::uint64_t P = checkpoint_part_count(path);
+  const checkpoint_header first = read_checkpoint_header(checkpoint_part_path(path, 0, P));
+  for (std::uint64_t k = 1; k < P; ++k)
+    if (read_checkpoint_header(checkpoint_part_path(path, k, P)).description != first.description)
+      refuse_checkpoint_part(path, checkpoint_part_path(path, k, P), "its description differs from part 0's");
+  return first;
+}
+
 // The sections of the whole model's particles (or points) and this process's values of them.
 struct checkpoint_whole_array {
   std::span<const std::string_view> sections;
@@ -110,7 +157,7 @@ class checkpoint_parts final : public checkpoint_layout {
   checkpoint_parts(const std::filesystem::path& folder, const checkpoint_identity& expected,
                    checkpoint_whole_array particles, checkpoint_whole_array points)
       : folder_(folder.string()), arrays_{std::move(particles), std::move(points)} {
-    const std::uint64_t P = part_count(folder);
+    const std::uint64_t P = checkpoint_part_count(folder);
     const index_t whole[2] = {expected.particles, expected.points};
     std::vector<std::pair<stored_index, stored_index>> sorted[2];  // (global, local) by global index
     std::vector<bool> held[2];
@@ -207,39 +254,12 @@ class checkpoint_parts final : public checkpoint_layout {
 
   static const char* what_of(int a) { return a == 0 ? "particle" : "point"; }
   [[noreturn]] void refuse(const std::string& file, std::string_view what) const {
-    throw checkpoint_damaged(fmt::format("checkpoint '{}': part '{}': {}; restart from an earlier checkpoint",
-                                         folder_, file, what));
+    refuse_checkpoint_part(folder_, file, what);
   }
   int array_of(std::string_view section) const {
     for (int a = 0; a < 2; ++a)
       if (std::ranges::find(arrays_[a].sections, section) != arrays_[a].sections.end()) return a;
     return -1;
-  }
-
-  // P, from the parts' names, which must all say the same; refuses a missing part.
-  std::uint64_t part_count(const std::filesystem::path& folder) const {
-    if (!std::filesystem::is_directory(folder))
-      fail("cannot read checkpoint parts '{}': not a folder", folder_);
-    std::optional<std::uint64_t> P;
-    std::string named;
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-      const std::string name = entry.path().filename().string();
-      std::uint64_t k = 0, n = 0;
-      const char *at = name.data(), *end = name.data() + name.size();
-      if (!name.starts_with("part-") || !name.ends_with(checkpoint_extension)) continue;
-      auto r = std::from_chars(at + 5, end, k);
-      if (r.ec != std::errc() || !std::string_view(r.ptr, end).starts_with("-of-")) continue;
-      r = std::from_chars(r.ptr + 4, end, n);
-      if (r.ec != std::errc() || std::string_view(r.ptr, end) != checkpoint_extension) continue;
-      if (P && *P != n) refuse(entry.path().string(), fmt::format("it is of a set of {} parts, '{}' of {}", n, named, *P));
-      P = n;
-      named = entry.path().string();
-    }
-    if (!P) fail("checkpoint '{}' is a folder without checkpoint parts (part-K-of-P{})", folder_, checkpoint_extension);
-    for (std::uint64_t k = 0; k < *P; ++k)
-      if (!std::filesystem::exists(checkpoint_part_path(folder, k, *P)))
-        refuse(checkpoint_part_path(folder, k, *P).string(), "it is missing");
-    return *P;
   }
 
   // A part's section table against the first part's: the same sections in the same order, the
