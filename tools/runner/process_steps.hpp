@@ -63,6 +63,16 @@ class process_steps {
   // and, when they did, `whole` brought up to date.
   virtual bool between_steps(const Solver& whole) const = 0;
   virtual void settle(Solver* whole) = 0;
+
+  // Divided: rank 0's observer hands the checkpoint due (its path and description) here instead
+  // of writing the whole solver's file, and returns true; every rank then writes its part
+  // (parallel/checkpoint_parts.hpp) at the observation's end, or at write_pending_checkpoint. One
+  // process: false, the observer writes the file.
+  virtual bool checkpoint_in_parts(const std::filesystem::path& /*path*/, std::string /*description*/) {
+    return false;
+  }
+  // Collective, after settle(): writes the checkpoint handed over since the run ended, if any.
+  virtual void write_pending_checkpoint() {}
 };
 
 // One process: the solver steps itself under the observer; a checkpoint is read into it.

@@ -11,12 +11,16 @@
 //                                         which observes its own part, whose
 //                                         time, energies and tool impulses are the run's; each
 //                                         rank writes its snapshot piece (snapshot_pieces.hpp)
+//   a checkpoint                          nothing: rank 0's observer hands its path and
+//                                         description over, and each rank writes its part
+//                                         (parallel/checkpoint_parts.hpp), a folder of P files
 //   the last call, a figure shape, a      the whole state into the whole solver
-//   checkpoint, a caller's hook, every    (parallel::mirror_state), observed as one process
-//   row of a case without them            observes its own
-// so summary.json, history.csv, the figures and the checkpoints are the files one process
-// writes, bit for bit, and rank 0 adds the snapshots' .pvtu indexes to the .pvd. The other ranks
-// follow the same collective calls (follow_run) and write nothing else.
+//   caller's hook, every row of a case    (parallel::mirror_state), observed as one process
+//   without them                          observes its own
+// so summary.json, history.csv and the figures are the files one process writes, bit for bit,
+// rank 0 adds the snapshots' .pvtu indexes to the .pvd, and a checkpoint in parts continues on
+// any number of processes (--restart takes a file or a folder of parts). The other ranks follow
+// the same collective calls (follow_run) and write nothing else.
 // Cost of this form: rank 0 holds the whole model beside its part.
 
 #include <algorithm>
@@ -29,6 +33,7 @@
 
 #include <mpi.h>
 
+#include <rkpm/parallel/checkpoint_parts.hpp>
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/distributed_checkpoint.hpp>
 #include <rkpm/parallel/distributed_solver.hpp>
@@ -89,8 +94,12 @@ class rank_steps final : public process_steps<Solver> {
   int processes() const override { return comm_.size(); }
   bool divided() const override { return true; }
 
+  // A checkpoint file (from any number of processes) or a folder of parts (from any number too).
   void read_checkpoint(const std::filesystem::path& file, Solver* whole) override {
-    parallel::read_checkpoint(*run_, file, configuration_);
+    if (std::filesystem::is_directory(file))
+      parallel::read_checkpoint_parts(*run_, file, configuration_);
+    else
+      parallel::read_checkpoint(*run_, file, configuration_);
     parallel::mirror_state(*run_, *layout_, whole, configuration_);
   }
 
@@ -132,6 +141,7 @@ class rank_steps final : public process_steps<Solver> {
               if (root) o.observe_part(part, std::move(reduced));
             });
             comm_.agree();
+            write_checkpoint_handed_over();
             return;
           }
           if (!(wanted & observe_whole)) {
@@ -143,6 +153,7 @@ class rank_steps final : public process_steps<Solver> {
             if (root) o.observe(*whole);
           });
           comm_.agree();
+          write_checkpoint_handed_over();
         },
         1);
   }
@@ -151,6 +162,14 @@ class rank_steps final : public process_steps<Solver> {
   bool between_steps(const Solver&) const override { return parts_between_steps(); }
   void settle(Solver* whole) override {
     if (parts_between_steps()) parallel::mirror_state(*run_, *layout_, whole, configuration_);
+  }
+
+  bool checkpoint_in_parts(const std::filesystem::path& path, std::string description) override {
+    handed_over_.emplace(path.string(), std::move(description));
+    return true;
+  }
+  void write_pending_checkpoint() override {
+    if (started_) write_checkpoint_handed_over();
   }
 
  private:
@@ -182,6 +201,23 @@ class rank_steps final : public process_steps<Solver> {
     return r;
   }
 
+  // Collective: rank 0 says whether its observer handed a checkpoint over, and its path and
+  // description; every rank writes its part of it.
+  void write_checkpoint_handed_over() {
+    char due = handed_over_ ? 1 : 0;
+    MPI_Bcast(&due, 1, MPI_CHAR, 0, comm_.get());
+    if (!due) return;
+    auto [path, description] = handed_over_.value_or(std::pair<std::string, std::string>());
+    handed_over_.reset();
+    for (std::string* text : {&path, &description}) {
+      unsigned long size = text->size();
+      MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm_.get());
+      text->resize(size);
+      MPI_Bcast(text->data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
+    }
+    parallel::write_checkpoint_parts(*run_, path, configuration_, description);
+  }
+
   parallel::communicator& comm_;
   std::string configuration_;
   std::optional<parallel::distributed_solver<Solver>> run_;
@@ -189,6 +225,7 @@ class rank_steps final : public process_steps<Solver> {
   std::function<row_reduction(const Solver&)> reduction_;
   std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers, built once
   std::optional<parallel::snapshot_pieces> pieces_;
+  std::optional<std::pair<std::string, std::string>> handed_over_;  // rank 0: a checkpoint's path, description
   bool started_ = false;
 };
 
@@ -196,13 +233,21 @@ class rank_steps final : public process_steps<Solver> {
 template <class Solver>
 void follow_run(rank_steps<Solver>& steps, const std::optional<restart_point>& restart) {
   if (restart) steps.read_checkpoint(restart->file, nullptr);
-  bool settled = false;
+  bool settled = false, written = false;  // as simulate() on rank 0
   try {
     steps.run(nullptr, {});
     settled = true;
     steps.settle(nullptr);
+    written = true;
+    steps.write_pending_checkpoint();
   } catch (...) {
     if (steps.started() && !settled) steps.settle(nullptr);
+    if (!std::exchange(written, true)) {
+      try {
+        steps.write_pending_checkpoint();
+      } catch (const std::exception&) {  // rank 0 says it ("no checkpoint at the failure")
+      }
+    }
     throw;
   }
 }

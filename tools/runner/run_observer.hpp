@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,7 +120,7 @@ class run_observer {
     if (skip_next_) return state_needed::none;
     const bool last = is_last(t, end_time);
     if (reads_model(t, last)) return state_needed::whole_model;
-    if (t < record_.next_history && !snapshot_at(t, last)) return state_needed::none;
+    if (t < record_.next_history && !snapshot_at(t, last) && !checkpoint_due(t)) return state_needed::none;
     return pieces_ && rows_by_reduction_ ? state_needed::own_part : state_needed::whole_model;
   }
   // A call that needs own_part: rank 0's part observed as the whole (its time, step, energies and
@@ -141,6 +142,12 @@ class run_observer {
   // A run on several processes: each rank writes its piece of every snapshot before the call
   // that is due to write it (parallel/snapshot_pieces.hpp), which then adds the index to the .pvd.
   void write_snapshots_in_pieces() { pieces_ = true; }
+  // A run on several processes: each checkpoint is handed to `in_parts` (with its path and
+  // description; process_steps::checkpoint_in_parts), whose ranks write it in parts, so a call
+  // that writes one does not read the whole model.
+  void write_checkpoints_in_parts(std::function<bool(const std::filesystem::path&, std::string)> in_parts) {
+    in_parts_ = std::move(in_parts);
+  }
 
   // The call when needs(t, end_time) is none: the progress line only.
   void pass(double t, double end_time, long steps) {
@@ -156,7 +163,8 @@ class run_observer {
     json description = identity_;
     description["record"] = to_json(record_);
     const auto path = dir_ / io::checkpoint_file_name(s.steps());
-    rkpm::write_checkpoint(s, path, configuration_, description.dump());
+    if (!in_parts_ || !in_parts_(path, description.dump()))
+      rkpm::write_checkpoint(s, path, configuration_, description.dump());
     last_checkpoint_ = path;
     return path;
   }
@@ -186,11 +194,12 @@ class run_observer {
   // The call at the end time (within rounding), and whether a call at t writes a snapshot.
   static bool is_last(double t, double end_time) { return t >= end_time * (1.0 - 1e-12); }
   bool snapshot_at(double t, bool last) const { return last || t >= record_.next_snapshot; }
+  bool checkpoint_due(double t) const { return record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint; }
   // Whether the call reads more than a row's measures and a snapshot's index: the last call, a
-  // figure shape, a checkpoint, an interrupt, a caller's hook.
+  // figure shape, a checkpoint (unless written in parts), an interrupt, a caller's hook.
   bool reads_model(double t, bool last) const {
-    return last || figures_.due(t, last) || (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint) ||
-           pending_interrupt().load() != 0 || static_cast<bool>(hooks_.observe);
+    return last || figures_.due(t, last) || (!in_parts_ && checkpoint_due(t)) || pending_interrupt().load() != 0 ||
+           static_cast<bool>(hooks_.observe);
   }
 
   // The points, the cells, the vectors and the stress made piecewise as they are written, the
@@ -289,6 +298,7 @@ class run_observer {
   io::progress_line progress_{false};
   std::chrono::steady_clock::time_point segment_start_;
   std::filesystem::path last_checkpoint_;
+  std::function<bool(const std::filesystem::path&, std::string)> in_parts_;  // write_checkpoints_in_parts
   bool skip_next_ = false;
   double output_s_ = 0.0;
   bool pieces_ = false;

@@ -16,6 +16,7 @@
 #include <rkpm/core/error.hpp>
 #include <rkpm/core/types.hpp>
 #include <rkpm/io/checkpoint.hpp>
+#include <rkpm/io/checkpoint_parts.hpp>
 
 #include "json.hpp"
 
@@ -89,7 +90,7 @@ inline std::optional<std::filesystem::path> earlier_intact_checkpoint(const std:
   for (auto it = all.rbegin(); it != all.rend(); ++it) {
     if (it->filename().string() >= name) continue;
     try {
-      io::read_checkpoint_header(*it);
+      io::read_any_checkpoint_header(*it);
       return *it;
     } catch (const rkpm::error&) {
     }
@@ -97,13 +98,16 @@ inline std::optional<std::filesystem::path> earlier_intact_checkpoint(const std:
   return std::nullopt;
 }
 
-// PATH is a checkpoint file or a run folder (its latest checkpoint). Refuses, in one line, a
-// path that is neither, a checkpoint the runner did not write, and a damaged or truncated file,
-// naming the folder's latest intact earlier checkpoint if there is one.
-inline restart_point find_restart_point(const std::filesystem::path& path) {
+// PATH is a checkpoint file, a checkpoint in parts (a folder checkpoint_*.rkpmcp of
+// part-K-of-P.rkpmcp files, io/checkpoint_parts.hpp) or a run folder (its latest checkpoint).
+// Refuses, in one line, a path that is none of these, a checkpoint the runner did not write, and
+// a damaged, truncated or incomplete one, naming the folder's latest intact earlier checkpoint if
+// there is one.
+inline restart_point find_restart_point(const std::filesystem::path& given) {
   namespace fs = std::filesystem;
+  const fs::path path = given.has_filename() ? given : given.parent_path();  // "run/" is "run"
   restart_point p;
-  if (fs::is_directory(path)) {
+  if (fs::is_directory(path) && path.extension() != io::checkpoint_extension) {
     const auto latest = io::latest_checkpoint(path);
     if (!latest)
       fail("--restart {}: the folder has no checkpoint_*{} file; run with --checkpoint-interval SECONDS to "
@@ -117,7 +121,7 @@ inline restart_point find_restart_point(const std::filesystem::path& path) {
   }
   io::checkpoint_header header;
   try {
-    header = io::read_checkpoint_header(p.file);
+    header = io::read_any_checkpoint_header(p.file);
   } catch (const io::checkpoint_damaged& e) {
     const auto earlier = earlier_intact_checkpoint(p.file);
     if (!earlier) throw;

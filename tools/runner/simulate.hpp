@@ -213,7 +213,12 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     observer.emplace(dir, params, s, std::move(record), identity, method.configuration, request.quiet,
                      snapshot_format(request), request.hooks);
     if (restart) observer->resume(fs::absolute(restart->file).parent_path());
-    if (steps->divided()) observer->write_snapshots_in_pieces();
+    if (steps->divided()) {
+      observer->write_snapshots_in_pieces();
+      observer->write_checkpoints_in_parts([steps](const fs::path& path, std::string description) {
+        return steps->checkpoint_in_parts(path, std::move(description));
+      });
+    }
     summary["status"] = "running";  // what a killed run's folder says
     write_json(dir / "summary.json", summary);
   } catch (const std::exception& e) {
@@ -222,10 +227,14 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   }
   run_observer<Case, Solver>& observe = *observer;
   std::string error;
-  bool stopped = false, settled = false;
-  // The whole solver brought up to date after the run, ended or failed (on several processes).
+  bool stopped = false, settled = false, written = false;
+  // The whole solver brought up to date after the run, ended or failed, and the checkpoint then
+  // handed over written in parts (on several processes; follow_run makes the same calls).
   const auto settle = [&] {
     if (!std::exchange(settled, true)) steps->settle(&s);
+  };
+  const auto write_pending = [&] {
+    if (!std::exchange(written, true)) steps->write_pending_checkpoint();
   };
   try {
     steps->run(&s, {.needs = [&](double t, double end) { return observe.needs(t, end); },
@@ -235,6 +244,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
                     .observe_part = [&](const Solver& p, auto m) { observe.observe_part(p, std::move(m)); }});
     settle();
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
+    write_pending();
   } catch (const stop_requested&) {
     stopped = true;  // the caller's observer asked (run_hooks.hpp): not an error
   } catch (const std::exception& e) {
@@ -242,12 +252,12 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     settle();
     // Stopped between steps (the step limit, Ctrl-C): the state is whole and can be continued.
     const bool whole = steps->between_steps(s);
-    if (whole && (observe.record().checkpoint_interval > 0.0 || pending_interrupt().load() != 0)) {
-      try {
+    try {
+      if (whole && (observe.record().checkpoint_interval > 0.0 || pending_interrupt().load() != 0))
         observe.write_checkpoint_now(s);
-      } catch (const std::exception& e2) {
-        fmt::print(stderr, "rkpm_run: no checkpoint at the failure: {}\n", e2.what());
-      }
+      write_pending();
+    } catch (const std::exception& e2) {
+      fmt::print(stderr, "rkpm_run: no checkpoint at the failure: {}\n", e2.what());
     }
   }
   observe.finish();
