@@ -9,7 +9,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +30,7 @@
 #include "interrupt.hpp"
 #include "json.hpp"
 #include "process_steps.hpp"
+#include "quasi_static_warning.hpp"
 #include "run_hooks.hpp"
 #include "row_reduction.hpp"
 #include "run_record.hpp"
@@ -90,7 +90,7 @@ class run_observer {
       record_.next_history += record_.history_interval;
     }
     if (snapshot_at(t, last)) {
-      if (pieces_) {  // written by the ranks before this call (ranks.hpp)
+      if (divided_) {  // written by the ranks before this call (ranks.hpp)
         const std::string index = vtk_.next_file(".pvtu");
         vtk_.add(t, index);
         record_.snapshots.emplace_back(t, index);
@@ -121,7 +121,7 @@ class run_observer {
     const bool last = is_last(t, end_time);
     if (reads_model(t, last)) return state_needed::whole_model;
     if (t < record_.next_history && !snapshot_at(t, last) && !checkpoint_due(t)) return state_needed::none;
-    return pieces_ && rows_by_reduction_ ? state_needed::own_part : state_needed::whole_model;
+    return divided_ && rows_by_reduction_ ? state_needed::own_part : state_needed::whole_model;
   }
   // A call that needs own_part: rank 0's part observed as the whole (its time, step, energies and
   // tool impulses are the run's), with `reduced`, the case's over the whole model (row_reduction.hpp).
@@ -134,20 +134,16 @@ class run_observer {
     (*this)(part);
   }
   // The snapshot the call at time t writes, if any (empty if none): next to the .pvd, a .vtu, or
-  // the .pvtu index of a snapshot the ranks write in pieces (write_snapshots_in_pieces).
+  // the .pvtu index of a snapshot the ranks write in pieces (divide).
   std::filesystem::path snapshot_due(double t, double end_time) const {
     if (skip_next_ || !snapshot_at(t, is_last(t, end_time))) return {};
-    return dir_ / vtk_.next_file(pieces_ ? ".pvtu" : ".vtu");
+    return dir_ / vtk_.next_file(divided_ ? ".pvtu" : ".vtu");
   }
-  // A run on several processes: each rank writes its piece of every snapshot before the call
-  // that is due to write it (parallel/snapshot_pieces.hpp), which then adds the index to the .pvd.
-  void write_snapshots_in_pieces() { pieces_ = true; }
-  // A run on several processes: each checkpoint is handed to `in_parts` (with its path and
-  // description; process_steps::checkpoint_in_parts), whose ranks write it in parts, so a call
-  // that writes one does not read the whole model.
-  void write_checkpoints_in_parts(std::function<bool(const std::filesystem::path&, std::string)> in_parts) {
-    in_parts_ = std::move(in_parts);
-  }
+  // A run on several processes, stepped by `steps` (ranks.hpp): each rank writes its piece of
+  // every snapshot before the call that is due to write it (parallel/snapshot_pieces.hpp), which
+  // then adds the index to the .pvd, and its part of every checkpoint, which this observer hands
+  // over (process_steps::checkpoint_in_parts) instead of reading the whole model for it.
+  void divide(process_steps<Solver>& steps) { divided_ = &steps; }
 
   // The call when needs(t, end_time) is none: the progress line only.
   void pass(double t, double end_time, long steps) {
@@ -163,7 +159,7 @@ class run_observer {
     json description = identity_;
     description["record"] = to_json(record_);
     const auto path = dir_ / io::checkpoint_file_name(s.steps());
-    if (!in_parts_ || !in_parts_(path, description.dump()))
+    if (!divided_ || !divided_->checkpoint_in_parts(path, description.dump()))
       rkpm::write_checkpoint(s, path, configuration_, description.dump());
     last_checkpoint_ = path;
     return path;
@@ -198,7 +194,7 @@ class run_observer {
   // Whether the call reads more than a row's measures and a snapshot's index: the last call, a
   // figure shape, a checkpoint (unless written in parts), an interrupt, a caller's hook.
   bool reads_model(double t, bool last) const {
-    return last || figures_.due(t, last) || (!in_parts_ && checkpoint_due(t)) || pending_interrupt().load() != 0 ||
+    return last || figures_.due(t, last) || (!divided_ && checkpoint_due(t)) || pending_interrupt().load() != 0 ||
            static_cast<bool>(hooks_.observe);
   }
 
@@ -259,25 +255,13 @@ class run_observer {
       row.push_back(value);
     if (s.options().mass_scaling.enabled()) {
       row.push_back(s.energy().internal > 0.0 ? s.energy().kinetic / s.energy().internal : 0.0);
-      warn_if_dynamic(s);
+      warn_if_dynamic(s, warned_dynamic_);
     }
     for (const auto& [name, value] : io::fragment_terms(s)) row.push_back(value);
     for (const auto& companion : s.companions())
       for (const auto& [name, value] : companion->report(s)) row.push_back(value);
     history_.row(row);
     record_.history_rows.push_back(std::move(row));
-  }
-
-  // One line, once, when a mass-scaled run has left the quasi-static regime (85).
-  void warn_if_dynamic(const Solver& s) {
-    const quasi_static_check& q = s.quasi_static();
-    if (!q.left() || warned_dynamic_) return;
-    warned_dynamic_ = true;
-    fmt::print(stderr,
-               "rkpm_run: warning: the mass-scaled run left the quasi-static regime at t = {:.6g} s: its kinetic energy "
-               "exceeded {:g}% of its internal energy (mass scaling factor {:.4g}); lower the factor or the target "
-               "step, or read the results as dynamic\n",
-               q.left_at, 100.0 * s.options().mass_scaling.max_kinetic_to_internal, s.mass_scaling_factor());
   }
 
   bool warned_dynamic_ = false;
@@ -298,10 +282,9 @@ class run_observer {
   io::progress_line progress_{false};
   std::chrono::steady_clock::time_point segment_start_;
   std::filesystem::path last_checkpoint_;
-  std::function<bool(const std::filesystem::path&, std::string)> in_parts_;  // write_checkpoints_in_parts
   bool skip_next_ = false;
   double output_s_ = 0.0;
-  bool pieces_ = false;
+  process_steps<Solver>* divided_ = nullptr;  // divide(): snapshots in pieces, checkpoints in parts
   bool rows_by_reduction_ = false;  // the rows' measures reduce over the ranks (measure_maxima, no companions)
   row_reduction row_reduced_;       // the current call's, reduced over the ranks (observe_part)
 };

@@ -213,12 +213,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     observer.emplace(dir, params, s, std::move(record), identity, method.configuration, request.quiet,
                      snapshot_format(request), request.hooks);
     if (restart) observer->resume(fs::absolute(restart->file).parent_path());
-    if (steps->divided()) {
-      observer->write_snapshots_in_pieces();
-      observer->write_checkpoints_in_parts([steps](const fs::path& path, std::string description) {
-        return steps->checkpoint_in_parts(path, std::move(description));
-      });
-    }
+    if (steps->divided()) observer->divide(*steps);
     summary["status"] = "running";  // what a killed run's folder says
     write_json(dir / "summary.json", summary);
   } catch (const std::exception& e) {
