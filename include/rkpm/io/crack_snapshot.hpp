@@ -27,7 +27,7 @@
 #include <memory>
 #include <vector>
 
-#include <Eigen/Dense>
+#include <Eigen/LU>
 
 #include <rkpm/concepts/material.hpp>
 #include <rkpm/core/types.hpp>
@@ -50,14 +50,6 @@ struct crack_faces {
 };
 
 namespace detail {
-
-// The cells around each node (those that hold it).
-inline std::vector<std::vector<index_t>> cells_at_nodes(const background_mesh& mesh, index_t nodes) {
-  std::vector<std::vector<index_t>> at(static_cast<std::size_t>(nodes));
-  for (index_t c = 0; c < mesh.cells(); ++c)
-    for (const stored_index n : mesh.cell[c]) at[n].push_back(c);
-  return at;
-}
 
 // Where the material point X_c on the side of particle a is now: the affine fit over the
 // particles `near` that see it, weighted (1 - (r / R)^2)^2 with R 1.5 times the farthest.
@@ -83,9 +75,9 @@ inline vec2 fitted_position(const discrete_model& m, const std::vector<vec2>& x,
     M += w * p * p.transpose();
     rhs += w * p * x[I].transpose();
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(M, Eigen::EigenvaluesOnly);
-  if (!(eig.eigenvalues()[0] > 1e-10 * eig.eigenvalues()[2])) return moved_with_a;  // the seen on a line
-  return M.ldlt().solve(rhs).row(0).transpose();  // b: the fit at X_c
+  // The seen on a line leave M singular: its determinant against the cube of its mean diagonal.
+  if (!(M.determinant() > 1e-12 * std::pow(M.trace() / 3.0, 3))) return moved_with_a;
+  return (M.inverse() * rhs).row(0).transpose();  // b: the fit at X_c
 }
 
 }  // namespace detail
@@ -96,7 +88,7 @@ inline crack_faces crack_face_points(const discrete_model& m, const std::vector<
   crack_faces out;
   if (cuts.empty()) return out;
   const std::vector<vec2> x = positions_at_particles(m, d);
-  const auto cells_at = detail::cells_at_nodes(m.mesh, m.particle_count());
+  const auto cells_at = cells_at_nodes(m.mesh);
   for (const cell_crack& cut : cuts) {
     const auto& corner = m.mesh.cell[cut.cell];
     std::vector<index_t> near;  // the corners of the cells that share a corner with this one

@@ -8,6 +8,7 @@
 // that it moves with the cell's corners (the particles) through later re-references:
 //   cell_crack       a cell's cut: the two sides it crosses and where along each
 //   cut_cell         the cut of a cell through its centroid with a given normal
+//   cells_at_nodes, cell_neighbours  the cells around each node, and across each cell's sides
 //   beside_a_cut     whether a cut runs in a neighbouring cell alongside a new one (a band of
 //                    failed cells is cut once across, not into slivers)
 //   crack_chord      the cut's segment on the cells at their current corners, lengthened past
@@ -69,11 +70,17 @@ inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t 
   return cut;
 }
 
-// Each cell's neighbour across each of its sides (side k from corner k to k + 1), -1 at the boundary.
-inline std::vector<std::array<index_t, 4>> cell_neighbours(const background_mesh& cells) {
+// The cells around each node (those that have it as a corner), in cell order.
+inline std::vector<std::vector<index_t>> cells_at_nodes(const background_mesh& cells) {
   std::vector<std::vector<index_t>> at_node(cells.node.size());
   for (index_t c = 0; c < cells.cells(); ++c)
     for (const stored_index n : cells.cell[c]) at_node[n].push_back(c);
+  return at_node;
+}
+
+// Each cell's neighbour across each of its sides (side k from corner k to k + 1), -1 at the boundary.
+inline std::vector<std::array<index_t, 4>> cell_neighbours(const background_mesh& cells) {
+  const std::vector<std::vector<index_t>> at_node = cells_at_nodes(cells);
   std::vector<std::array<index_t, 4>> out(static_cast<std::size_t>(cells.cells()));
   for (index_t c = 0; c < cells.cells(); ++c)
     for (int k = 0; k < 4; ++k) {
