@@ -31,7 +31,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <numeric>
 #include <vector>
 
 #include <rkpm/io/crack_snapshot.hpp>
@@ -376,7 +375,7 @@ struct pulled_bar {
   double worst_total_momentum = 0.0;    // max |P(t) - P(0)| over the steps / (m V)
   double largest_mass_fraction = 0.0;   // the largest piece's mass / the bar's
   double smallest_step = 0.0;           // the smallest stable step over the first
-  double smallest_piece_fraction = 0.0; // the smallest piece's mass / the bar's
+  double smallest_piece_fraction = 0.0; // of two pieces, the smaller one's mass / the bar's (else 0)
 };
 
 // A steel-like bar, as long as the brittle one and two cells thick, its halves thrown apart at V:
@@ -417,27 +416,9 @@ pulled_bar pull_johnson_cook_bar(bool opens_cracks, int cells_thick = 2) {
     out.smallest_step = std::min(out.smallest_step, s.time_step() / first_step);
   }
   const fragment_count pieces = s.fragments();
-  {
-    std::vector<index_t> parent(s.model().particle_count());  // the pieces' masses: crack_fragments' joins
-    std::iota(parent.begin(), parent.end(), index_t{0});
-    const auto root = [&](index_t i) {
-      while (parent[i] != i) i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    const shape_table<2>& rows = s.model().at_points;
-    for (index_t q = 0; q < s.model().point_count(); ++q)
-      for (index_t e = rows.offset[q] + 1; e < rows.offset[q + 1]; ++e) {
-        const index_t a = root(rows.neighbor[rows.offset[q]]), b = root(rows.neighbor[e]);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-      }
-    std::vector<double> piece(parent.size(), 0.0);
-    for (index_t I = 0; I < s.model().particle_count(); ++I) piece[root(I)] += s.mass()[I];
-    out.smallest_piece_fraction = 1.0;
-    for (index_t I = 0; I < s.model().particle_count(); ++I)
-      if (root(I) == I) out.smallest_piece_fraction = std::min(out.smallest_piece_fraction, piece[I] / m);
-  }
   out.pieces = pieces.pieces;
   out.largest_mass_fraction = pieces.largest_mass / m;
+  out.smallest_piece_fraction = pieces.pieces == 2 ? 1.0 - out.largest_mass_fraction : 0.0;  // of two pieces
   out.cuts = static_cast<index_t>(s.cracks().size());
   for (const auto& state : s.point_states()) out.failed += state.failed() ? 1 : 0;
   MESSAGE("Johnson-Cook bar, opens_cracks " << opens_cracks << ": " << out.failed << " failed points, " << out.cuts

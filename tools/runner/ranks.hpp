@@ -129,10 +129,7 @@ class rank_steps final : public process_steps<Solver> {
           char wanted = !root ? 0 : reads(at.time()) | (index.empty() ? 0 : snapshot);
           MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
           if (wanted & snapshot) {
-            unsigned long size = index.size();
-            MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm_.get());
-            index.resize(size);
-            MPI_Bcast(index.data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
+            broadcast_from_root(index);
             pieces_->write(part, index, snapshot_format_);
           }
           if (wanted & observe_part) {
@@ -201,6 +198,14 @@ class rank_steps final : public process_steps<Solver> {
     return r;
   }
 
+  // Collective: rank 0's `text` on every rank.
+  void broadcast_from_root(std::string& text) {
+    unsigned long size = text.size();
+    MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm_.get());
+    text.resize(size);
+    MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
+  }
+
   // Collective: rank 0 says whether its observer handed a checkpoint over, and its path and
   // description; every rank writes its part of it.
   void write_checkpoint_handed_over() {
@@ -209,12 +214,8 @@ class rank_steps final : public process_steps<Solver> {
     if (!due) return;
     auto [path, description] = handed_over_.value_or(std::pair<std::string, std::string>());
     handed_over_.reset();
-    for (std::string* text : {&path, &description}) {
-      unsigned long size = text->size();
-      MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm_.get());
-      text->resize(size);
-      MPI_Bcast(text->data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
-    }
+    broadcast_from_root(path);
+    broadcast_from_root(description);
     parallel::write_checkpoint_parts(*run_, path, configuration_, description);
   }
 
