@@ -20,13 +20,14 @@
 //     slowest rank's time per step; the medians of the rounds' ratios;
 //   - from them and a force-loop cost per point (--point-us, measured by tools/rkpm bench:
 //     BM_step's s_per_particle_step over its points per particle), the modelled time per step on
-//     P processes and its parallel efficiency.
+//     P processes and its parallel efficiency, for 10^7 and 10^8 particles on 16 to 1024
+//     processes, with the replicated region (every rank's serial part) and the memory per rank.
 // The exchanges are timed on this machine (shared memory, oversubscribed beyond its cores): the
 // bandwidth and latency of a cluster are the model's assumptions, given as options and printed.
 //
 //   mpiexec -np P rkpm_bench_halo [--resolutions 8,32] [--repeat 200] [--rounds 5] [--point-us U]
 //                                 [--latency-us A] [--bandwidth-GB-s B]
-//                                 [--ghost-layers L] [--point-layers L]
+//                                 [--ghost-layers L] [--point-layers L] [--shared-us U]
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +72,18 @@ struct options {
   // Ghosts and extra (redundant) points of a rank per particle of its boundary: measured on 2
   // ranks, where METIS cuts the bar straight across its radius (printed below as "layers").
   double ghost_layers = 3.5, point_layers = 3.5;
+  // The replicated region (parallel/distributed_solver.hpp: the constrained and slave particles
+  // and their rows' columns, which every rank corrects alike): its particles per square root of
+  // the bar's particles (a band along the surface and the axis; measured by the whole-step
+  // rounds, printed as "shared"), each costing --shared-us a step on every rank (measured by perf
+  // on one process, the bar at resolution 8: the tool contact's slaves and the axis projection
+  // take 0.6% of a step, about 0.05 us for each of its 2,183 shared particles).
+  double shared_per_root = 0.0, shared_us = 0.05;
+  double measured_shared_per_root = 0.0;  // the last resolution's (not an option)
+  // Memory per rank: --bytes-per-particle per owned, ghost or shared particle, plus a fixed part
+  // (docs/performance.md, "Set-up in parts": 1.6 to 1.7 KB per local particle, about 30 MB); while
+  // it sets up, the layout of the whole model besides (about 100 bytes per particle of the whole).
+  double bytes_per_particle = 1650.0, fixed_MB = 30.0, layout_bytes_per_particle = 100.0;
 };
 
 // The command line (CLI11, as the runner's), the same on every rank. Returns the exit code after
@@ -101,6 +114,13 @@ std::optional<int> parse(int argc, char** argv, options& o, int rank) {
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   app.add_option("--point-layers", o.point_layers, "the model's extra points per boundary particle")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  app.add_option("--shared-per-root", o.shared_per_root,
+                 "the model's replicated particles per square root of the particles (0: the measured)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  app.add_option("--shared-us", o.shared_us, "the model's cost of a replicated particle per step on every rank (us)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   try {
@@ -184,6 +204,7 @@ struct round_times {
   // The ratios of each round's timings (one process on 1 thread, on 2, over P processes), their
   // medians: a burst of load on a noisy host moves these far less than the times.
   double ranks_over_one, ranks_over_two;
+  index_t shared = 0;  // the whole step's: the particles every rank holds and corrects alike
 };
 
 // The force loop of the bar on one process (1 and 2 threads, rank 0) and on the P processes.
@@ -295,6 +316,7 @@ round_times time_whole_step(parallel::communicator& comm, const options& o, cons
     tp.push_back(t);
   }
   if (comm.rank() != 0) return {};
+  const index_t shared = many.shared_count();
   if (one->steps() != many.solver().steps() || one->time() != many.solver().time())
     fail("whole-step bench: one process reached t = {} s at step {}, {} processes t = {} s at step {}: not the same "
          "run",
@@ -304,7 +326,7 @@ round_times time_whole_step(parallel::communicator& comm, const options& o, cons
     over_one.push_back(t1[r] / tp[r]);
     over_two.push_back(t2[r] / tp[r]);
   }
-  return {median(t1), median(t2), median(tp), median(over_one), median(over_two)};
+  return {median(t1), median(t2), median(tp), median(over_one), median(over_two), shared};
 }
 
 struct rank_figures {
@@ -312,7 +334,7 @@ struct rank_figures {
 };
 
 // The figures of one resolution on this communicator's P ranks, printed by rank 0.
-void measure(parallel::communicator& comm, const options& o, int resolution) {
+void measure(parallel::communicator& comm, options& o, int resolution) {
   using Q = quadrature::q2;
   const auto problem = bench::bar::build<bench::wall_contact>(bench::bar::parameters{}, resolution);
   const discrete_model m = bench::bar_model<Q>(problem);
@@ -377,6 +399,11 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
              "{:.2f} x two threads\n",
              o.rounds, loop.one_thread * 1e3, loop.two_threads * 1e3, P, loop.ranks * 1e3, P, loop.ranks_over_one,
              loop.ranks_over_two);
+  if (whole) {
+    o.measured_shared_per_root = static_cast<double>(whole->shared) / std::sqrt(static_cast<double>(n));
+    fmt::print("  shared (replicated on every rank): {} particles, {:.2f} per square root of the particles\n",
+               whole->shared, o.measured_shared_per_root);
+  }
   if (whole)
     fmt::print("  whole step measured, per step (medians of {} rounds of {} steps): one process 1 thread {:.3f} ms, 2 "
                "threads {:.3f} ms; {} processes x 1 thread {:.3f} ms (slowest rank); speed-up of the {} processes, the "
@@ -401,26 +428,38 @@ void measure(parallel::communicator& comm, const options& o, int resolution) {
 // --ghost-layers ghosts and --point-layers extra points (measured at P = 2); a forward exchange
 // is one message to each of up to 6 neighbours (a 2D partition's parts meet about six others)
 // at the assumed latency, and the ghosts' 32 bytes (d and v) at the assumed bandwidth; a
-// reduction costs 2 log2(P) latencies (recursive doubling).
+// reduction costs 2 log2(P) latencies (recursive doubling). The replicated region grows as
+// sqrt(N) and costs every rank the same: it is the model's serial part. Memory per rank: its
+// owned, ghost and shared particles at --bytes-per-particle, plus the fixed part; at the set-up
+// also the whole model's layout, which every rank reads (parallel/rank_setup.hpp).
 void model(const options& o) {
+  const double shared_per_root = o.shared_per_root > 0.0 ? o.shared_per_root : o.measured_shared_per_root;
   fmt::print("\nmodel on a cluster (latency {} us, {} GB/s per link, force loop {} us per point and step, {} ghosts and "
-             "{} extra points per boundary particle; 2 exchanges and 3 reductions per step):\n",
-             o.latency_us, o.bandwidth_GB_s, o.point_us, o.ghost_layers, o.point_layers);
-  fmt::print("| particles | P | particles per rank | ghosts per rank | force loop (ms) | exchanges and reductions (ms) "
-             "| step (ms) | efficiency |\n|---|---|---|---|---|---|---|---|\n");
-  for (const double N : {1e6, 1e7}) {
-    for (const int P : {16, 64, 256}) {
+             "{} extra points per boundary particle, {:.2f} shared particles per square root of the particles at {} us "
+             "each; 2 exchanges and 3 reductions per step; {} bytes per local particle and {} MB a rank):\n",
+             o.latency_us, o.bandwidth_GB_s, o.point_us, o.ghost_layers, o.point_layers, shared_per_root,
+             o.shared_us, o.bytes_per_particle, o.fixed_MB);
+  fmt::print("| particles | P | particles per rank | ghosts per rank | shared | force loop (ms) | replicated (ms) "
+             "| exchanges and reductions (ms) | step (ms) | efficiency | memory per rank (MB) | set-up peak (MB) |\n"
+             "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const double N : {1e7, 1e8}) {
+    const double shared = shared_per_root * std::sqrt(N);
+    for (const int P : {16, 64, 256, 1024}) {
       const double per_rank = N / P, boundary = 4.0 * std::sqrt(per_rank);
       const double ghosts = o.ghost_layers * boundary;
       const double points = 2.0 * per_rank + o.point_layers * boundary;
       const double force = points * o.point_us * 1e-3;  // ms
+      const double replicated = shared * o.shared_us * 1e-3;
       const double one_exchange = std::min(6, P - 1) * o.latency_us * 1e-3 + ghosts * 32.0 / (o.bandwidth_GB_s * 1e6);
       const double reduction = 2.0 * std::log2(static_cast<double>(P)) * o.latency_us * 1e-3;
       const double communication = 2.0 * one_exchange + 3.0 * reduction;
-      const double step = force + communication;
-      const double serial = 2.0 * N * o.point_us * 1e-3;
-      fmt::print("| {:.0e} | {} | {:.0f} | {:.0f} | {:.3f} | {:.4f} | {:.3f} | {:.2f} |\n", N, P, per_rank, ghosts,
-                 force, communication, step, serial / step / P);
+      const double step = force + replicated + communication;
+      const double serial = 2.0 * N * o.point_us * 1e-3 + replicated;
+      const double memory = (per_rank + ghosts + shared) * o.bytes_per_particle / 1e6 + o.fixed_MB;
+      const double setup = memory + N * o.layout_bytes_per_particle / 1e6;
+      fmt::print("| {:.0e} | {} | {:.0f} | {:.0f} | {:.0f} | {:.3f} | {:.3f} | {:.4f} | {:.3f} | {:.2f} | {:.0f} | {:.0f} |\n",
+                 N, P, per_rank, ghosts, shared, force, replicated, communication, step, serial / step / P, memory,
+                 setup);
     }
   }
 }
