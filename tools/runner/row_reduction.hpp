@@ -3,12 +3,16 @@
 // section 9.8). A row reads the time, the case's measures, the tools' impulses, the energies and
 // the companions' reports. All but the measures are totals that every rank holds alike; the
 // measures of a case that offers
-//   Case::measure_maxima(solver)  std::array<double, N>: maxima (minima negated) over the
-//                                 solver's own particles (model().own.particles) and its points
-//   Case::measure_sums(solver, parameters)  (optional) std::array<exact_sum, M>: sums over the
-//                                 solver's own particles and own points (for_each_owned_point)
+//   Case::measure_maxima(solver[, parameters])  std::array<double, N> (or a vector): maxima
+//                                 (minima negated) over the solver's own particles
+//                                 (model().own.particles) and its points
+//   Case::measure_sums(solver, parameters)  (optional) std::array<exact_sum, M> (or a vector):
+//                                 sums over the solver's own particles and own points
+//                                 (for_each_owned_point)
 //   Case::measure_from(maxima[, sums], solver, parameters, mean_tool_force)  the measures from
 //                                 them and from the totals
+//   Case::reducible(parameters)   (optional) whether this problem's measures all reduce (a case
+//                                 file's: case_file/measure_parts.hpp)
 // with measure() = measure_from(measure_maxima(s)[, measure_sums(s, p)], ...) come from what
 // each rank takes over its part: one MPI_MAX combines the maxima on rank 0 (the points' ghost
 // copies hold their owners' states, and a maximum of finite values does not depend on the order
@@ -38,6 +42,15 @@ struct row_reduction {
   bool empty() const { return maxima.empty() && sums.empty(); }
 };
 
+// The case's maxima over the solver's part, with the parameters when it takes them.
+template <class Case, class Solver>
+auto measure_maxima_of(const Solver& s, const typename Case::parameters& p) {
+  if constexpr (requires { Case::measure_maxima(s, p); })
+    return Case::measure_maxima(s, p);
+  else
+    return Case::measure_maxima(s);
+}
+
 template <class Case, class Solver>
 concept MeasuredBySums = requires(const Solver& s, const typename Case::parameters& p) {
   { Case::measure_sums(s, p) };
@@ -45,27 +58,30 @@ concept MeasuredBySums = requires(const Solver& s, const typename Case::paramete
 
 template <class Case, class Solver>
 concept MeasuredByReduction =
-    requires(const Solver& s, const typename Case::parameters& p, const std::vector<vec2>& f) {
-      { Case::measure_maxima(s) };
-    } &&
-    (MeasuredBySums<Case, Solver>
-         ? requires(const Solver& s, const typename Case::parameters& p, const std::vector<vec2>& f) {
-             { Case::measure_from(Case::measure_maxima(s), Case::measure_sums(s, p), s, p, f) }
-                 -> std::same_as<std::vector<std::pair<std::string, double>>>;
-           }
-         : requires(const Solver& s, const typename Case::parameters& p, const std::vector<vec2>& f) {
-             { Case::measure_from(Case::measure_maxima(s), s, p, f) }
-                 -> std::same_as<std::vector<std::pair<std::string, double>>>;
-           });
+    requires(const Solver& s, const typename Case::parameters& p) { Case::measure_maxima(s); } ||
+    requires(const Solver& s, const typename Case::parameters& p) { Case::measure_maxima(s, p); };
+
+// A fixed-size array or a vector of `Value`s from the combined values.
+template <class Values, class Value>
+Values values_from(const std::vector<Value>& combined) {
+  Values out{};
+  if constexpr (requires { out.assign(combined.begin(), combined.end()); })
+    out.assign(combined.begin(), combined.end());
+  else
+    std::copy(combined.begin(), combined.end(), out.begin());
+  return out;
+}
 
 // What a run on several processes reduces: the case's maxima and sums over the solver's part
 // (empty for a case that has none).
 template <class Case, class Solver>
 std::function<row_reduction(const Solver&)> row_reduction_of(const typename Case::parameters& p) {
-  if constexpr (MeasuredByReduction<Case, Solver>)
+  if constexpr (MeasuredByReduction<Case, Solver>) {
+    if constexpr (requires { Case::reducible(p); })
+      if (!Case::reducible(p)) return {};
     return [p](const Solver& s) {
       row_reduction r;
-      const auto m = Case::measure_maxima(s);
+      const auto m = measure_maxima_of<Case>(s, p);
       r.maxima.assign(m.begin(), m.end());
       if constexpr (MeasuredBySums<Case, Solver>) {
         const auto sums = Case::measure_sums(s, p);
@@ -73,8 +89,9 @@ std::function<row_reduction(const Solver&)> row_reduction_of(const typename Case
       }
       return r;
     };
-  else
+  } else {
     return {};
+  }
 }
 
 // A history row's measures: with `reduced` (row_reduction_of's over the ranks, so of the case's
@@ -86,11 +103,9 @@ std::vector<std::pair<std::string, double>> row_measures(const row_reduction& re
                                                           const std::vector<vec2>& mean_tool_force) {
   if constexpr (MeasuredByReduction<Case, Solver>) {
     if (!reduced.empty()) {
-      decltype(Case::measure_maxima(s)) m{};
-      std::copy(reduced.maxima.begin(), reduced.maxima.end(), m.begin());
+      const auto m = values_from<decltype(measure_maxima_of<Case>(s, p))>(reduced.maxima);
       if constexpr (MeasuredBySums<Case, Solver>) {
-        decltype(Case::measure_sums(s, p)) sums{};
-        std::copy(reduced.sums.begin(), reduced.sums.end(), sums.begin());
+        const auto sums = values_from<decltype(Case::measure_sums(s, p))>(reduced.sums);
         return Case::measure_from(m, sums, s, p, mean_tool_force);
       } else {
         return Case::measure_from(m, s, p, mean_tool_force);

@@ -7,9 +7,12 @@
 // several bodies each measure that names a body looks at that body's particles or points only.
 //   mean_tool_force  #tools list of the tools' reactions averaged over the last interval (N
 //                    or N/m, as the runner passes them to every case's measure)
+// measure() is measure_from() of the maxima and sums measure_parts.hpp takes over the solver's
+// own particles and points, which on several processes combine over the ranks first.
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -22,6 +25,7 @@
 
 #include "build_problem.hpp"
 #include "case_description.hpp"
+#include "measure_parts.hpp"
 
 namespace rkpm::runner::case_file {
 
@@ -167,18 +171,53 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
 
 }  // namespace detail
 
+// The row from the maxima and sums of measure_parts.hpp (over the whole model, or combined over
+// the ranks' parts) and the totals `s` holds; a history that cannot be reduced is evaluated on
+// `s`, which is then the whole model.
+template <class Solver>
+std::vector<std::pair<std::string, double>> measure_from(const std::vector<double>& maxima,
+                                                         const std::vector<exact_sum>& sums, const Solver& s,
+                                                         const case_description& c,
+                                                         const std::vector<vec2>& mean_tool_force) {
+  std::vector<std::pair<std::string, double>> out;
+  out.reserve(c.histories.size());
+  std::vector<vec2> x;  // the whole model's positions, for the histories that are not reduced
+  std::size_t m = 0, k = 0;
+  for (const auto& h : c.histories) {
+    double value = 0.0;
+    if (!detail::reducible(c, h.kind)) {
+      if (x.empty()) x = s.particle_positions();
+      value = detail::evaluate(s, c, h.kind, mean_tool_force, x);
+    } else if (const auto* e = std::get_if<extent_history>(&h.kind)) {
+      const double hi = maxima[m], lo = -maxima[m + 1];
+      value = maxima[m + 2] == 0.0 ? 0.0 : e->of.starts_with("max") ? hi : e->of.starts_with("min") ? lo : hi - lo;
+      m += 3;
+    } else if (std::holds_alternative<max_plastic_strain_history>(h.kind)) {
+      value = maxima[m++];
+    } else if (std::holds_alternative<max_temperature_history>(h.kind)) {
+      value = maxima[m] == detail::none ? std::numeric_limits<double>::quiet_NaN() : maxima[m];
+      ++m;
+    } else if (std::holds_alternative<momentum_history>(h.kind)) {
+      value = sums[k++].value();
+    } else if (std::holds_alternative<volume_change_history>(h.kind)) {
+      value = sums[k + 1].value() / sums[k].value() - 1.0;
+      k += 2;
+    } else if (std::holds_alternative<failed_fraction_history>(h.kind)) {
+      const double chosen = sums[k].value(), failed = sums[k + 1].value();
+      value = chosen > 0.0 ? failed / chosen : 0.0;
+      k += 2;
+    } else {  // the tools' and the contact's: totals every rank holds
+      value = detail::evaluate(s, c, h.kind, mean_tool_force, x);
+    }
+    out.emplace_back(h.name, value * h.scale);
+  }
+  return out;
+}
+
 template <class Solver>
 std::vector<std::pair<std::string, double>> measure(const Solver& s, const case_description& c,
                                                     const std::vector<vec2>& mean_tool_force) {
-  std::vector<std::pair<std::string, double>> out;
-  out.reserve(c.histories.size());
-  const bool positions = std::any_of(c.histories.begin(), c.histories.end(), [](const history_description& h) {
-    return std::holds_alternative<extent_history>(h.kind) || std::holds_alternative<probe_history>(h.kind);
-  });
-  const std::vector<vec2> x = positions ? s.particle_positions() : std::vector<vec2>{};
-  for (const auto& h : c.histories)
-    out.emplace_back(h.name, detail::evaluate(s, c, h.kind, mean_tool_force, x) * h.scale);
-  return out;
+  return measure_from(measure_maxima(s, c), measure_sums(s, c), s, c, mean_tool_force);
 }
 
 }  // namespace rkpm::runner::case_file
