@@ -432,6 +432,34 @@ pulled_bar pull_johnson_cook_bar(bool opens_cracks, int cells_thick = 2) {
 
 }  // namespace
 
+TEST_CASE("fracture: a cut made before the run is drawn open though the material opens none") {
+  // A Johnson-Cook bar whose damage opens no cracks (cracks_can_grow() is false), one cell cut by
+  // hand across its middle, as a notch is: the snapshot draws that cell as its two sides.
+  constexpr double h = 0.5e-3;
+  const Eigen::Vector2i n(static_cast<int>(std::lround(L / h)) + 1, 3);
+  problem_for<ductile> p{
+      .particles = make_grid_particles<2>(vec2(0, 0), vec2(L, 2 * h), n, 2.0),
+      .mesh = make_grid_mesh(vec2(0, 0), vec2(L, 2 * h), n),
+      .material = material::johnson_cook({200e9, 0.3, 7800.0},
+                                         material::hardening::johnson_cook{300e6, 100e6, 0.3, 0.0, 1.0, 1.0, 294.0, 1800.0},
+                                         material::johnson_cook_heating{460.0}, material::johnson_cook_damage{0.1, 0.0, 0.0, 0.0, 0.0}),
+      .contact = {}};
+  run_options o;
+  o.end_time = 1e-7;
+  auto s = make_solver<ductile>(std::move(p), o);
+  REQUIRE(!s.cracks_can_grow());
+  CHECK(io::snapshot_extras_of(s).empty());  // nothing cut: the plain snapshot
+  const auto middle = static_cast<index_t>((n[0] - 1) / 2);  // the bottom row's middle cell
+  s.cut_cells({{middle, vec2(1.0, 0.0)}});
+  REQUIRE(s.cracks().size() == 1);
+  const io::snapshot_extras extras = io::snapshot_extras_of(s);
+  std::size_t faces = 0, polygons = 0;
+  for (const std::uint8_t k : extras.kind) faces += k == io::point_kind_crack_face ? 1 : 0;
+  for (const std::uint8_t t : extras.cells.types) polygons += t == io::vtk_polygon ? 1 : 0;
+  CHECK(faces == 4);
+  CHECK(polygons == 2);
+}
+
 TEST_CASE("fracture: a Johnson-Cook bar pulled apart breaks in two only when its damage opens cracks") {
   const pulled_bar opened = pull_johnson_cook_bar(true);
   CHECK(opened.failed > 0);

@@ -124,8 +124,8 @@ struct snapshot_extras {
   bool empty() const { return position.empty(); }
 };
 
-// The crack faces and failed points of s, when its cracks can grow and its particles are the
-// cells' nodes; empty otherwise (the snapshot is the plain one).
+// The crack faces and failed points of s, when its cracks can grow or it has cuts (a notch cut
+// before the run) and its particles are the cells' nodes; empty otherwise (the plain snapshot).
 template <class Solver>
 snapshot_extras snapshot_extras_of(const Solver& s) {
   snapshot_extras out;
@@ -133,7 +133,7 @@ snapshot_extras snapshot_extras_of(const Solver& s) {
     const discrete_model& m = s.model();
     const bool nodes = m.bodies.found() ? m.bodies.nodes_are_particles()
                                         : rkpm::nodes_are_particles(m.particles.position, m.mesh);
-    if (!s.cracks_can_grow() || !nodes) return out;
+    if ((!s.cracks_can_grow() && s.cracks().empty()) || !nodes) return out;
     const auto n = static_cast<std::int64_t>(m.particle_count());
     const std::vector<cell_crack>& cuts = s.cracks();
     const crack_faces faces = crack_face_points(m, cuts, s.coefficients());
