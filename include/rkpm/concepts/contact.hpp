@@ -39,6 +39,9 @@ struct contact_body {
   // physical positions.
   const model_bodies* bodies = nullptr;
   const shape_table<2>* at_particles = nullptr;
+  // The reference is a deformed configuration (discrete_model::deformed_reference): setup() does
+  // not check that the tools start outside it (a rank's part built again on several processes).
+  bool deformed_reference = false;
 };
 
 // The particles checked against the tools, given once at set-up: slave j is particle

@@ -77,7 +77,7 @@ class tool_slave_contact {
     table_ = slaves.table;
     reached_ = compact_columns(table_, np);
     const index_t ns = static_cast<index_t>(slave_.size());
-    check_tools_outside(tools_, grid_, body.reference_position);
+    if (!body.deformed_reference) check_tools_outside(tools_, grid_, body.reference_position);
 
     const index_t nt = static_cast<index_t>(tools_.size());
     x_.assign(ns, vec2::Zero());

@@ -263,14 +263,16 @@ class checkpoint_parts final : public checkpoint_layout {
   }
 
   // A part's section table against the first part's: the same sections in the same order, the
-  // shared ones with the same values (their checksums), the whole arrays' with the part's count.
+  // shared ones with the same values (their checksums), the whole arrays' with the part's count
+  // (or empty in every part: a Lagrangian run's reference, solver/checkpoint.hpp).
   void check_table(const part& p, const std::vector<checkpoint_reader::section>& first) const {
     bool same = p.table.size() == first.size();
     for (std::size_t i = 6; same && i < first.size(); ++i) {
       const checkpoint_reader::section &s = p.table[i], &f = first[i];
       const int a = array_of(s.name);
       same = s.name == f.name && s.value_bytes == f.value_bytes &&
-             (a < 0 ? s.count == f.count && s.crc == f.crc : s.count == p.table[4 + a].count);
+             (a < 0 ? s.count == f.count && s.crc == f.crc
+                    : s.count == p.table[4 + a].count || (s.count == 0 && f.count == 0));
     }
     if (!same) refuse(p.file, "its sections differ from part 0's: parts of different checkpoints");
   }

@@ -95,7 +95,7 @@ class checkpoint_reader {
   template <bitwise_value T>
   void array(std::string_view name, std::vector<T>& values) {
     const section& s = open<T>(name);
-    if (const std::vector<stored_index>* index = layout_ ? layout_->whole_index(name) : nullptr) {
+    if (const std::vector<stored_index>* index = layout_ && !values.empty() ? layout_->whole_index(name) : nullptr) {
       if (index->size() != values.size())
         fail("checkpoint '{}': section '{}': this rank holds {} values but its layout maps {}", name_, name,
              values.size(), index->size());

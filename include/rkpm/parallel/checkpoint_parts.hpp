@@ -89,6 +89,7 @@ void write_checkpoint_parts(distributed_solver<Solver>& run, const std::filesyst
 template <class Solver>
 void read_checkpoint_parts(distributed_solver<Solver>& run, const std::filesystem::path& folder,
                            std::string_view configuration) {
+  if (run.rereferences_through_whole()) return run.read_whole(folder, configuration);  // as read_checkpoint
   run.group().guarded([&] {
     const discrete_model& part = run.solver().model();
     io::checkpoint_parts parts(folder, whole_identity(run, configuration),

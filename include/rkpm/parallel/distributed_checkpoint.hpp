@@ -120,10 +120,13 @@ void write_checkpoint(distributed_solver<Solver>& run, const std::filesystem::pa
 }
 
 // Collective: every rank reads a checkpoint of the whole model (written on any number of
-// processes) and takes its particles' and points' values. Refused on every rank alike.
+// processes) and takes its particles' and points' values. Refused on every rank alike. Through
+// the whole solver when the run has its maker (distributed_solver::read_whole): a re-referenced
+// checkpoint's model is rebuilt there and the parts built from it.
 template <class Solver>
 void read_checkpoint(distributed_solver<Solver>& run, const std::filesystem::path& path,
                      std::string_view configuration) {
+  if (run.rereferences_through_whole()) return run.read_whole(path, configuration);  // a re-referenced model
   mpi_checkpoint_layout layout(run.group(), run.solver().model());
   run.group().guarded([&] {
     io::checkpoint_reader r(path, whole_identity(run, configuration));

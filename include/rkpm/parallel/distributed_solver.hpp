@@ -21,10 +21,16 @@
 // same part.
 // Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: then
 // the surfaces' particles and rows join the shared region, and every rank corrects them alike.
+// Re-referencing (docs/method.md section 5.8) through step(), run() or rereference(): every rank
+// re-references a one-process solver of the whole model (rereference_through) and builds its
+// part again from it (parallel/distributed_rereference.hpp).
 
 #include <algorithm>
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -79,32 +85,23 @@ class distributed_solver {
 
   // Collective. `partition`: one part per process (partition_particles, or a given one).
   distributed_solver(communicator& comm, discrete_model whole, problem_type prob, run_options options,
-                     const particle_partition& partition) {
-    check(comm, partition, whole.particle_count());
-    rank_model r;
-    comm.guarded([&] {
-      whole = with_bodies<geometry_type>(std::move(whole));
-      shared_region(whole, prob, options);
-      r.plan = make_halo_plan(partition, whole.at_points, comm.rank(), &whole.at_particles,
-                              shared_of(whole.at_particles, prob));
-      r.shared = shared_;
-      r.local = local_model(whole, r.plan);
-    });
-    comm.agree();
-    group_ = std::make_unique<mpi_process_group>(comm, partition, r.plan, whole.at_points);
-    whole = discrete_model{};
-    finish(comm, std::move(r), std::move(prob), options);
+                     const particle_partition& partition)
+      : partition_(partition), options_(options) {
+    keep(prob);
+    build(comm, std::move(whole), std::move(prob), true);
   }
 
   // Collective. The set-up in parts (parallel/rank_setup.hpp): from the layout of the whole model,
   // each rank builds its part alone; no rank holds a table of the whole. The layout is dropped
   // once the part is built.
   distributed_solver(communicator& comm, model_layout layout, problem_type prob, run_options options,
-                     const particle_partition& partition) {
+                     const particle_partition& partition)
+      : partition_(partition), options_(options) {
+    keep(prob);
     check(comm, partition, layout.whole.particle_count());
     rank_model r;
     comm.guarded([&] {
-      const std::vector<index_t> region = shared_region(layout.whole, prob, options);
+      const std::vector<index_t> region = shared_region(layout.whole, prob, options, true);
       r = rank_model_of(layout, partition, comm.rank(), region,
                         [&](const shape_table<2>& rows) { return shared_of(rows, prob); });
     });
@@ -124,7 +121,65 @@ class distributed_solver {
   // their rows' columns.
   index_t shared_count() const { return shared_; }
 
+  // ---- re-referencing (parallel/distributed_rereference.hpp) -------------------------------
+  // `make_whole`: the one-process solver of the whole model as set up (make_solver of the same
+  // problem and options), built on every rank at each re-reference and at the read of a
+  // re-referenced checkpoint; without it both are refused.
+  void rereference_through(std::function<Solver()> make_whole) { make_whole_ = std::move(make_whole); }
+  bool rereferences_through_whole() const { return static_cast<bool>(make_whole_); }
+  // Collective: one step, then the re-reference if it is due (Solver::rereference_pending()).
+  void step();
+  void step_to_end();
+  // Collective: Solver::run's loop through step_to_end(); observe(solver()) as Solver::run calls it.
+  template <class Observer>
+  void run(Observer&& observe, index_t every = 0) {
+    observe(solver());
+    while (solver().before_end()) {
+      step_to_end();
+      if (every > 0 && solver().steps() % every == 0 && solver().before_end()) observe(solver());
+    }
+    observe(solver());
+  }
+  // Collective: every rank's part re-referenced as one process re-references the whole model.
+  void rereference();
+  // Collective: every rank's part built again from `whole`, a one-process solver of the whole
+  // model with the same state on every rank (its model, constraints, slaves, masses and state).
+  void rebuild_from(const Solver& whole);
+  // Collective: a checkpoint (a file or a folder of parts) read into the whole solver on every
+  // rank, and the parts built from it: read_checkpoint's path when rereference_through was given,
+  // for a re-referenced checkpoint's model.
+  void read_whole(const std::filesystem::path& path, std::string_view configuration);
+  // How many times the parts were built again (a caller's layouts of the old parts are stale).
+  index_t rebuilds() const { return rebuilds_; }
+
  private:
+  // The problem as given, without its particles and cells (the model has them): a part built
+  // again takes its materials, contact policy and body forces.
+  void keep(const problem_type& prob) {
+    problem_.emplace(prob);
+    problem_->particles = {};
+    problem_->mesh = {};
+  }
+
+  // The set-up from the whole model; `find_axis`: add the axis constraints (not to a rebuilt
+  // model's, which has them).
+  void build(communicator& comm, discrete_model whole, problem_type prob, bool find_axis) {
+    check(comm, partition_, whole.particle_count());
+    rank_model r;
+    comm.guarded([&] {
+      whole = with_bodies<geometry_type>(std::move(whole));
+      shared_region(whole, prob, options_, find_axis);
+      r.plan = make_halo_plan(partition_, whole.at_points, comm.rank(), &whole.at_particles,
+                              shared_of(whole.at_particles, prob));
+      r.shared = shared_;
+      r.local = local_model(whole, r.plan);
+    });
+    comm.agree();
+    group_ = std::make_unique<mpi_process_group>(comm, partition_, r.plan, whole.at_points);
+    whole = discrete_model{};
+    finish(comm, std::move(r), std::move(prob), options_);
+  }
+
   void check(communicator& comm, const particle_partition& partition, index_t particles) const {
     if (partition.parts != comm.size())
       fail("distributed solver: a partition into {} parts on {} processes; partition into as many parts as "
@@ -138,8 +193,9 @@ class distributed_solver {
   // On the whole model (or its layout), as one process finds them: the axis constraints, the
   // contact slaves and, when the contact reads them, the bodies' surfaces (surfaces_); returns
   // the particles whose rows decide the shared region.
-  std::vector<index_t> shared_region(const discrete_model& whole, problem_type& prob, const run_options& options) {
-    add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
+  std::vector<index_t> shared_region(const discrete_model& whole, problem_type& prob, const run_options& options,
+                                     bool find_axis) {
+    if (find_axis) add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
     prob.slave_particles = slave_particles(whole, std::move(prob.slave_particles), has_contact(prob.contact));
     surfaces_.clear();
     if (reads_surfaces(prob.contact)) surfaces_ = whole.bodies.surface("contact on several processes");
@@ -173,6 +229,14 @@ class distributed_solver {
   std::vector<boundary_chain> surfaces_;  // during the set-up
   std::unique_ptr<mpi_process_group> group_;  // the solver's model points to it
   std::optional<Solver> solver_;
+  particle_partition partition_;
+  run_options options_;
+  std::optional<problem_type> problem_;
+  std::function<Solver()> make_whole_;
+  index_t rebuilds_ = 0;
 };
 
 }  // namespace rkpm::parallel
+
+// step(), rereference() and rebuild_from().
+#include <rkpm/parallel/distributed_rereference.hpp>

@@ -81,6 +81,7 @@ inline discrete_model local_force_model(const discrete_model& global, const halo
   m.own = plan.own();
   m.global_mean_support = global.mean_support();
   m.point_id = plan.points;
+  m.whole_points = plan.global_points;
   return m;
 }
 
@@ -132,6 +133,8 @@ inline discrete_model local_model(const discrete_model& global, const halo_plan&
   for (index_t i = 0; i < plan.local_particles(); ++i) m.lumped_volume.push_back(global.lumped_volume[plan.global_particle(i)]);
   const std::vector<stored_index> local = keep_held_rows(global.at_particles, plan, m);
   m.bodies = model_bodies::part(global.bodies, m.particle_id, plan.points, local);
+  m.nodal = global.nodal;
+  m.deformed_reference = global.deformed_reference;
   return m;
 }
 

@@ -191,6 +191,7 @@ rank_model rank_model_of(const model_layout& l, const particle_partition& partit
   m.own = h.own();
   m.global_mean_support = w.mean_support();
   m.point_id = h.points;
+  m.whole_points = h.global_points;
   m.bodies = model_bodies::part(w.bodies, m.particle_id, h.points, local);
   return r;
 }

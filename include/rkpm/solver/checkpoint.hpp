@@ -30,9 +30,15 @@ namespace rkpm {
 // solver/time_step_controller.hpp, solver/point_materials.hpp, write_checkpoint below): on several
 // processes, a rank holds its part of them (parallel/distributed_checkpoint.hpp,
 // io/checkpoint_parts.hpp); every other section is the same on every rank.
+// The reference's arrays are empty until a re-reference (and a nodal rule's carried points always):
+// an empty array is written and read as it is, the same on every rank.
 inline constexpr std::string_view checkpoint_particle_sections[] = {
-    "solver.mass", "solver.d", "solver.v", "solver.a", "solver.f_int", "solver.v_half_prev", "clock.mode"};
-inline constexpr std::string_view checkpoint_point_sections[] = {"points.state", "points.tau", "points.F"};
+    "solver.mass",        "solver.d",           "solver.v",          "solver.a",         "solver.f_int",
+    "solver.v_half_prev", "clock.mode",         "reference.initial_position", "reference.position",
+    "reference.support",  "reference.volume"};
+inline constexpr std::string_view checkpoint_point_sections[] = {
+    "points.state", "points.tau", "points.F", "points.reference_F", "points.initial_volume_per_weight",
+    "reference.point_position", "reference.point_weight"};
 
 template <Geometry G, Material M, Contact Ct>
 io::checkpoint_identity checkpoint_identity_of(const explicit_solver<G, M, Ct>& s, std::string_view configuration) {

@@ -62,8 +62,12 @@ struct discrete_model {
   // Whether the points are a nodal rule's (scni): on smoothing cells, not carried as material
   // points when the model is rebuilt in the current configuration (section 5.8).
   bool nodal = false;
+  // Whether the particles' reference is a deformed configuration: a model rebuilt by a re-reference
+  // (section 5.8), which the tools may already press into (contact_body::deformed_reference).
+  bool deformed_reference = false;
   std::vector<stored_index> point_id;
   std::vector<stored_index> particle_id;
+  index_t whole_points = 0;  // a rank's model: the whole model's point count
 
   // Takes the bodies found for these particles and cells, and finds each point's.
   void set_bodies(model_bodies b) {
@@ -81,6 +85,7 @@ struct discrete_model {
     return sum / static_cast<double>(particle_count());
   }
   index_t point_count() const { return points.size(); }
+  index_t whole_point_count() const { return is_part() || whole_points > 0 ? whole_points : point_count(); }
   // Point q's and particle I's index in the whole model (q and I themselves on one process).
   index_t global_point(index_t q) const { return point_id.empty() ? q : point_id[q]; }
   index_t global_particle(index_t I) const { return particle_id.empty() ? I : particle_id[I]; }

@@ -10,10 +10,9 @@
 //   constraints project v(n+1/2) onto the prescribed physical velocities; d(n+1) follows
 //   f_int(n+1) from the material at every quadrature point (solver/point_materials.hpp)
 //   a(n+1) = (f_ext - f_int) / m;  v(n+1) = v(n+1/2) + dt/2 a(n+1); constraints again.
-// No heap allocation inside step(); the result does not depend on the thread count. The loops
-// and sums run through the execution layer (core/execution.hpp), over the particles this
-// process owns (discrete_model::own), and the step names the points where an MPI backend
-// exchanges ghost values: after the prediction, after contact and constraints, after the scatter.
+// No heap allocation inside step(); the result does not depend on the thread count. The loops and
+// sums run through the execution layer (core/execution.hpp), over the particles this process owns
+// (discrete_model::own); the step names where an MPI backend exchanges ghost values.
 
 #include <algorithm>
 #include <memory>
@@ -56,7 +55,6 @@ class explicit_solver {
   explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options, model_factory factory = {});
   // ---- stepping ----------------------------------------------------------------------
   void step();
-
   // Steps to options.end_time, calling observe(*this) at the start, every `every` steps
   // (0: never in between) and at the end. Stops with an error past options.max_steps.
   template <class Observer>
@@ -69,8 +67,7 @@ class explicit_solver {
     observe(*this);
   }
   void run() { run([](const explicit_solver&) {}); }
-  // Whether the run has yet to reach options().end_time, and one step toward it as run() takes
-  // them (the last one or two shortened to land on it).
+  // Whether the run has yet to reach options().end_time; one step toward it as run() takes them.
   bool before_end() const { return timeline_.before(options_.end_time); }
   void step_to_end() {
     timeline_.approach_end(options_);
@@ -99,8 +96,12 @@ class explicit_solver {
   // ---- the model's lifecycle (docs/method.md section 5.8) ------------------------------
   // Rebuilds the model in the current configuration through model_builder(), carrying the state
   // (solver/rereference_step.hpp): step() calls it when options().rereference says so or a crack
-  // grows; a caller may, between steps. Refused on several processes and without a builder.
+  // grows; a caller may, between steps. On a rank's part step() marks it pending instead, for
+  // parallel::distributed_solver, which rebuilds every part.
   void rereference();
+  bool rereference_pending() const { return rereference_pending_; }
+  // A rank's part built on a re-referenced model takes the run's masses (`physical`: empty without mass scaling).
+  void carry_masses(std::vector<double> mass, std::vector<double> physical, double factor);
   index_t rereferences() const { return static_cast<index_t>(rereference_times_.size()); }
   const std::vector<double>& rereference_times() const { return rereference_times_; }  // s
   // Cuts cells (a notch) as a crack cuts them (113), each normal to its n, and rebuilds the model.
@@ -125,8 +126,7 @@ class explicit_solver {
   const energy_balance& energy() const { return energy_; }
   const run_options& options() const { return options_; }
   const discrete_model& model() const { return model_; }
-  // The builder of model() with its method (empty if none was given).
-  const model_factory& model_builder() const { return factory_; }
+  const model_factory& model_builder() const { return factory_; }  // model()'s builder (or empty)
   // Body b's material (problem::body_materials[b], or problem::material), the bodies, I's body.
   const M& material(index_t b = 0) const { return materials_.of_body(b); }
   index_t bodies() const { return model_.bodies.count(); }
@@ -141,8 +141,7 @@ class explicit_solver {
   // the physical ones (the same vector without scaling).
   const std::vector<double>& mass() const { return mass_; }
   const std::vector<double>& physical_mass() const { return physical_mass_.empty() ? mass_ : physical_mass_; }
-  // The mass scaling factor (84) (1 without), and the kinetic to internal energy ratio (85) seen
-  // so far.
+  // The mass scaling factor (84) (1 without), and the kinetic to internal energy ratio (85) so far.
   double mass_scaling_factor() const { return mass_factor_; }
   const quasi_static_check& quasi_static() const { return quasi_static_; }
   const std::vector<vec2>& coefficients() const { return d_; }
@@ -156,7 +155,9 @@ class explicit_solver {
   const constraint_projector& constraints() const { return constraints_; }
   const std::vector<index_t>& slave_particles() const { return contact_.slaves; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
-  contact_body body() const { return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles}; }
+  contact_body body() const {
+    return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles, model_.deformed_reference};
+  }
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
   // Physical displacements since the start (across re-references: x_I - X_I^0), velocities and
@@ -235,6 +236,7 @@ class explicit_solver {
   step_timeline timeline_;
   std::vector<double> rereference_times_;
   index_t last_rereference_step_ = 0;
+  bool rereference_pending_ = false;  // on a rank's part: due, for the distributed solver
   std::vector<vec2> initial_position_;  // empty until the first re-reference
   std::vector<cell_crack> cracks_;
   std::vector<std::shared_ptr<step_companion<explicit_solver>>> companions_;

@@ -28,9 +28,6 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
       contact_{std::move(prob.contact)},
       options_(options) {
   options_.validate();
-  if (options_.rereference.enabled() && model_.is_part())
-    fail("re-referencing on several processes is not available yet: run on one process, or without "
-         "\"rereference\"");
   model_.own.validate(model_.particle_count(), model_.point_count());
   mass_ = materials_.lumped_masses(model_);
   d_.assign(model_.particle_count(), vec2::Zero());
@@ -54,6 +51,10 @@ explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> 
 
 template <Geometry G, Material M, Contact Ct>
 void explicit_solver<G, M, Ct>::step() {
+  if (rereference_pending_)
+    fail("t = {:.6g} s: a re-reference is due on several processes: step the run with "
+         "parallel::distributed_solver::step(), which rebuilds every rank's part",
+         timeline_.time);
   const double dt = timeline_.begin_step();
   const index_range owned = model_.own.particles;
   const std::vector<index_t>& constrained = constraints_.touched();
@@ -107,8 +108,10 @@ void explicit_solver<G, M, Ct>::step() {
   energy_.record();
   if (options_.mass_scaling.enabled())
     quasi_static_.observe(options_.mass_scaling, timeline_.time, options_.end_time, energy_.kinetic, energy_.internal);
-  if (grow_cracks() || rereference_due()) rereference();
-  else if (timeline_.steps % options_.time_step_update_interval == 0)
+  if (grow_cracks() || rereference_due()) {
+    if (model_.is_part()) rereference_pending_ = true;  // every rank alike (rereference_due)
+    else rereference();
+  } else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);
   for (const auto& c : companions_) c->after_step(*this);
@@ -128,6 +131,16 @@ void explicit_solver<G, M, Ct>::scale_masses() {
   mass_factor_ = p.factor_for(dt0);
   physical_mass_ = mass_;
   for (double& m : mass_) m *= mass_factor_;
+}
+
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::carry_masses(std::vector<double> mass, std::vector<double> physical, double factor) {
+  if (mass.size() != mass_.size() || !(physical.empty() || physical.size() == mass_.size()))
+    fail("carry_masses: {} masses for {} particles", mass.size(), mass_.size());
+  mass_ = std::move(mass);
+  physical_mass_ = std::move(physical);
+  mass_factor_ = factor;
+  derive_from_model(constraints_.constraints());
 }
 
 template <Geometry G, Material M, Contact Ct>

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <rkpm/concepts/geometry.hpp>
@@ -57,7 +58,8 @@ class point_materials {
       : state_(m.point_count(), material.of_body(0).initial_state()),
         tau_(stress_recomputed ? 0 : m.point_count(), block_matrix::of(mat3::Zero())),
         F_(state_records_F ? 0 : m.point_count()),
-        tile_(m.traversal.tiles()) {
+        tile_(m.traversal.tiles()),
+        whole_points_(m.whole_point_count()) {
     if (material.count() > 1)
       for (index_t q = 0; q < m.point_count(); ++q) state_[q] = material.at_point(q).initial_state();
     support_inverse_ = m.mean_support().cwiseInverse();
@@ -77,8 +79,12 @@ class point_materials {
     if (!group) return;
     const std::vector<stored_index>& owned = group->owned_points();
     point_terms_.resize(owned.size());
-    for (std::size_t k = 0; k < owned.size(); ++k)
-      point_terms_[k] = state_[owned[k]].plastic_work * m.points.weight[owned[k]];
+    for (std::size_t k = 0; k < owned.size(); ++k) {  // each term as one process's tile sums it
+      const index_t q = owned[k];
+      point_terms_[k] = reference_.active()
+                            ? state_[q].plastic_work * m.points.weight[q] * reference_.initial_volume_per_weight(q)
+                            : state_[q].plastic_work * m.points.weight[q];
+    }
     plastic_work_ = group->sum_points(point_terms_);
     min_stretch_ = group->min(min_stretch_);
   }
@@ -136,6 +142,7 @@ class point_materials {
   void bind(const discrete_model& m) {
     tile_.assign(m.traversal.tiles(), tile_summary{});
     support_inverse_ = m.mean_support().cwiseInverse();
+    whole_points_ = m.whole_point_count();
   }
 
   // Checkpoint (io/checkpoint.hpp): the states and what the last force evaluation left.
@@ -196,7 +203,8 @@ class point_materials {
     if constexpr (!state_records_F) a.array("points.F", s.F_);
     a.value("points.min_stretch", s.min_stretch_);
     a.value("points.plastic_work", s.plastic_work_);
-    a.part(s.reference_);
+    if constexpr (std::is_const_v<Self>) s.reference_.save(a, s.whole_points_);
+    else s.reference_.load(a, static_cast<index_t>(s.state_.size()));
   }
 
   [[noreturn]] void report_failure(const discrete_model& m, const tile_summary& tile, step_context where) {
@@ -212,6 +220,7 @@ class point_materials {
   std::string error_;                  // the first material error's message (of point error_point_)
   index_t error_point_ = 0;
   point_reference reference_;           // empty until the first re-reference
+  index_t whole_points_ = 0;            // the whole model's points (a rank's part: not its own)
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
   double min_stretch_ = 1.0, plastic_work_ = 0.0;
 };

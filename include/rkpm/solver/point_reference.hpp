@@ -55,17 +55,18 @@ class point_reference {
     }
   }
 
-  // Checkpoint (io/checkpoint.hpp): empty sections for a Lagrangian run.
-  void save(io::checkpoint_writer& w) const {
-    w.value("points.reference_count", static_cast<std::uint64_t>(F_.size()));
+  // Checkpoint (io/checkpoint.hpp): empty sections for a Lagrangian run. The count is the whole
+  // model's points (`whole`); on a rank's part the arrays are its `points` (its layout maps them).
+  void save(io::checkpoint_writer& w, index_t whole) const {
+    w.value("points.reference_count", static_cast<std::uint64_t>(active() ? whole : 0));
     w.array("points.reference_F", F_);
     w.array("points.initial_volume_per_weight", initial_per_weight_);
   }
-  void load(io::checkpoint_reader& r) {
+  void load(io::checkpoint_reader& r, index_t points) {
     std::uint64_t n = 0;
     r.value("points.reference_count", n);
-    F_.resize(n);
-    initial_per_weight_.resize(n);
+    F_.resize(n > 0 ? points : 0);
+    initial_per_weight_.resize(F_.size());
     r.array("points.reference_F", F_);
     r.array("points.initial_volume_per_weight", initial_per_weight_);
   }

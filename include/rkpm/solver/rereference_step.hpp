@@ -41,8 +41,10 @@ bool explicit_solver<G, M, Ct>::rereference_due() const {
   if (when.every_steps > 0 && timeline_.steps - last_rereference_step_ >= when.every_steps) return true;
   // The distortion (81) every time_step_update_interval steps, with the stable step's update: a
   // pass over the points each step would cost a tenth of the step.
-  return when.max_stretch > 0.0 && timeline_.steps % options_.time_step_update_interval == 0 &&
-         points_.max_distortion(model_) > when.max_stretch;
+  // On a rank's part, over every rank's points (MPI_MAX), so that every rank decides alike.
+  if (!(when.max_stretch > 0.0 && timeline_.steps % options_.time_step_update_interval == 0)) return false;
+  const double distortion = points_.max_distortion(model_);
+  return (model_.own.group ? model_.own.group->max(distortion) : distortion) > when.max_stretch;
 }
 
 template <Geometry G, Material M, Contact Ct>
@@ -110,8 +112,8 @@ bool explicit_solver<G, M, Ct>::insert_cuts(const std::vector<std::pair<index_t,
 template <Geometry G, Material M, Contact Ct>
 void explicit_solver<G, M, Ct>::rereference() {
   if (model_.is_part())
-    fail("re-referencing on several processes is not available yet: run on one process, or without "
-         "\"rereference\"");
+    fail("re-referencing a rank's part: the run on several processes re-references every part at once "
+         "(parallel::distributed_solver::rereference)");
   if (!factory_)
     fail("re-referencing needs the solver's model builder: build the solver with make_solver (or pass the "
          "model_factory to its constructor)");
@@ -145,6 +147,7 @@ void explicit_solver<G, M, Ct>::rereference() {
   }
   discrete_model next = with_bodies<G>(factory_(std::move(particles), std::move(cells), options_.max_moment_condition,
                                                 model_.nodal ? nullptr : &carried));
+  next.deformed_reference = true;
 
   // 2. The points: the same material points, F_r their total F.
   points_.rereference(model_, next);
@@ -206,9 +209,18 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
     }
     a.array("reference.point_position", carried.position);
     a.array("reference.point_weight", carried.weight);
+    // A rank's part: built on the re-referenced model by parallel::distributed_solver, whose
+    // read_checkpoint reads the file into a whole solver first.
+    if (s.model_.is_part()) {
+      if (particles.position != s.model_.particles.position)
+        fail("a re-referenced checkpoint read into a rank's part of another reference: read it with "
+             "parallel::read_checkpoint of a distributed_solver given its whole solver (rereference_through)");
+      return;
+    }
     if (!s.factory_) fail("reading a re-referenced checkpoint needs the solver's model builder: build it with make_solver");
     s.model_ = with_bodies<G>(s.factory_(std::move(particles), std::move(cells), s.options_.max_moment_condition,
                                          s.model_.nodal ? nullptr : &carried));
+    s.model_.deformed_reference = true;
     s.points_.bind(s.model_);
     s.derive_from_model(s.constraints_.constraints());
   } else if (count > 0) {

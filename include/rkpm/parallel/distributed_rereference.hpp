@@ -1,0 +1,160 @@
+#pragma once
+// Re-referencing on P processes (docs/method.md sections 5.8 and 9.8): distributed_solver's
+// step(), rereference(), rebuild_from() and read_whole(). A re-reference is decided alike on
+// every rank (every_steps counts steps; the distortion is the largest over every rank's points,
+// an MPI_MAX: explicit_solver::rereference_due), and the step that decides it leaves the part
+// between steps with the re-reference pending. Then, collectively:
+//   1. the run's state, the checkpoint one process would write at this step (the owned values
+//      gathered on rank 0, distributed_checkpoint.hpp), is broadcast to every rank;
+//   2. every rank reads it into a one-process solver of the whole model (rereference_through's
+//      maker; a re-referenced state rebuilds its model through the builder as a restart does)
+//      and re-references it as one process does: the same bits on every rank;
+//   3. every rank builds its part again from that solver's model with the same partition (the
+//      particles keep their ids and owners; new ghosts, halo plan and point owners), the
+//      whole solver's constraints and slaves, and its masses (kept across a re-reference), and
+//      takes its values of the whole solver's state by global index (read_checkpoint's path).
+// So a re-referenced run on P processes is one process's bit for bit. Memory: the whole model
+// and its state on every rank during the rebuild, as at the set-up.
+// Included at the end of parallel/distributed_solver.hpp.
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <mpi.h>
+
+#include <rkpm/core/error.hpp>
+#include <rkpm/io/checkpoint.hpp>
+#include <rkpm/parallel/distributed_checkpoint.hpp>
+#include <rkpm/parallel/distributed_solver.hpp>
+#include <rkpm/solver/checkpoint.hpp>
+
+namespace rkpm::parallel {
+
+namespace detail {
+
+inline constexpr std::string_view rebuild_configuration = "the run on several processes";
+
+// Collective: rank 0's bytes on every rank (in pieces below 2^31 bytes).
+inline void broadcast_bytes(communicator& comm, std::string& bytes) {
+  std::uint64_t size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm.get());
+  bytes.resize(size);
+  constexpr std::uint64_t piece = std::uint64_t{1} << 30;
+  for (std::uint64_t at = 0; at < size; at += piece)
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(piece, size - at)), MPI_BYTE, 0, comm.get());
+}
+
+// A solver's whole state in memory (section checksums skipped: read at once).
+template <class Solver>
+std::string state_bytes(const Solver& s) {
+  io::checkpoint_writer w({}, checkpoint_identity_of(s, rebuild_configuration), {});
+  w.skip_section_checksums();
+  w.array("solver.mass", s.mass());
+  w.part(s);
+  return w.close();
+}
+
+}  // namespace detail
+
+template <class Solver>
+void distributed_solver<Solver>::step() {
+  solver_->step();
+  if (solver_->rereference_pending()) rereference();
+}
+
+template <class Solver>
+void distributed_solver<Solver>::step_to_end() {
+  solver_->step_to_end();
+  if (solver_->rereference_pending()) rereference();
+}
+
+template <class Solver>
+void distributed_solver<Solver>::rereference() {
+  communicator& comm = group_->comm();
+  comm.guarded([&] {
+    if (!make_whole_)
+      fail("re-referencing on several processes needs the one-process solver of the whole model: give "
+           "distributed_solver::rereference_through its maker");
+    if (!solver_->between_steps()) fail("rereference() between steps only");
+  });
+  comm.agree();
+  // 1. The run's state, on every rank.
+  mpi_checkpoint_layout layout(*group_, solver_->model());
+  io::checkpoint_writer w({}, whole_identity(*this, detail::rebuild_configuration), {}, &layout);
+  w.skip_section_checksums();
+  w.array("solver.mass", solver_->mass());
+  w.part(*solver_);
+  std::string bytes;
+  comm.guarded([&] { bytes = w.close(); });
+  comm.agree();
+  detail::broadcast_bytes(comm, bytes);
+  // 2. One process's re-reference, on every rank alike.
+  std::optional<Solver> whole;
+  comm.guarded([&] {
+    whole.emplace(make_whole_());
+    io::checkpoint_reader r(std::move(bytes), std::string(detail::rebuild_configuration),
+                            checkpoint_identity_of(*whole, detail::rebuild_configuration), false);
+    load_checkpoint(*whole, r);
+    whole->rereference();
+  });
+  comm.agree();
+  // 3. The parts again.
+  rebuild_from(*whole);
+}
+
+template <class Solver>
+void distributed_solver<Solver>::rebuild_from(const Solver& whole) {
+  communicator& comm = group_->comm();
+  std::string bytes;
+  problem_type prob = *problem_;
+  comm.guarded([&] {
+    bytes = detail::state_bytes(whole);
+    prob.constraints = whole.constraints().constraints();
+    prob.slave_particles = whole.slave_particles();
+  });
+  comm.agree();
+  solver_.reset();  // it points to the group built again below
+  build(comm, whole.model(), std::move(prob), false);
+  ++rebuilds_;
+  comm.guarded([&] {
+    // The masses: the run's, kept across re-references (not the new volumes').
+    const index_t n = plan_.local_particles();
+    const bool scaled = options_.mass_scaling.enabled();
+    std::vector<double> mass(n), physical(scaled ? n : 0);
+    for (index_t i = 0; i < n; ++i) {
+      mass[i] = whole.mass()[plan_.global_particle(i)];
+      if (scaled) physical[i] = whole.physical_mass()[plan_.global_particle(i)];
+    }
+    solver_->carry_masses(std::move(mass), std::move(physical), whole.mass_scaling_factor());
+  });
+  comm.agree();
+  mpi_checkpoint_layout layout(*group_, solver_->model());
+  comm.guarded([&] {
+    io::checkpoint_reader r(std::move(bytes), std::string(detail::rebuild_configuration),
+                            whole_identity(*this, detail::rebuild_configuration), false);
+    r.set_layout(&layout);
+    load_checkpoint(*solver_, r);
+  });
+  comm.agree();
+}
+
+template <class Solver>
+void distributed_solver<Solver>::read_whole(const std::filesystem::path& path, std::string_view configuration) {
+  communicator& comm = group_->comm();
+  std::optional<Solver> whole;
+  comm.guarded([&] {
+    if (!make_whole_) fail("read_whole: no maker of the whole solver (rereference_through)");
+    whole.emplace(make_whole_());
+    rkpm::read_checkpoint(*whole, path, configuration);
+  });
+  comm.agree();
+  rebuild_from(*whole);
+}
+
+}  // namespace rkpm::parallel
