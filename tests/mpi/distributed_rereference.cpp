@@ -1,13 +1,13 @@
 // Re-referencing on 1, 2 and 3 processes (parallel/distributed_rereference.hpp; run by ctest as
 // mpi.distributed_rereference.ranks_N): the bar impact of mpi/bar_impact.hpp built through
 // make_solver (the builder a re-reference calls), re-referenced every 10 steps and, apart, by
-// the kernels' stretch (a threshold that fires five times in 45 steps), on P ranks, against the
-// one-process run every rank also steps. Every 15 steps the ranks' owned coefficients,
-// velocities and current positions equal one process's bit for bit, and so do the totals (time,
-// step size, every energy including the remap, the impulse) and the re-references' times. A
-// checkpoint written on P ranks after the re-references is one process's file byte for byte;
-// read on P ranks (through the whole solver, which rebuilds the re-referenced model), and a
-// checkpoint in parts likewise (parallel/checkpoint_parts.hpp), it continues to the
+// the kernels' stretch (a threshold that fires at least three times in 45 steps), on P ranks,
+// against the one-process run every rank also steps. Every 15 steps the ranks' owned
+// coefficients, velocities and current positions equal one process's bit for bit, and so do the
+// totals (time, step size, every energy including the remap, the impulse) and the re-references'
+// times. A checkpoint written on P ranks after the re-references is one process's file byte for
+// byte; read on P ranks (through the whole solver, which rebuilds the re-referenced model), and
+// a checkpoint in parts likewise (parallel/checkpoint_parts.hpp), it continues to the
 // uninterrupted run's bits across more re-references. Without the whole solver's maker the
 // re-reference is refused on every rank alike; a part stepped past a pending re-reference is
 // refused.

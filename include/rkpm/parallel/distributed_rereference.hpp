@@ -5,7 +5,7 @@
 // an MPI_MAX: explicit_solver::rereference_due), and the step that decides it leaves the part
 // between steps with the re-reference pending. Then, collectively:
 //   1. the run's state, the checkpoint one process would write at this step (the owned values
-//      gathered on rank 0, distributed_checkpoint.hpp), is broadcast to every rank;
+//      gathered on rank 0, mpi_checkpoint_layout.hpp), is broadcast to every rank;
 //   2. every rank reads it into a one-process solver of the whole model (rereference_through's
 //      maker; a re-referenced state rebuilds its model through the builder as a restart does)
 //      and re-references it as one process does: the same bits on every rank;
@@ -30,7 +30,8 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
-#include <rkpm/parallel/distributed_checkpoint.hpp>
+#include <rkpm/parallel/communicator.hpp>
+#include <rkpm/parallel/mpi_checkpoint_layout.hpp>  // before distributed_solver.hpp, which includes this
 #include <rkpm/parallel/distributed_solver.hpp>
 #include <rkpm/solver/checkpoint.hpp>
 
