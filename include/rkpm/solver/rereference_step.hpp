@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -189,6 +190,7 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
   a.array("reference.initial_position", s.initial_position_);
   std::uint64_t cuts = s.cracks_.size();
   a.value("reference.crack_count", cuts);
+  [[maybe_unused]] const std::vector<cell_crack> cracks_before = reading ? s.cracks_ : std::vector<cell_crack>{};
   if constexpr (reading) s.cracks_.resize(cuts);
   a.array("reference.cracks", s.cracks_);
   if constexpr (reading) {
@@ -217,6 +219,17 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
              "parallel::read_checkpoint of a distributed_solver given its whole solver (rereference_through)");
       return;
     }
+    // A whole solver that mirrors a run on several processes reads the same reference at every
+    // mirror (parallel::mirror_state): its model was built from it, so it stays.
+    const auto same = [](const auto& x, const auto& y) {
+      return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+    };
+    if (s.model_.deformed_reference && same(particles.position, s.model_.particles.position) &&
+        same(particles.support, s.model_.particles.support) && same(particles.volume, s.model_.particles.volume) &&
+        (s.model_.nodal || (same(carried.position, s.model_.points.position) &&
+                            same(carried.weight, s.model_.points.weight))) &&
+        same(cracks_before, s.cracks_))
+      return;
     if (!s.factory_) fail("reading a re-referenced checkpoint needs the solver's model builder: build it with make_solver");
     s.model_ = with_bodies<G>(s.factory_(std::move(particles), std::move(cells), s.options_.max_moment_condition,
                                          s.model_.nodal ? nullptr : &carried));
