@@ -54,13 +54,13 @@ endforeach()
 
 # rkpm_run on several processes (runner/check_ranks.py; tools/runner/ranks.hpp), when rkpm::mpi
 # exists: the paper's three cases, rod_on_rod, the plate_impact case file (its probes gather the
-# whole state for each row) and the Johnson-Cook Taylor bar's (its rows by reduction: extents on
+# whole state for each row), the Johnson-Cook Taylor bar's (its rows by reduction: extents on
 # an edge, largest plastic strain and temperature, momentum, volume change; case_file/
-# measure_parts.hpp) each on 1, 2 and 3 processes give the same files byte for byte, and the
-# same snapshots in pieces (.pvtu, put together by meshio: runner/pieces.py); a checkpoint from
-# 2 processes continues on 1 and on 3 to the uninterrupted run; a failure stops every rank with
-# one line. One thread per process, oversubscribed and unbound (rkpm_mpiexec_flags,
-# tests/CMakeLists.txt).
+# measure_parts.hpp) and the Taylor bar re-referenced (parallel/distributed_rereference.hpp) each
+# on 1, 2 and 3 processes give the same files byte for byte, and the same snapshots in pieces
+# (.pvtu, put together by meshio: runner/pieces.py); a checkpoint from 2 processes continues on 1
+# and on 3 to the uninterrupted run; a failure stops every rank with one line. One thread per
+# process, oversubscribed and unbound (rkpm_mpiexec_flags, tests/CMakeLists.txt).
 if(TARGET rkpm::mpi)
   set(rkpm_ranks_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_ranks.py)
   set(rkpm_ranks_launcher ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 1 ${rkpm_mpiexec_flags})
@@ -87,6 +87,12 @@ if(TARGET rkpm::mpi)
                      ${rkpm_runner_work}/ranks ${request})
     list(APPEND rkpm_ranks_tests tools.runner.ranks_${label})
   endforeach()
+  # Re-referenced by count and by stretch (parallel/distributed_rereference.hpp).
+  add_test(NAME tools.runner.ranks_taylor_bar_rereferenced
+           COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_ranks_check} same "${rkpm_ranks_launcher}" $<TARGET_FILE:rkpm_run>
+                   ${rkpm_runner_work}/ranks taylor_bar --end-time 2e-6 --rereference-every 10
+                   --rereference-stretch 1.02)
+  list(APPEND rkpm_ranks_tests tools.runner.ranks_taylor_bar_rereferenced)
   foreach(mode restart errors)
     add_test(NAME tools.runner.ranks_${mode}
              COMMAND ${RKPM_SYSTEM_PYTHON} ${rkpm_ranks_check} ${mode} "${rkpm_ranks_launcher}"

@@ -21,7 +21,10 @@
 // rank 0 adds the snapshots' .pvtu indexes to the .pvd, and a checkpoint in parts continues on
 // any number of processes (--restart takes a file or a folder of parts). The other ranks follow
 // the same collective calls (follow_run) and write nothing else.
-// Cost of this form: rank 0 holds the whole model beside its part.
+// A re-referenced run re-references through distributed_solver::run: at each re-reference every
+// rank builds its part again from a one-process solver of the whole model that it makes and
+// re-references (parallel/distributed_rereference.hpp); the mirror's gathers follow (layout()).
+// Cost of this form: rank 0 holds the whole model beside its part (every rank, during a re-reference).
 
 #include <algorithm>
 #include <cstdint>
@@ -86,7 +89,14 @@ class rank_steps final : public process_steps<Solver> {
         parallel::partition_particles(model.at_points, model.particle_count(), comm_.size());
     const io::vtu_cells cells = io::snapshot_cells(model);
     run_.emplace(comm_, std::move(model), std::move(*prob), options, partition);
-    layout_.emplace(run_->group(), run_->solver().model());
+    // A re-reference (and the read of a re-referenced checkpoint) goes through the whole model's
+    // one-process solver on every rank (parallel/distributed_rereference.hpp), made as rank 0's.
+    if (options.rereference.enabled())
+      run_->rereference_through([make_problem, method, options] {
+        problem_type p = make_problem();
+        discrete_model m = make_model<G>(method, p.particles, p.mesh, options.max_moment_condition);
+        return Solver(std::move(m), std::move(p), options, model_factory_of<G>(method));
+      });
     pieces_.emplace(comm_, partition, cells);
     return whole;
   }
@@ -100,7 +110,7 @@ class rank_steps final : public process_steps<Solver> {
       parallel::read_checkpoint_parts(*run_, file, configuration_);
     else
       parallel::read_checkpoint(*run_, file, configuration_);
-    parallel::mirror_state(*run_, *layout_, whole, configuration_);
+    parallel::mirror_state(*run_, layout(), whole, configuration_);
   }
 
   void abandon(const std::string& message) override {
@@ -115,18 +125,18 @@ class rank_steps final : public process_steps<Solver> {
     comm_.agree();  // rank 0's set-up (abandon)
     started_ = true;
     const bool root = comm_.rank() == 0;
-    Solver& part = run_->solver();
-    const double end = part.options().end_time;
+    const double end = run_->solver().options().end_time;
     constexpr char observe_whole = 1, snapshot = 2, observe_part = 4;
     const auto reads = [&](double t) -> char {
       const state_needed needs = o.needs(t, end);
       if (needs == state_needed::none) return 0;
       return reduction_ && needs == state_needed::own_part ? observe_part : observe_whole;
     };
-    part.run(
-        [&](const Solver& at) {
-          std::string index = root ? o.snapshot(at.time(), end).string() : std::string();
-          char wanted = !root ? 0 : reads(at.time()) | (index.empty() ? 0 : snapshot);
+    // Through the run (not its part's run()): a re-reference builds every rank's part again.
+    run_->run(
+        [&](const Solver& part) {
+          std::string index = root ? o.snapshot(part.time(), end).string() : std::string();
+          char wanted = !root ? 0 : reads(part.time()) | (index.empty() ? 0 : snapshot);
           MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
           if (wanted & snapshot) {
             broadcast_from_root(index);
@@ -142,10 +152,10 @@ class rank_steps final : public process_steps<Solver> {
             return;
           }
           if (!(wanted & observe_whole)) {
-            if (root) o.pass(at.time(), end, static_cast<long>(at.steps()));
+            if (root) o.pass(part.time(), end, static_cast<long>(part.steps()));
             return;
           }
-          parallel::mirror_state(*run_, *layout_, whole, configuration_);
+          parallel::mirror_state(*run_, layout(), whole, configuration_);
           comm_.guarded([&] {
             if (root) o.observe(*whole);
           });
@@ -158,7 +168,7 @@ class rank_steps final : public process_steps<Solver> {
   bool started() const { return started_; }
   bool between_steps(const Solver&) const override { return parts_between_steps(); }
   void settle(Solver* whole) override {
-    if (parts_between_steps()) parallel::mirror_state(*run_, *layout_, whole, configuration_);
+    if (parts_between_steps()) parallel::mirror_state(*run_, layout(), whole, configuration_);
   }
 
   bool checkpoint_in_parts(const std::filesystem::path& path, std::string description) override {
@@ -171,6 +181,15 @@ class rank_steps final : public process_steps<Solver> {
 
  private:
   bool parts_between_steps() const { return run_->solver().between_steps(); }
+
+  // The mirror's gathers, built again once a re-reference has built the parts again.
+  parallel::mpi_checkpoint_layout& layout() {
+    if (!layout_ || layout_rebuilds_ != run_->rebuilds()) {
+      layout_.emplace(run_->group(), run_->solver().model());
+      layout_rebuilds_ = run_->rebuilds();
+    }
+    return *layout_;
+  }
 
   // Collective: the parts' maxima (MPI_MAX) and exact sums (their limbs' MPI_SUM, exact) on rank 0.
   row_reduction reduce_on_root(row_reduction r) {
@@ -224,7 +243,8 @@ class rank_steps final : public process_steps<Solver> {
   std::optional<parallel::distributed_solver<Solver>> run_;
   io::vtu_format snapshot_format_;
   std::function<row_reduction(const Solver&)> reduction_;
-  std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers, built once
+  std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers (layout())
+  index_t layout_rebuilds_ = 0;
   std::optional<parallel::snapshot_pieces> pieces_;
   std::optional<std::pair<std::string, std::string>> handed_over_;  // rank 0: a checkpoint's path, description
   bool started_ = false;

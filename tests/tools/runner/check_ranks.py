@@ -8,7 +8,8 @@
         figure shapes, results, energies and steps, byte for byte, and the same snapshots: each
         one process's .vtu is, on P processes, a .pvtu index of P pieces that together hold its
         points, arrays and cells bit for bit (pieces.py, read by meshio); summary.json records
-        the processes; tools/rkpm view draws the 2 processes' last snapshot with one process's cells
+        the processes; tools/rkpm view draws the 2 processes' last snapshot with one process's cells.
+        With --rereference-* among ARGS (the label NAME_rereferenced), the re-references too
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
         block forging (moving tools, friction) checkpointed mid-run on 2 processes, in parts (a
         folder checkpoint_*.rkpmcp of part-0-of-2.rkpmcp and part-1-of-2.rkpmcp, named as one
@@ -71,7 +72,7 @@ def in_pieces(vtu, processes):
 def same_outputs(reference, other, label):
     a, b = summary(reference), summary(other)
     for key in ["status", "results", "energy", "steps", "dt_min_s", "dt_max_s", "end_time_s", "particles",
-                "quadrature_points", "parameters"]:
+                "quadrature_points", "parameters", "rereferences", "rereference_times_s"]:
         check(a.get(key) == b.get(key), f"{label}: summary '{key}' differs: {a.get(key)} vs {b.get(key)}")
     files = outputs(reference)
     check(files == outputs(other), f"{label}: other files: {files} vs {outputs(other)}")
@@ -95,6 +96,8 @@ def same_outputs(reference, other, label):
 
 def same(mpiexec, rkpm_run, work, name, args):
     label = os.path.splitext(os.path.basename(name))[0]
+    if any(a.startswith("--rereference") for a in args):
+        label += "_rereferenced"
     folders = {}
     # (processes, threads per process): one thread each, and 2 processes of 2 threads.
     for p, threads in ((1, 1), (2, 1), (3, 1), (2, 2)):
