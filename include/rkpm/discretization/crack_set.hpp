@@ -7,6 +7,9 @@
 // fields by itself, and the displacement may jump across the crack.
 //   segment   the cracks' segments, end points in the model's reference configuration
 //   blocks    whether the sight line from x to y crosses one of them
+//   faces     where the cracks are surfaces of the material, when they were cut through cells
+//             (solver/crack_growth.hpp's cracks_on): each segment's chord inside its cell, whose
+//             two sides are the crack's faces (contact between them: discretization/crack_face_rows.hpp)
 // A crack whose end only touches a sight line, or that lies along it, does not block it:
 // a crack is extended a little past the cells it cuts, so that the segments of a crack path
 // overlap (solver/crack_growth.hpp).
@@ -24,15 +27,30 @@ namespace rkpm {
 class crack_set {
  public:
   using segment_type = std::array<vec2, 2>;
+  // A crack through background cell `cell`, from chord[0] to chord[1] where it crosses the cell's sides.
+  struct face_type {
+    index_t cell = 0;
+    segment_type chord;
+  };
 
   crack_set() = default;
   explicit crack_set(std::vector<segment_type> segments) : segment_(std::move(segments)) { index(); }
+  // Segments that cut cells, with their faces (one per segment, or none).
+  crack_set(std::vector<segment_type> segments, std::vector<face_type> faces)
+      : segment_(std::move(segments)), face_(std::move(faces)) {
+    if (!face_.empty() && face_.size() != segment_.size())
+      fail("crack set: {} faces for {} segments; give one per segment or none", face_.size(), segment_.size());
+    index();
+  }
 
   bool empty() const { return segment_.empty(); }
   index_t size() const { return static_cast<index_t>(segment_.size()); }
   const std::vector<segment_type>& segments() const { return segment_; }
+  const std::vector<face_type>& faces() const { return face_; }
 
+  // A segment with no face (a crack given by hand is drawn in the cells, not cut through them).
   void add(const vec2& a, const vec2& b) {
+    if (!face_.empty()) fail("crack set: a segment without a face added to segments with faces");
     segment_.push_back({a, b});
     index();
   }
@@ -106,6 +124,7 @@ class crack_set {
   }
 
   std::vector<segment_type> segment_;
+  std::vector<face_type> face_;
   vec2 lo_ = vec2::Zero();
   double width_ = 1.0;
   std::array<index_t, 2> bins_{1, 1};

@@ -13,7 +13,7 @@
 //                    failed cells is cut once across, not into slivers)
 //   crack_chord      the cut's segment on the cells at their current corners, lengthened past
 //                    the cell's sides so that the cuts of neighbouring cells overlap
-//   cracks_on        every cut's segment, as the crack_set the model builder reads
+//   cracks_on        every cut's segment, as the crack_set the model builder reads, with its faces
 //   opens_cracks     whether the failed points of some body's material cut cells
 //   crack_fragments  the pieces the cracks have made: particles joined by a point's row
 
@@ -106,25 +106,38 @@ inline bool beside_a_cut(const std::vector<std::array<index_t, 4>>& neighbours, 
   return false;
 }
 
-// The segment of `cut` on the cells at their current corners, lengthened by `overlap` of its
-// length at each end (the cuts of a crack path then overlap, and no sight line slips through
-// where two of them meet on a cell side).
-inline crack_set::segment_type crack_chord(const background_mesh& cells, const cell_crack& cut, double overlap = 0.1) {
+// Where `cut` crosses its cell's two sides, on the cells at their current corners.
+inline crack_set::segment_type crack_crossings(const background_mesh& cells, const cell_crack& cut) {
   const auto& corner = cells.cell[cut.cell];
-  std::array<vec2, 2> end;
+  crack_set::segment_type end;
   for (int e = 0; e < 2; ++e) {
     const index_t k = cut.side[e];
     end[e] = (1.0 - cut.at[e]) * cells.node[corner[k]] + cut.at[e] * cells.node[corner[(k + 1) % 4]];
   }
-  const vec2 along = overlap * (end[1] - end[0]);
-  return {end[0] - along, end[1] + along};
+  return end;
 }
 
+// The segment of `cut` on the cells at their current corners, lengthened by `overlap` of its
+// length at each end (the cuts of a crack path then overlap, and no sight line slips through
+// where two of them meet on a cell side).
+inline crack_set::segment_type crack_chord(const background_mesh& cells, const cell_crack& cut, double overlap = 0.1) {
+  const auto [a, b] = crack_crossings(cells, cut);
+  const vec2 along = overlap * (b - a);
+  return {a - along, b + along};
+}
+
+// Every cut's segment, as the crack_set the model builder reads, with its face: the chord
+// between the crossings, where the crack is a surface of the material on each side.
 inline crack_set cracks_on(const background_mesh& cells, const std::vector<cell_crack>& cuts) {
   std::vector<crack_set::segment_type> segments;
+  std::vector<crack_set::face_type> faces;
   segments.reserve(cuts.size());
-  for (const cell_crack& cut : cuts) segments.push_back(crack_chord(cells, cut));
-  return crack_set(std::move(segments));
+  faces.reserve(cuts.size());
+  for (const cell_crack& cut : cuts) {
+    segments.push_back(crack_chord(cells, cut));
+    faces.push_back({cut.cell, crack_crossings(cells, cut)});
+  }
+  return crack_set(std::move(segments), std::move(faces));
 }
 
 // Whether failed points may cut cells: a state that breaks (BreakingState) and a material that
