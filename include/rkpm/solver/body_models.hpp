@@ -5,7 +5,8 @@
 // bodies; VCI and SCNI corrections per body), and the models are joined into one: particles and
 // cells keep the problem's numbering, the points follow body by body. The time loop then steps
 // all bodies together with one stable step. A problem with one body gets exactly the model of
-// build_discrete_model.
+// build_discrete_model. The faces of cracks cut through the cells get their rows here, each
+// within its body (discretization/crack_face_rows.hpp).
 
 #include <optional>
 #include <utility>
@@ -77,6 +78,7 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
     discrete_model m =
         detail::build_one_model<K, C, Q, G>(std::move(particles), std::move(mesh), max_condition, carried);
     m.set_bodies(std::move(bodies));
+    m.crack_faces = build_crack_face_rows<K, C>(m.particles, m.mesh.cracks, m.bodies, max_condition);
     return m;
   }
 
@@ -127,6 +129,7 @@ discrete_model build_model_of_bodies(particle_set<2> particles, background_mesh 
   joined.particles = std::move(particles);
   joined.mesh = std::move(mesh);
   joined.set_bodies(std::move(bodies));
+  joined.crack_faces = build_crack_face_rows<K, C>(joined.particles, joined.mesh.cracks, joined.bodies, max_condition);
   return joined;
 }
 

@@ -17,6 +17,8 @@
 //   own                  the particles and points this process owns, and its ghosts (one process: all)
 //   bodies               the bodies: each particle's, cell's and point's, their surfaces
 //                        (discretization/model_bodies.hpp), found once by the builder
+//   crack_faces          the faces of the cracks cut through the cells, with their rows for
+//                        contact (discretization/crack_face_rows.hpp); empty without cuts
 // For a nodal rule (scni, docs/method.md section 3.6) the points are those of the smoothing
 // cells and at_points.grad holds the smoothed gradients, trial and test alike (test_gradient
 // stays empty); at_points.N stays the shape functions at the points, for the hoop term, the
@@ -32,6 +34,7 @@
 #include <rkpm/concepts/quadrature.hpp>
 #include <rkpm/core/execution.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
+#include <rkpm/discretization/crack_face_rows.hpp>
 #include <rkpm/discretization/integration_constraint.hpp>
 #include <rkpm/discretization/model_bodies.hpp>
 #include <rkpm/discretization/point_traversal.hpp>
@@ -53,6 +56,7 @@ struct discrete_model {
   std::vector<vec2> test_gradient;
   ownership own;
   model_bodies bodies;
+  crack_face_rows crack_faces;
   // A rank's model (parallel/local_model.hpp): the whole model's mean support, which
   // mean_support() gives instead of its own particles' mean, each point's index in the whole
   // model, which errors name, and each particle's, which orders what every rank computes over
