@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <rkpm/core/types.hpp>
+#include <rkpm/discretization/crack_face_rows.hpp>
 #include <rkpm/discretization/model_bodies.hpp>
 #include <rkpm/discretization/shape_table.hpp>
 
@@ -42,6 +43,9 @@ struct contact_body {
   // The reference is a deformed configuration (discrete_model::deformed_reference): setup() does
   // not check that the tools start outside it (a rank's part built again on several processes).
   bool deformed_reference = false;
+  // The faces of the cracks cut through the cells, with their rows (discrete_model::crack_faces):
+  // masters and slaves in all-pairs mode (contact/crack_face_points.hpp). Null or empty: none.
+  const crack_face_rows* crack_faces = nullptr;
 };
 
 // The particles checked against the tools, given once at set-up: slave j is particle

@@ -26,6 +26,9 @@
 // the skeleton of every contact pass). The particles of master surfaces must be the mesh nodes
 // (grids and meshed bodies are). A self pair is the same pass with both rows in one body: each
 // slave skips the segments within its kernel's reach (108), and the rows still sum to one.
+// In all-pairs mode the faces of cracks cut through the cells are masters and slaves too
+// (crack_face_points.hpp, (114)): virtual points numbered after the particles, each with its row
+// seen from its side of the crack, so that the pieces a crack makes touch again through it.
 
 #include <algorithm>
 #include <array>
@@ -39,6 +42,7 @@
 #include <rkpm/contact/body_pair_surfaces.hpp>
 #include <rkpm/contact/contact_pair.hpp>
 #include <rkpm/contact/contact_sweeps.hpp>
+#include <rkpm/contact/crack_face_points.hpp>
 #include <rkpm/contact/segment_grid.hpp>
 #include <rkpm/contact/surface_scratch.hpp>
 #include <rkpm/contact/surface_search.hpp>
@@ -46,11 +50,11 @@
 
 namespace rkpm::contact {
 
-// One slave particle against one master segment in the last step.
+// One slave particle (or crack face point) against one master segment in the last step.
 struct body_contact_pair {
   index_t pair = 0;     // index into the body pairs
-  index_t slave = 0;    // particle
-  index_t a = 0, b = 0; // the segment's master particles
+  index_t slave = 0;    // particle, or face point p of a crack as n + p (n particles; crack_face_points.hpp)
+  index_t a = 0, b = 0; // the segment's master particles (or face points, numbered so)
   double lambda = 0.0;  // contact point (1 - lambda) x_a + lambda x_b
   double gap = 0.0;     // penetration before correction
   vec2 normal = vec2::Zero();  // the master's outward normal
@@ -81,11 +85,13 @@ class body_contact {
       fail("contact between bodies and self-contact need the model's bodies and the shape functions at the "
            "particles; the solver passes them in contact_body");
     if (all_pairs_) pairs_ = every_body_pair(body.bodies->count());
-    surfaces_ = pair_surfaces(pairs_, *body.bodies, body.reference_position, slaves, all_pairs_);
+    faces_.setup(body, all_pairs_);
+    surfaces_ = pair_surfaces(pairs_, *body.bodies, body.reference_position, slaves, all_pairs_,
+                              faces_.empty() ? nullptr : &faces_.faces());
     std::size_t capacity = 0;
     for (const auto& s : surfaces_.slave) capacity += s.size();
     active_.assign(capacity, body_contact_pair{});
-    scratch_.resize(static_cast<index_t>(body.reference_position.size()));
+    scratch_.resize(faces_.points());
     shared_mass_.assign(capacity, 0.0);
     grid_.assign(pairs_.size(), segment_grid{});
     for (std::size_t k = 0; k < pairs_.size(); ++k)
@@ -96,7 +102,7 @@ class body_contact {
   void enforce(const contact_body& body, double dt, const Enforcement& enforcement, const Friction& friction,
                std::vector<vec2>& d, std::vector<vec2>& v, contact_result& result) {
     if (pairs_.empty()) return;
-    pass p{*this, *body.at_particles, body.reference_position, body.mass, dt, d, v};
+    pass p{*this, faces_.rows(body), faces_.reference(body), body.mass, dt, d, v};
     p.refresh();
     // The pairs one after the other (Gauss-Seidel): a second pass, the same two bodies with
     // the roles swapped, sees the gaps the first one closed instead of closing them again. A
@@ -116,7 +122,7 @@ class body_contact {
   // candidates of a grid over the master's segments. Its reach, twice the depth, holds every
   // point a segment catches with room for round-off, so the contacts are those of a search over
   // all the segments, in the same order. A self pair leaves out the segments within each
-  // slave's kernel reach (108).
+  // slave's kernel reach (108); a crack's face catches a little past its ends (114).
   void detect(std::size_t k, const shape_table<2>& rows, contact_result& result) {
     const std::span<const std::array<index_t, 2>> segments = surfaces_.segment[k];
     const std::span<const vec2> x = scratch_.x;
@@ -125,12 +131,12 @@ class body_contact {
     grid_[k].rebuild(
         static_cast<index_t>(segments.size()),
         [&](index_t s) { return std::pair<vec2, vec2>(x[segments[s][0]], x[segments[s][1]]); }, 2.0 * depth);
+    const auto overhang = [&](index_t a, index_t) { return faces_.overhang(a); };
     for (index_t J : surfaces_.slave[k]) {
       const auto candidates = grid_[k].candidates(x[J]);
-      const surface_hit hit =
-          self ? penetrated_segment(segments, candidates, x, x[J], depth,
-                                    [&](index_t a, index_t b) { return within_kernel_reach(rows, J, a, b); })
-               : penetrated_segment(segments, candidates, x, x[J], depth);
+      const surface_hit hit = penetrated_segment(
+          segments, candidates, x, x[J], depth,
+          [&](index_t a, index_t b) { return self && faces_.within_reach(rows, J, a, b); }, overhang);
       if (hit.segment < 0) continue;
       const auto [a, b] = segments[hit.segment];
       active_[active_count_++] =
@@ -181,8 +187,9 @@ class body_contact {
       const double g = sweep == 0 ? p.gap : -(x[p.slave] - xc).dot(p.normal);
       // The paper's form (P4) closes the gap with the slave's mass against a rigid master; a
       // master with mass m_c (its contact point's share) moves too, so the pair's reduced mass.
-      const double m_c = (1.0 - p.lambda) * m[p.a] + p.lambda * m[p.b];
-      const double m_s = m[p.slave] * m_c / (m[p.slave] + m_c);
+      const crack_face_points& f = self.faces_;
+      const double m_c = (1.0 - p.lambda) * f.mass(m, p.a) + p.lambda * f.mass(m, p.b);
+      const double m_s = f.mass(m, p.slave) * m_c / (f.mass(m, p.slave) + m_c);
       return {g, vec2(w[p.slave] - vc), p.normal, m_s, self.shared_mass_[q]};
     }
     void spread(index_t q, const vec2& df) {
@@ -197,6 +204,7 @@ class body_contact {
   std::vector<body_pair> pairs_;  // declared, or made by setup() in all-pairs mode
   bool all_pairs_ = false;
   body_pair_surfaces surfaces_;
+  crack_face_points faces_;  // in all-pairs mode, the crack faces' points after the particles
   std::vector<segment_grid> grid_;  // per pair: over its master segments
 
   // Scratch, sized in setup().

@@ -8,7 +8,9 @@
 //     included, master by master (every body's slaves against body 0's surface, then body 1's,
 //     ...); the slaves every vertex of the slave body's surface chains, in increasing order, the
 //     order of the default slaves (the mesh's boundary nodes), so that two bodies give what the
-//     pairs (1, 0) and (0, 1) with the default slaves give, bit for bit.
+//     pairs (1, 0) and (0, 1) with the default slaves give, bit for bit. With the faces of cracks
+//     (crack_face_points.hpp, (114)), a master's faces follow its surface segments and a slave
+//     body's face points its surface vertices, numbered after the particles.
 
 #include <algorithm>
 #include <array>
@@ -18,6 +20,7 @@
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/contact/contact_pair.hpp>
+#include <rkpm/discretization/crack_face_rows.hpp>
 #include <rkpm/discretization/model_bodies.hpp>
 
 namespace rkpm::contact {
@@ -42,11 +45,13 @@ inline std::vector<body_pair> every_body_pair(index_t bodies) {
 }
 
 // The pairs' surfaces on the model's bodies, reference positions X. `slaves`: the problem's slave
-// particles (declared pairs), or every surface vertex a slave when `surface_slaves`.
+// particles (declared pairs), or every surface vertex a slave when `surface_slaves`. `faces`: the
+// crack faces, face point p numbered n + p (none if null).
 inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const model_bodies& bodies,
                                         std::span<const vec2> X, std::span<const index_t> slaves,
-                                        bool surface_slaves) {
+                                        bool surface_slaves, const crack_face_rows* faces = nullptr) {
   const auto n = static_cast<index_t>(X.size());
+  const index_t face_points = faces ? faces->points() : 0;
   for (std::size_t k = 0; k < pairs.size(); ++k)
     for (index_t b : {pairs[k].slave, pairs[k].master})
       if (b < 0 || b >= bodies.count())
@@ -63,7 +68,7 @@ inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const 
   out.segment.assign(pairs.size(), {});
   out.slave.assign(pairs.size(), {});
   out.depth.assign(pairs.size(), 0.0);
-  std::vector<char> read(n, 0);
+  std::vector<char> read(n + face_points, 0);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     double shortest = INFINITY;
     for (const auto& c : chains)
@@ -74,6 +79,13 @@ inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const 
           shortest = std::min(shortest, (X[seg[1]] - X[seg[0]]).norm());
           read[seg[0]] = read[seg[1]] = 1;
         }
+    for (index_t f = 0; faces && f < faces->faces(); ++f)
+      if (faces->body[f] == pairs[k].master) {
+        const auto [a, b] = faces->segment[f];
+        out.segment[k].push_back({n + a, n + b});
+        shortest = std::min(shortest, (faces->position[b] - faces->position[a]).norm());
+        read[n + a] = read[n + b] = 1;
+      }
     out.depth[k] = 0.5 * shortest;
     auto& slave = out.slave[k];
     if (surface_slaves) {
@@ -83,11 +95,14 @@ inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const 
       for (index_t J : slaves)
         if (bodies.of_particle(J) == pairs[k].slave) slave.push_back(J);
     }
+    for (index_t f = 0; faces && f < faces->faces(); ++f)
+      if (faces->body[f] == pairs[k].slave)
+        for (const index_t p : faces->segment[f]) slave.push_back(n + p);
     for (index_t J : slave) read[J] = 1;
     if (slave.empty())
       fail("contact pair {}: slave body {} has no slave particles; give slaves on its boundary", k, pairs[k].slave);
   }
-  for (index_t I = 0; I < n; ++I)
+  for (index_t I = 0; I < n + face_points; ++I)
     if (read[I]) out.surface.push_back(I);
   return out;
 }

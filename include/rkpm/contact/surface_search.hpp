@@ -10,6 +10,7 @@
 // (self-contact, docs/method.md (108)) leaves out the segments within its kernel's reach
 // (within_kernel_reach), which the surface beside it, curving or wrinkled, would otherwise give.
 
+#include <algorithm>
 #include <array>
 #include <span>
 
@@ -36,10 +37,13 @@ inline bool within_kernel_reach(const shape_table<2>& rows, index_t J, index_t a
 
 // candidates: indices into segments (e.g. segment_grid::candidates, or all of them). excluded(a, b):
 // segments never to take (asked only of those that catch P, so a search that excludes nothing
-// costs nothing more).
-template <class Candidates, class Excluded>
+// costs nothing more). overhang(a, b): how far past its ends, in lambda, segment a-b catches P,
+// which then meets it at the end (lambda clamped to [0, 1]); 0 for a surface's segments, more for
+// the faces of cracks (docs/method.md (114)).
+template <class Candidates, class Excluded, class Overhang>
 surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments, const Candidates& candidates,
-                               std::span<const vec2> x, const vec2& P, double depth, Excluded&& excluded) {
+                               std::span<const vec2> x, const vec2& P, double depth, Excluded&& excluded,
+                               Overhang&& overhang) {
   surface_hit best;
   for (const index_t s : candidates) {
     const auto [a, b] = segments[s];
@@ -47,15 +51,21 @@ surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments,
     const double L = t.norm();
     const vec2 r = P - x[a];
     if (r.squaredNorm() > (L + depth) * (L + depth)) continue;
-    const double lambda = r.dot(t) / (L * L);
-    if (lambda < 0.0 || lambda > 1.0) continue;
+    const double lambda = r.dot(t) / (L * L), past = overhang(a, b);
+    if (lambda < -past || lambda > 1.0 + past) continue;
     const vec2 normal(t[1] / L, -t[0] / L);
     const double g = -r.dot(normal);
     if (g <= 0.0 || g > depth) continue;
     if (excluded(a, b)) continue;
-    if (best.segment < 0 || g < best.gap) best = surface_hit{s, lambda, g, normal};
+    if (best.segment < 0 || g < best.gap) best = surface_hit{s, std::clamp(lambda, 0.0, 1.0), g, normal};
   }
   return best;
+}
+
+template <class Candidates, class Excluded>
+surface_hit penetrated_segment(std::span<const std::array<index_t, 2>> segments, const Candidates& candidates,
+                               std::span<const vec2> x, const vec2& P, double depth, Excluded&& excluded) {
+  return penetrated_segment(segments, candidates, x, P, depth, excluded, [](index_t, index_t) { return 0.0; });
 }
 
 template <class Candidates>

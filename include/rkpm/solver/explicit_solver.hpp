@@ -155,9 +155,7 @@ class explicit_solver {
   const constraint_projector& constraints() const { return constraints_; }
   const std::vector<index_t>& slave_particles() const { return contact_.slaves; }
   // The body as the contact policy sees it (for calling it directly, as the benchmarks do).
-  contact_body body() const {
-    return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles, model_.deformed_reference};
-  }
+  contact_body body() const;
   // Cauchy stress sigma = tau / J at quadrature point q.
   mat3 point_cauchy_stress(index_t q) const { return points_.kirchhoff_stress(materials_, q) / points_.det_F(q); }
   // Physical displacements since the start (across re-references: x_I - X_I^0), velocities and

@@ -6,7 +6,8 @@
 //                      constraints on the predicted configuration and the energy ledger (section 7);
 //   derive_from_model  what the step reads of the model besides the point states (the
 //                      constraint rows, the contact slaves, the particle sums): the one path the
-//                      constructor, a re-reference and a restart take (solver/rereference_step.hpp).
+//                      constructor, a re-reference and a restart take (solver/rereference_step.hpp);
+//   body()             the model as the contact sees it (with the faces of its cracks).
 // Out of the class, so that a program may compile them once (solver/solver_instances.hpp).
 // Included at the end of solver/explicit_solver.hpp.
 
@@ -19,6 +20,12 @@
 namespace rkpm {
 
 // Set-up and step out of the class: a program may compile them once (solver/solver_instances.hpp).
+template <Geometry G, Material M, Contact Ct>
+contact_body explicit_solver<G, M, Ct>::body() const {
+  return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles, model_.deformed_reference,
+          &model_.crack_faces};
+}
+
 template <Geometry G, Material M, Contact Ct>
 explicit_solver<G, M, Ct>::explicit_solver(discrete_model model, problem<M, Ct> prob, run_options options,
                                            model_factory factory)

@@ -226,15 +226,18 @@ class heat_coupling : public step_companion<Solver> {
   }
 
   // (99)-(100) between deformable bodies: each slave J against its master segment (a, b) at the
-  // contact point (1 - lambda) x_a + lambda x_b; the slave's area as for the tools.
+  // contact point (1 - lambda) x_a + lambda x_b, the slave's area as for the tools; none at crack faces.
   void body_contact_heat(const Solver& s, double dt) {
     const auto pairs = s.contact().bodies().active_pairs();
     if (pairs.empty()) return;
     const discrete_model& m = s.model();
     const std::vector<vec2>& v = s.coefficient_velocities();
-    for (const auto& p : pairs) touching_[p.slave] = -(p.pair + 1);
+    const auto each = [&, n = m.particle_count()](auto&& f) {  // faces' virtual points are numbered after n
+      for (const auto& p : pairs) if (p.slave < n && p.a < n && p.b < n) f(p);
+    };
+    each([&](const auto& p) { touching_[p.slave] = -(p.pair + 1); });
     add_contact_areas(s);
-    for (const auto& p : pairs) {
+    each([&](const auto& p) {
       const double wa = 1.0 - p.lambda, wb = p.lambda;
       const vec2 rel = m.at_particles.interpolate(p.slave, v) -
                        (wa * m.at_particles.interpolate(p.a, v) + wb * m.at_particles.interpolate(p.b, v));
@@ -250,11 +253,8 @@ class heat_coupling : public step_companion<Solver> {
       add_particle_heat(m, p.slave, to_slave, heat_in_);
       add_particle_heat(m, p.a, wa * to_master, heat_in_);
       add_particle_heat(m, p.b, wb * to_master, heat_in_);
-    }
-    for (const auto& p : pairs) {
-      touching_[p.slave] = 0;
-      area_[p.slave] = 0.0;
-    }
+    });
+    each([&](const auto& p) { touching_[p.slave] = 0, area_[p.slave] = 0.0; });
   }
 
   // (98) and the conduction over the interval; then the points' temperatures (101).
