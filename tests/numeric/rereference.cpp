@@ -9,12 +9,15 @@
 //  - a free elastic block set spinning, re-referenced every 10 steps for a quarter turn: angular
 //    momentum within the run's balance tolerance, the energy ledger (with its remap term) balanced;
 //  - no spurious mode: a strip vibrating in its first mode for 100 periods, re-referenced every 10
-//    steps, keeps the Lagrangian run's frequency within 1% and its energy balance.
+//    steps, keeps the Lagrangian run's frequency within 1% and its energy balance;
+//  - in a section, a particle or a point carried across the axis is refused by name, and the
+//    axis particles' round-off is not.
 
 #include <doctest/doctest.h>
 
 #include <numbers>
 
+#include "support/error_message.hpp"
 #include "support/solver_fixtures.hpp"
 
 namespace test_numeric_rereference {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -273,6 +276,36 @@ TEST_CASE("re-referencing: no spurious mode; a vibrating strip keeps its frequen
   // The ledger's own error over 100 periods of this coarse strip (its O(dt^2) trapezoid, about
   // 2 %) is the Lagrangian run's; the rebuilds add nothing to it.
   CHECK(rebuilt.balance_error < 1.02 * lagrangian.balance_error);
+}
+
+TEST_CASE("re-referencing in a section: a particle or a point carried across the axis is refused by name") {
+  // Reference positions 1 mm across; particle 2 carried to r = -2e-5 m, particle 0 (on the axis)
+  // to round-off below it.
+  const std::vector<vec2> X{vec2(0.0, 0.0), vec2(5e-4, 0.0), vec2(2e-4, 1e-3)};
+  std::vector<vec2> x{vec2(-1e-21, 0.0), vec2(6e-4, 0.0), vec2(2e-4, 1e-3)};
+  CHECK_NOTHROW(refuse_across_axis(x, X, false, 0.0));
+  x[2][0] = -2e-5;
+  const std::string particle = test::error_message([&] { refuse_across_axis(x, X, false, 1e-6); });
+  CHECK(test::contains(particle, "particle 2"));
+  CHECK(test::contains(particle, "across the axis"));
+  CHECK(test::contains(particle, "re-reference earlier"));
+
+  // Two points, one row each, the second carried onto the axis by its particle's displacement.
+  quadrature_points points;
+  points.position = {vec2(1e-4, 1e-4), vec2(3e-4, 1e-4)};
+  points.weight = {1.0, 1.0};
+  points.cell = {0, 0};
+  shape_table<2> rows;
+  rows.offset = {0, 1, 2};
+  rows.neighbor = {0, 1};
+  rows.N = {1.0, 1.0};
+  const auto J = [](index_t) { return 2.0; };
+  const std::vector<vec2> d{vec2(1e-5, 0.0), vec2(-3e-4, 0.0)};
+  const std::string point = test::error_message([&] { carried_points(points, rows, d, J, true, 2e-6); });
+  CHECK(test::contains(point, "quadrature point 1"));
+  const quadrature_points plane = carried_points(points, rows, d, J, false, 2e-6);  // plane strain: no axis
+  CHECK(plane.position[1][0] == doctest::Approx(0.0).epsilon(1e-12));
+  CHECK(plane.weight[0] == 2.0);
 }
 
 }  // namespace test_numeric_rereference

@@ -6,6 +6,9 @@
 //   deformed_particles     the particles at their current positions, with supports that follow
 //                          the deformation (82) and volumes from the deformed cells; the cells'
 //                          corners move with the particles (the mesh nodes are the particles)
+//   carried_points         the quadrature points as the same material points at their current
+//                          positions, each weight times J_rel
+//   refuse_across_axis     in a section, no particle or point carried across the axis
 
 #include <algorithm>
 #include <array>
@@ -18,6 +21,8 @@
 #include <rkpm/core/types.hpp>
 #include <rkpm/discretization/background_mesh.hpp>
 #include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/discretization/quadrature_points.hpp>
+#include <rkpm/discretization/shape_table.hpp>
 
 namespace rkpm {
 
@@ -79,6 +84,41 @@ inline std::pair<particle_set<2>, background_mesh> deformed_particles(const part
   for (index_t I = 0; I < particles.size(); ++I)
     if (!(next.volume[I] > 0.0)) next.volume[I] = particles.volume[I];  // cells around it all flat
   return {std::move(next), std::move(cells)};
+}
+
+// In a section the body stays on its side of the axis: a particle or a point carried to r < 0
+// (a point to r <= 0; the axis particles are held at r = 0, to round-off of 1e-9 of the body's
+// size) would have a hoop stretch of no meaning and no particles beyond it to build its kernel
+// on. Refused by name: the layer by the axis has folded across it.
+inline void refuse_across_axis(const std::vector<vec2>& x, const std::vector<vec2>& X, bool points, double time) {
+  double size = 0.0;
+  for (const vec2& p : X) size = std::max(size, p.cwiseAbs().maxCoeff());
+  const double round_off = 1e-9 * size;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    if (points ? !(x[k][0] > 0.0) : !(x[k][0] >= -round_off))
+      fail("t = {:.6g} s: re-referencing: {} {} (at r = {:.4g} m, z = {:.4g} m at the last reference) has been carried "
+           "across the axis, to r = {:.3g} m: the material by the axis has folded over it; re-reference earlier (a "
+           "smaller max_stretch) or refine the particles",
+           time, points ? "quadrature point" : "particle", k, X[k][0], X[k][1], x[k][0]);
+}
+
+// The points of `points` (rows `at_points`, coefficients d) carried to the current configuration:
+// the same material points at x_q = X_q + sum_I N_I(X_q) d_I, each weight times relative_J(q),
+// the volume it stands for now, so that nothing is interpolated; in a section (`axisymmetric`)
+// none across the axis.
+template <class RelativeJ>
+quadrature_points carried_points(const quadrature_points& points, const shape_table<2>& at_points,
+                                 const std::vector<vec2>& d, RelativeJ&& relative_J, bool axisymmetric, double time) {
+  quadrature_points carried;
+  carried.position.resize(points.position.size());
+  carried.weight.resize(points.position.size());
+  carried.cell = points.cell;
+  for (index_t q = 0; q < points.size(); ++q) {
+    carried.position[q] = points.position[q] + at_points.interpolate(q, d);
+    carried.weight[q] = points.weight[q] * relative_J(q);
+  }
+  if (axisymmetric) refuse_across_axis(carried.position, points.position, true, time);
+  return carried;
 }
 
 }  // namespace rkpm

@@ -129,23 +129,18 @@ void explicit_solver<G, M, Ct>::rereference() {
 
   // 1. The model in the current configuration.
   const std::vector<vec2> x = positions_at_particles(model_, d_);
+  if constexpr (G::is_axisymmetric) refuse_across_axis(x, model_.particles.position, false, timeline_.time);
   const std::vector<mat2> stretch = project_to_particles<mat2>(
       [&](index_t q) { return mat2(points_.relative_deformation_gradient(q).template topLeftCorner<2, 2>()); });
   auto [particles, cells] = deformed_particles(model_.particles, model_.mesh, x, stretch, !model_.nodal);
   cells.cracks = cracks_on(cells, cracks_);
-  // The points: each the same material point at its current position, its weight times J_rel
-  // (the volume it stands for now), so that nothing is interpolated; a nodal rule's are made
-  // again on the deformed cells.
+  // The points carried (rereference.hpp); a nodal rule's are made again on the deformed cells.
   quadrature_points carried;
-  if (!model_.nodal) {
-    carried.position.resize(model_.point_count());
-    carried.weight.resize(model_.point_count());
-    carried.cell = model_.points.cell;
-    for (index_t q = 0; q < model_.point_count(); ++q) {
-      carried.position[q] = model_.points.position[q] + model_.at_points.interpolate(q, d_);
-      carried.weight[q] = model_.points.weight[q] * points_.relative_deformation_gradient(q).determinant();
-    }
-  }
+  if (!model_.nodal)
+    carried = carried_points(
+        model_.points, model_.at_points, d_,
+        [&](index_t q) { return points_.relative_deformation_gradient(q).determinant(); }, G::is_axisymmetric,
+        timeline_.time);
   discrete_model next = with_bodies<G>(factory_(std::move(particles), std::move(cells), options_.max_moment_condition,
                                                 model_.nodal ? nullptr : &carried));
   next.deformed_reference = true;
