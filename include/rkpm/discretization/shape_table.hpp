@@ -7,6 +7,7 @@
 //   N         #entries N_I(x_p)
 //   grad      #entries grad N_I(x_p)
 //             (empty in a table built with values_only)
+// with_free_particles: the rows at the particles with each empty row holding the particle itself.
 
 #include <algorithm>
 #include <cmath>
@@ -152,6 +153,25 @@ shape_table<Dim> build_shape_table(const neighbor_search<Dim>& search,
     }
   });
   return t;
+}
+
+// The rows at the particles with each empty row (cracks left the particle too few neighbours,
+// section 3.7) holding the particle itself, N_I(X_I) = 1: it moves freely.
+inline shape_table<2> with_free_particles(shape_table<2> rows) {
+  shape_table<2> out;
+  out.offset.reserve(rows.offset.size());
+  for (index_t I = 0; I < rows.points(); ++I) {
+    if (rows.offset[I] == rows.offset[I + 1]) {
+      out.neighbor.push_back(static_cast<particle_index>(I));
+      out.N.push_back(1.0);
+    }
+    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
+      out.neighbor.push_back(rows.neighbor[e]);
+      out.N.push_back(rows.N[e]);
+    }
+    out.offset.push_back(static_cast<stored_index>(out.neighbor.size()));
+  }
+  return out;
 }
 
 }  // namespace rkpm

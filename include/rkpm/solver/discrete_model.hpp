@@ -133,25 +133,6 @@ inline std::vector<double> lumped_volumes(const particle_set<2>& particles, cons
   return volume;
 }
 
-// The rows at the particles with each empty row (cracks left the particle too few neighbours,
-// section 3.7) holding the particle itself, N_I(X_I) = 1: it moves freely.
-inline shape_table<2> with_free_particles(shape_table<2> rows) {
-  shape_table<2> out;
-  out.offset.reserve(rows.offset.size());
-  for (index_t I = 0; I < rows.points(); ++I) {
-    if (rows.offset[I] == rows.offset[I + 1]) {
-      out.neighbor.push_back(static_cast<particle_index>(I));
-      out.N.push_back(1.0);
-    }
-    for (index_t e = rows.offset[I]; e < rows.offset[I + 1]; ++e) {
-      out.neighbor.push_back(rows.neighbor[e]);
-      out.N.push_back(rows.N[e]);
-    }
-    out.offset.push_back(static_cast<stored_index>(out.neighbor.size()));
-  }
-  return out;
-}
-
 // The model on given quadrature points (`rebuilt`: carried, section 5.8): only this depends on the
 // kernel and the correction, so a program compiles it once per (kernel, correction).
 template <Kernel K, Correction C>
