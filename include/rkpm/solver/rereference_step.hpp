@@ -216,8 +216,8 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
     }
     // A whole solver that mirrors a run on several processes reads the same reference at every
     // mirror (parallel::mirror_state): its model was built from it, so it stays.
-    const auto same = [](const auto& x, const auto& y) {
-      return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+    const auto same = [](const auto& x, const auto& y) {  // bit for bit (an empty vector's data() may be null)
+      return x.size() == y.size() && (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
     };
     if (s.model_.deformed_reference && same(particles.position, s.model_.particles.position) &&
         same(particles.support, s.model_.particles.support) && same(particles.volume, s.model_.particles.volume) &&
