@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -51,19 +52,25 @@ bool in_body(const Solver& s, const case_description& c, index_t body, index_t I
   return c.bodies.size() == 1 || s.body_of_particle(I) == body;
 }
 
-// Whether particle I (of the solver's model) started on the edge, as particles_on_edge decides:
-// by its reference position on the edge's segment, or for a Gmsh body by its node group.
+// Whether a particle (of the solver's model) started on the edge, as particles_on_edge decides:
+// by its reference position on the edge's segment, or for a Gmsh body by its node group. The
+// segment, its tolerance and the group are found once, not per particle.
 template <class Solver>
-bool on_edge(const Solver& s, const body_description& b, const std::string& edge, index_t I) {
-  if (const auto* m = std::get_if<mesh_shape>(&b.shape)) {  // one body: its node i is particle i
+auto edge_test(const Solver& s, const body_description& b, const std::string& edge) {
+  const std::vector<index_t>* group = nullptr;  // a Gmsh body's (one body: its node i is particle i)
+  std::optional<std::pair<vec2, vec2>> segment;
+  double tol = 0.0;
+  if (const auto* m = std::get_if<mesh_shape>(&b.shape)) {
     const auto it = m->body.node_groups.find(edge);
-    return it != m->body.node_groups.end() &&
-           std::ranges::binary_search(it->second, s.model().global_particle(I));
+    if (it != m->body.node_groups.end()) group = &it->second;
+  } else if ((segment = edge_segment(b, edge))) {
+    tol = 1e-9 * extent(body_outline(b));
   }
-  const auto segment = edge_segment(b, edge);
-  if (!segment) return false;
-  const double tol = 1e-9 * extent(body_outline(b));
-  return distance_to_segment(s.initial_positions()[I], segment->first, segment->second) <= tol;
+  const bool mesh = std::holds_alternative<mesh_shape>(b.shape);
+  return [&s, group, segment, tol, mesh](index_t I) {
+    if (mesh) return group && std::ranges::binary_search(*group, s.model().global_particle(I));
+    return segment && distance_to_segment(s.initial_positions()[I], segment->first, segment->second) <= tol;
+  };
 }
 
 inline bool reducible(const case_description& c, const history_kind& kind) {
@@ -99,9 +106,10 @@ std::vector<double> measure_maxima(const Solver& s, const case_description& c) {
       const index_t body = detail::body_index(c, e->body);
       const int k = e->of.back() == 'x' ? 0 : 1;
       double hi = detail::none, minus_lo = detail::none, any = 0.0;
+      const auto on_edge = detail::edge_test(s, c.bodies[body], e->on_edge);
       for (index_t I = s.model().own.particles.begin; I < s.model().own.particles.end; ++I) {
         if (!detail::in_body(s, c, body, I)) continue;
-        if (!e->on_edge.empty() && !detail::on_edge(s, c.bodies[body], e->on_edge, I)) continue;
+        if (!e->on_edge.empty() && !on_edge(I)) continue;
         const vec2 p = position_at_particle(s.model(), s.coefficients(), I);
         // NaN bounds compare false, so an absent bound keeps every particle.
         if (p.x() >= e->x_below || p.x() <= e->x_above || p.y() >= e->y_below || p.y() <= e->y_above) continue;
