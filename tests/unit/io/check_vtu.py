@@ -4,14 +4,20 @@
                                                 one snapshot with N particles (formulas below);
                                                 ENCODING appended|binary|ascii and COMPRESSOR
                                                 zlib|lz4|none are what the file must declare
-  /usr/bin/python3 check_vtu.py cells FILE NX NY EXTRA
+  /usr/bin/python3 check_vtu.py vtus FILE N ENCODING COMPRESSOR [FILE N ...]
+                                                several snapshots in one start of Python
+  /usr/bin/python3 check_vtu.py refuses FILE N ENCODING COMPRESSOR [FILE N ...]
+                                                files the checks must refuse: one line each,
+                                                "refused FILE :: why" or "accepted FILE"
+  /usr/bin/python3 check_vtu.py cells FILE NX NY EXTRA [FILE NX NY EXTRA ...]
                                                 a snapshot of the NX x NY grid's nodes (the same
                                                 formulas) and EXTRA points beyond them: one
                                                 VTK_QUAD per grid cell, counter-clockwise, then a
                                                 VTK_VERTEX per extra point, and a tool in
                                                 <FieldData>; appended zlib
   /usr/bin/python3 check_vtu.py pvd FILE T0,N0 T1,N1 ...
-                                                a .pvd listing exactly those (time, N) snapshots
+                                                a .pvd listing exactly those (time, N) snapshots;
+                                                several, separated by "/"
   /usr/bin/python3 check_vtu.py pvtu FILE N PIECES
                                                 a .pvtu index of PIECES pieces (one per process)
                                                 that together hold points 0 .. N-1 once each,
@@ -368,17 +374,32 @@ def main():
             print("checking", path, n, encoding, compression)
             check_format(path, vertex_sizes(int(n)), encoding, compression)
             check_vtu(path, int(n))
+    elif kind == "refuses":  # files the checks must refuse: PATH N ENCODING COMPRESSION, repeated
+        args = sys.argv[2:]
+        for k in range(0, len(args), 4):
+            path, n, encoding, compression = args[k:k + 4]
+            try:
+                check_format(path, vertex_sizes(int(n)), encoding, compression)
+                check_vtu(path, int(n))
+                print("accepted", path)
+            except Exception as e:
+                print("refused", path, "::", type(e).__name__, e)
     elif kind == "vtu":
         if len(sys.argv) > 4:
             check_format(path, vertex_sizes(int(sys.argv[3])), sys.argv[4], sys.argv[5])
         check_vtu(path, int(sys.argv[3]))
     elif kind == "pvtu":
         check_pvtu(path, int(sys.argv[3]), int(sys.argv[4]))
-    elif kind == "cells":
-        check_cells(path, int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]))
-    else:
-        expect = [(float(a), int(b)) for a, b in (s.split(",") for s in sys.argv[3:])]
-        check_pvd(path, expect)
+    elif kind == "cells":  # PATH NX NY EXTRA, repeated
+        args = sys.argv[2:]
+        for k in range(0, len(args), 4):
+            check_cells(args[k], int(args[k + 1]), int(args[k + 2]), int(args[k + 3]))
+    else:  # pvd: PATH TIME,POINTS ..., several indexes separated by "/"
+        args, at = sys.argv[2:] + ["/"], 0
+        for end in (k for k, a in enumerate(args) if a == "/"):
+            expect = [(float(a), int(b)) for a, b in (s.split(",") for s in args[at + 1:end])]
+            check_pvd(args[at], expect)
+            at = end + 1
     print(kind, "ok")
 
 

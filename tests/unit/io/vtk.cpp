@@ -18,6 +18,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <sys/wait.h>
@@ -62,13 +63,27 @@ void check_with_meshio(const std::string& args) {
   CHECK(rc == 0);
 }
 
-// Runs check_vtu.py on a file it must refuse, with a message containing `why`.
-void check_vtu_refuses(const std::string& args, const std::string& why) {
+// Runs check_vtu.py once on files it must each refuse ("PATH N ENCODING COMPRESSION", one
+// per file), each with a message containing its `why`.
+void check_vtu_refuses(const std::vector<std::pair<std::string, std::string>>& files_and_whys) {
   const auto script = fs::path(__FILE__).parent_path() / "check_vtu.py";
-  const auto [rc, out] = run_capture(python.string() + " '" + script.string() + "' " + args);
-  INFO("check_vtu.py " << args << "\n" << out);
-  CHECK(rc == 1);
-  CHECK(out.find(why) != std::string::npos);
+  std::string args;
+  for (const auto& [file, why] : files_and_whys) args += " " + file;
+  const auto [rc, out] = run_capture(python.string() + " '" + script.string() + "' refuses" + args);
+  INFO("check_vtu.py refuses" << args << "\n" << out);
+  CHECK(rc == 0);
+  std::istringstream lines(out);
+  std::vector<std::string> verdicts;
+  for (std::string line; std::getline(lines, line);)
+    if (line.starts_with("refused ") || line.starts_with("accepted ")) verdicts.push_back(line);
+  REQUIRE(verdicts.size() == files_and_whys.size());
+  for (std::size_t k = 0; k < verdicts.size(); ++k) {
+    const auto& [file, why] = files_and_whys[k];
+    CAPTURE(file);
+    CAPTURE(verdicts[k]);
+    CHECK(verdicts[k].starts_with("refused "));
+    CHECK(verdicts[k].find(why) != std::string::npos);
+  }
 }
 
 // The same closed formulas as expected() in check_vtu.py.
@@ -165,6 +180,7 @@ static std::vector<vec2> vtk_grid_points(int nx, int ny, int extra) {
 
 TEST_CASE("vtu: the background cells as counter-clockwise VTK quads on the particles, the rest vertices") {
   const auto dir = vtk_scratch() / "cells";
+  std::string grids;
   for (const auto& [nx, ny, extra, level] : {std::array{2, 2, 0, 6}, std::array{7, 5, 3, 1}, std::array{40, 30, 1, 6}}) {
     CAPTURE(nx);
     CAPTURE(extra);
@@ -187,8 +203,9 @@ TEST_CASE("vtu: the background cells as counter-clockwise VTK quads on the parti
     format.zlib_level = level;
     const auto path = dir / fmt::format("grid_{}_{}_{}.vtu", nx, ny, extra);
     rkpm::io::write_vtu(path, points, cells, data, format, tools);
-    check_with_meshio(fmt::format("cells '{}' {} {} {}", path.string(), nx, ny, extra));
+    grids += fmt::format(" '{}' {} {} {}", path.string(), nx, ny, extra);
   }
+  check_with_meshio("cells" + grids);  // one start of Python for every file
   // A cell on a point that does not exist is refused before anything is written.
   auto mesh = rkpm::make_grid_mesh(vec2(0.0, 0.0), vec2(1.0, 1.0), Eigen::Vector2i(3, 3));
   CHECK_THROWS_AS(rkpm::io::quad_cells(mesh, 8), rkpm::error);
@@ -212,6 +229,7 @@ TEST_CASE("vtu: the zlib and LZ4 blocks are compressed in parallel, the file the
     formats.back().deflater = deflater;
   }
   if (rkpm::io::vtu_lz4_available) formats.emplace_back(vtu_encoding::appended, vtu_compression::lz4);
+  std::string files;
   for (const auto& format : formats) {
     const std::string label = format.compression == vtu_compression::lz4 ? "lz4" : name(format.deflater);
     CAPTURE(label);
@@ -230,9 +248,10 @@ TEST_CASE("vtu: the zlib and LZ4 blocks are compressed in parallel, the file the
 #endif
     CHECK(bytes[0].size() > 100000);
     CHECK(bytes[0] == bytes[1]);
-    check_with_meshio(fmt::format("vtu '{}' {} appended {}", (dir / fmt::format("{}_t2.vtu", label)).string(), n,
-                                  name(format.compression)));
+    files += fmt::format(" '{}' {} appended {}", (dir / fmt::format("{}_t2.vtu", label)).string(), n,
+                         name(format.compression));
   }
+  check_with_meshio("vtus" + files);  // one start of Python for every file
   fs::remove_all(dir);
 }
 
@@ -242,13 +261,13 @@ TEST_CASE("vtu: check_vtu.py refuses a compression header that lies about its bl
   // at a time, the zlib streams (LZ4 blocks) left as they are.
   const auto dir = vtk_scratch() / "lies";
   const auto s = make(20000);
-  const auto compressions = built_compressions(false);
-  for (auto compression : compressions) {
+  std::string good_files;
+  std::vector<std::pair<std::string, std::string>> lies;
+  for (auto compression : built_compressions(false)) {
     const std::string kind = name(compression);
-    CAPTURE(kind);
     const auto good = dir / (kind + "_good.vtu");
     rkpm::io::write_vtu(good, s.points, s.data, vtu_format(vtu_encoding::appended, compression));
-    check_with_meshio(fmt::format("vtu '{}' 20000 appended {}", good.string(), kind));
+    good_files += fmt::format(" '{}' 20000 appended {}", good.string(), kind);
     const std::string bytes = file_bytes(good);
     const std::string mark = "<AppendedData encoding=\"raw\">\n   _";
     const auto at = bytes.find(mark);
@@ -262,7 +281,7 @@ TEST_CASE("vtu: check_vtu.py refuses a compression header that lies about its bl
       std::memcpy(bad.data() + header + 8 * entry, &v, 8);
       const auto path = dir / (kind + "_" + file);
       std::ofstream(path, std::ios::binary) << bad;
-      check_vtu_refuses(fmt::format("vtu '{}' 20000 appended {}", path.string(), kind), why);
+      lies.emplace_back(fmt::format("'{}' 20000 appended {}", path.string(), kind), why);
     };
     lie("block_size.vtu", 1, -16384, "block size 16384");
     lie("last_block.vtu", 2, 1, "last block");
@@ -274,6 +293,8 @@ TEST_CASE("vtu: check_vtu.py refuses a compression header that lies about its bl
       lie("long_block.vtu", 3, 1, "is not an LZ4 block");
     }
   }
+  check_with_meshio("vtus" + good_files);  // the files the lies were made from pass
+  check_vtu_refuses(lies);
   fs::remove_all(dir);
 }
 
@@ -464,8 +485,15 @@ TEST_CASE("vtu: points, cells and arrays made piecewise write the bytes of the w
 TEST_CASE("pvd: the index is valid after every addition and lists each added file") {
   const auto dir = vtk_scratch() / "series";
   rkpm::io::pvd_series pvd(dir / "run.pvd");
-  // Valid (empty) collection before any snapshot.
-  check_with_meshio(fmt::format("pvd '{}'", pvd.path().string()));
+  // The index as it stands after each addition, copied beside it (its file names are relative
+  // to its directory) and checked in one start of Python at the end.
+  std::string indexes;
+  auto keep_index = [&](int k, const std::string& expect) {
+    const auto copy = dir / fmt::format("index_{}.pvd", k);
+    fs::copy_file(pvd.path(), copy, fs::copy_options::overwrite_existing);
+    indexes += fmt::format("{}'{}'{}", indexes.empty() ? "" : " / ", copy.string(), expect);
+  };
+  keep_index(0, "");  // a valid (empty) collection before any snapshot
 
   const double times[] = {0.0, 1e-6, 2.5e-6};
   const int sizes[] = {5, 8, 13};
@@ -476,8 +504,7 @@ TEST_CASE("pvd: the index is valid after every addition and lists each added fil
     CHECK(vtu.parent_path() == dir);
     CHECK(vtu.filename() == fmt::format("run_{:06d}.vtu", k));
     expect += fmt::format(" {},{}", times[k], sizes[k]);
-    // As if the run died right here: the index on disk lists exactly the snapshots so far.
-    check_with_meshio(fmt::format("pvd '{}'{}", pvd.path().string(), expect));
+    keep_index(k + 1, expect);  // as if the run died right here: the snapshots so far
   }
   // add() with a caller-written file, named relative to the .pvd directory.
   const auto s = make(3);
@@ -485,7 +512,8 @@ TEST_CASE("pvd: the index is valid after every addition and lists each added fil
   rkpm::io::write_vtu(dir / "extra" / "late.vtu", s.points, s.data, vtu_encoding::ascii);
   pvd.add(4e-6, "extra/late.vtu");
   CHECK(pvd.size() == 4);
-  check_with_meshio(fmt::format("pvd '{}'{} 4e-06,3", pvd.path().string(), expect));
+  indexes += fmt::format(" / '{}'{} 4e-06,3", pvd.path().string(), expect);
+  check_with_meshio("pvd " + indexes);
   CHECK_FALSE(fs::exists(dir / "run.pvd.tmp"));
   fs::remove_all(vtk_scratch());
 }
