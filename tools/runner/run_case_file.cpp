@@ -46,7 +46,7 @@ run_outcome run_case_file(const run_request& request) {
   }
   r.case_name = c.name;
   // A restart takes the same material as its run: the choice depends on the document alone.
-  const bool temperature = case_file::uses_temperature(c);
+  const bool temperature = case_file::uses_johnson_cook_state(c);  // or damage
   if (c.geometry == geometry::axisymmetric::name)
     return temperature ? run_file_case<geometry::axisymmetric, case_file::material_type>(r, c, restart)
                        : run_file_case<geometry::axisymmetric, case_file::j2_material>(r, c, restart);

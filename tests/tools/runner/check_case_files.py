@@ -33,7 +33,9 @@
                                                             damage opens cracks breaks in two (history.csv's and
                                                             summary.json's fragments go from 1 to 2) keeping its
                                                             momentum; without opens_cracks no fragment columns; a
-                                                            bad opens_cracks stops the run with its pointer
+                                                            bad opens_cracks stops the run with its pointer;
+                                                            cases/brittle_bar.json: a Rankine bar breaks in two
+                                                            and dissipates G_c H within 10%
     check_case_files.py mesh RKPM_RUN CASES_DIR WORK_DIR    cases/projectile: a body meshed by Gmsh from a .geo
                                                             has the geometry's mass (kinetic energy 1/2 rho A v^2),
                                                             keeps its symmetry line and stays on the wall's side;
@@ -467,7 +469,8 @@ def fracture(rkpm_run, cases, work):
     largest piece's mass from the bar's to about half; summary.json says the same at the end, with
     the remap term of the rebuilds in its energy; the momentum history stays at its start to
     round-off. With opens_cracks off, the failed points cut nothing and the outputs have no
-    fragment columns; a value that is not true or false stops the run with its pointer."""
+    fragment columns; a value that is not true or false stops the run with its pointer. And
+    cases/brittle_bar.json: a Rankine bar breaks in two, dissipating G_c H."""
     path = os.path.join(cases, "bar_pulled_apart.json")
     out = os.path.join(work, "bar_pulled_apart")
     shutil.rmtree(out, ignore_errors=True)
@@ -508,6 +511,28 @@ def fracture(rkpm_run, cases, work):
     words = ["/bodies/0/material/damage/opens_cracks", "true or false"]
     check(r.returncode != 0 and all(w in r.stderr for w in words), f"fracture: a bad opens_cracks: {r.stderr!r}")
     print(f"ok  bad opens_cracks: {r.stderr.strip()}")
+
+    # cases/brittle_bar.json: a Rankine bar (docs/method.md section 4.7) thrown apart breaks in two
+    # and dissipates G_c H per metre of depth (its crack band follows the kernel's support, (107)).
+    path = os.path.join(cases, "brittle_bar.json")
+    out = os.path.join(work, "brittle_bar")
+    shutil.rmtree(out, ignore_errors=True)
+    r = run([rkpm_run, path, "--out", out, "--no-plots", "--quiet"])
+    check(r.returncode == 0, f"fracture: the brittle bar failed: {r.stderr}")
+    if r.returncode == 0:
+        s = summary(out)
+        rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+        G_c, H = 500.0, 4e-3
+        dissipated = s["energy"]["plastic_J"]
+        check(s.get("fragments") == 2.0, f"fracture: the brittle bar's fragments {s.get('fragments')}")
+        check(abs(dissipated - G_c * H) <= 0.1 * G_c * H,
+              f"fracture: the brittle bar dissipated {dissipated} J/m against G_c H = {G_c * H}")
+        momentum = [float(row["momentum_x_N_s"]) for row in rows]
+        scale = 1180.0 * 20e-3 * H * 10.0  # the bar's mass per metre times the halves' speed
+        check(max(abs(p - momentum[0]) for p in momentum) <= 1e-12 * scale,
+              f"fracture: the brittle bar's momentum {momentum[:2]} ... {momentum[-2:]}")
+        print(f"ok  brittle_bar.json: {s['steps']} steps, 2 pieces, dissipated {dissipated:.4f} J/m against G_c H = "
+              f"{G_c * H:g}, balance {s['energy']['balance_error']:.2e}")
 
 
 def zerilli_armstrong(rkpm_run, cases, work):

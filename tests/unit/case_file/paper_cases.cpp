@@ -135,7 +135,7 @@ TEST_CASE("a velocity table: linear velocity, its exact integral, constant after
 
 TEST_CASE("the runner's material: J2's state unless a body carries a temperature") {
   auto doc = test::paper_case_document("taylor_bar");
-  CHECK(!runner::case_file::uses_temperature(test::load_document(doc)));
+  CHECK(!runner::case_file::uses_johnson_cook_state(test::load_document(doc)));
   const auto j2 = runner::case_file::build_problem<contact_t, runner::case_file::j2_material>(test::load_document(doc), 1);
   CHECK(j2.material.hardening().yields());
   doc["bodies"][0]["material"] = {{"law", "johnson_cook"}, {"youngs_modulus_Pa", 124e9}, {"poisson_ratio", 0.34},
@@ -144,11 +144,11 @@ TEST_CASE("the runner's material: J2's state unless a body carries a temperature
                                   {"room_temperature_K", 294}, {"melt_temperature_K", 1356},
                                   {"specific_heat_J_kgK", 383}};
   const auto description = test::load_document(doc);
-  CHECK(runner::case_file::uses_temperature(description));
+  CHECK(runner::case_file::uses_johnson_cook_state(description));
   CHECK(runner::case_file::build_problem<contact_t>(description, 1).material.johnson_cook() != nullptr);
   const std::string e = test::error_message(
       [&] { runner::case_file::build_problem<contact_t, runner::case_file::j2_material>(description, 1); });
-  CHECK(test::contains(e, "a body with a temperature (johnson_cook) was given a material without room for its state"));
+  CHECK(test::contains(e, "a body with a temperature or a damage (johnson_cook) was given a material without room for its state"));
 }
 
 TEST_CASE("elastic maps to J2 that never yields") {

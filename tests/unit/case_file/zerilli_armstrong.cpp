@@ -66,7 +66,7 @@ void one_error(case_json doc, Change change, const std::string& pointer, const s
 
 TEST_CASE("cases/taylor_copper_za.json: Zerilli & Armstrong's copper, a material that carries a temperature") {
   const auto description = test::load_document(copper_za());
-  CHECK(runner::case_file::uses_temperature(description));
+  CHECK(runner::case_file::uses_johnson_cook_state(description));
   const auto& m = description.bodies[0].material;
   REQUIRE(m.zerilli_armstrong);
   const flow_type& f = m.zerilli_armstrong->flow();
@@ -83,7 +83,7 @@ TEST_CASE("cases/taylor_copper_za.json: Zerilli & Armstrong's copper, a material
   CHECK(!runner::case_file::updates_in_lanes(p.material));
   const std::string e = test::error_message(
       [&] { runner::case_file::build_problem<contact_t, runner::case_file::j2_material>(description, 1); });
-  CHECK(contains(e, "a body with a temperature (zerilli_armstrong) was given a material without room for its state"));
+  CHECK(contains(e, "a body with a temperature or a damage (zerilli_armstrong) was given a material without room for its state"));
 
   // Point by point, the runner's material is the typed one, bit for bit, on a path that loads,
   // unloads and reloads at a high rate, fcc and bcc.

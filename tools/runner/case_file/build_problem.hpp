@@ -1,9 +1,9 @@
 #pragma once
 // build_problem<Contact, Material>(case, resolution): the rkpm::problem a case file describes,
 // for any contact policy and either case-file material (case_material.hpp; j2_material only for
-// a file whose bodies carry no temperature, uses_temperature in case_description.hpp): each body
-// discretized and added with its own material (add_body), its constraints, initial velocity
-// and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do
+// a file whose bodies carry neither temperature nor damage, uses_johnson_cook_state in
+// case_description.hpp): each body discretized and added with its own material (add_body), its
+// constraints, initial velocity and slaves, and the pairs of bodies in contact. Resolution K refines as the typed cases do
 // (cases/parameters.hpp): a rectangle of n particles per direction gets (n - 1) K + 1, a
 // polygon's spacing is divided by K (gmsh_bodies.hpp). A rectangle builds exactly the
 // particles and cells of make_grid_particles and make_grid_mesh, in the same order, so a paper
@@ -22,6 +22,9 @@
 #include <rkpm/discretization/body_partition.hpp>
 #include <rkpm/discretization/boundary_chains.hpp>
 #include <rkpm/discretization/particle_set.hpp>
+#include <rkpm/kernel/cubic_spline.hpp>
+#include <rkpm/kernel/quartic_spline.hpp>
+#include <rkpm/material/rankine_fracture.hpp>
 #include <rkpm/solver/problem.hpp>
 
 #include "body_edges.hpp"
@@ -41,16 +44,20 @@ namespace rkpm::runner::case_file {
   fail_in_file(c.file.string(), at, message);
 }
 
+// band_width: a Rankine body's crack band (m), its "band_width_m" or band_width_of (unused by the
+// other laws).
 template <class Material = material_type>
-Material make_material(const material_description& m) {
+Material make_material(const material_description& m, double band_width = 0.0) {
   const material::elastic_constants constants{m.youngs_modulus, m.poisson_ratio, m.density};
-  if (m.johnson_cook || m.zerilli_armstrong) {
+  if (m.johnson_cook || m.zerilli_armstrong || m.rankine) {
     if constexpr (Material::holds_johnson_cook) {
       if (m.johnson_cook) return Material(*m.johnson_cook);
-      return Material(*m.zerilli_armstrong);
+      if (m.zerilli_armstrong) return Material(*m.zerilli_armstrong);
+      return Material(material::rankine_fracture(constants, m.rankine->tensile_strength, m.rankine->fracture_energy,
+                                                 band_width));
     } else {
-      fail("a body with a temperature ({}) was given a material without room for its state; build the problem with "
-           "case_file::material_type (uses_temperature)",
+      fail("a body with a temperature or a damage ({}) was given a material without room for its state; build the "
+           "problem with case_file::material_type (uses_johnson_cook_state)",
            m.law);
     }
   }
@@ -59,6 +66,19 @@ Material make_material(const material_description& m) {
 }
 
 namespace detail {
+
+// A Rankine body's crack band (docs/method.md (107)): its "band_width_m", or the width of the
+// file's kernel window at the body's largest support radius, so that a crack dissipates G_c per
+// unit area at every resolution.
+inline double band_width_of(const case_description& c, const body_description& b, const particle_set<2>& particles) {
+  if (!b.material.rankine) return 0.0;
+  if (b.material.rankine->band_width) return *b.material.rankine->band_width;
+  double support = 0.0;
+  for (const auto& a : particles.support) support = std::max({support, a[0], a[1]});
+  return c.method.kernel == kernel::quartic_spline::name
+             ? material::rankine_fracture::band_width_of_support<kernel::quartic_spline>(support)
+             : material::rankine_fracture::band_width_of_support<kernel::cubic_spline>(support);
+}
 
 inline std::pair<particle_set<2>, background_mesh> discretize(const case_description& c, const body_description& b,
                                                               int resolution) {
@@ -167,7 +187,8 @@ problem<Material, Contact> build_problem(const case_description& c, int resoluti
   problem<Material, Contact> pr{
       .particles = {},
       .mesh = {},
-      .material = make_material<Material>(first.material),
+      .material = Material({first.material.youngs_modulus, first.material.poisson_ratio, first.material.density},
+                           hardening_law::no_yield()),  // the first body's, below
       .contact = c.self_contact ? cases::make_contact<Contact>(make_tools(c), c.friction,
                                                               c.penalty_stiffness.value_or(0.0), contact::all_body_pairs)
                                 : cases::make_contact<Contact>(make_tools(c), c.friction,
@@ -194,15 +215,22 @@ problem<Material, Contact> build_problem(const case_description& c, int resoluti
       vc.particle += offset;
       pr.constraints.push_back(std::move(vc));
     }
+    Material material = pr.material;
     try {
-      add_body(pr, parts[k].first, parts[k].second, make_material<Material>(b.material));
+      material = make_material<Material>(b.material, detail::band_width_of(c, b, parts[k].first));
+    } catch (const error& e) {  // a band too wide for the law (103): the particles too coarse
+      fail_at(c, child_pointer(b.at, "material"), e.what());
+    }
+    try {
+      add_body(pr, parts[k].first, parts[k].second, std::move(material));
     } catch (const error& e) {
       fail_at(c, child_pointer(b.at, "shape"), e.what());
     }
     listed_slaves = listed_slaves || b.slave_layers != 1;
   }
   start.push_back(static_cast<index_t>(pr.particles.size()));
-  if (c.bodies.size() == 1) pr.body_materials.clear();
+  pr.material = pr.body_materials.front();
+  if (c.bodies.size() == 1) pr.body_materials.clear();  // problem::material, as a typed problem of one body
   set_initial_velocity(c, pr, start);
   set_body_force(c, pr);
   // Slaves: none given means every body's boundary nodes; "all" lists a body's every particle,

@@ -62,13 +62,22 @@ struct mesh_shape {  // a Gmsh file, used as given
 };
 using body_shape = std::variant<rectangle_shape, polygon_shape, mesh_shape>;
 
+// "law": "rankine": brittle fracture (material::rankine_fracture); the band width, when not
+// given, follows the body's particles (build_problem.hpp).
+struct rankine_description {
+  double tensile_strength = 0.0;    // Pa
+  double fracture_energy = 0.0;     // J/m^2
+  std::optional<double> band_width;  // m
+};
+
 struct material_description {
-  std::string law;        // "elastic", "j2", "johnson_cook" or "zerilli_armstrong"
+  std::string law;        // "elastic", "j2", "johnson_cook", "zerilli_armstrong" or "rankine"
   std::string hardening;  // for j2: a law's ::name in material::hardening::laws ("linear", ...)
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   hardening_law flow_law;  // for j2: that law with the file's constants (never yields otherwise)
   std::optional<material::johnson_cook> johnson_cook;  // for johnson_cook: the whole material
   std::optional<material::zerilli_armstrong> zerilli_armstrong;  // for zerilli_armstrong: likewise
+  std::optional<rankine_description> rankine;                    // for rankine: its constants
 };
 
 // Prescribed velocity components (m/s) of the particles on a named edge; empty = free.
@@ -191,11 +200,12 @@ struct case_description {
   std::vector<history_description> histories;
 };
 
-// Whether a body of the file carries a temperature (Johnson-Cook or Zerilli-Armstrong), so that
-// its run needs material_type's state (case_material.hpp).
-inline bool uses_temperature(const case_description& c) {
+// Whether a body of the file carries a temperature (Johnson-Cook or Zerilli-Armstrong) or a
+// damage (Johnson-Cook, Rankine), so that its run needs material_type's state (case_material.hpp).
+inline bool uses_johnson_cook_state(const case_description& c) {
   return c.heat.enabled || std::ranges::any_of(c.bodies, [](const body_description& b) {
-    return b.material.johnson_cook.has_value() || b.material.zerilli_armstrong.has_value();
+    return b.material.johnson_cook.has_value() || b.material.zerilli_armstrong.has_value() ||
+           b.material.rankine.has_value();
   });
 }
 

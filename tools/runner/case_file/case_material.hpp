@@ -1,19 +1,23 @@
 #pragma once
 // The material types of the case files: material::j2_plasticity with its hardening law chosen at
-// run time (hardening_law), material::johnson_cook or material::zerilli_armstrong, so that the
+// run time (hardening_law), material::johnson_cook, material::zerilli_armstrong or
+// material::rankine_fracture, so that the
 // runner compiles one material per geometry and state, whatever law the files name. hardening_law holds one law of the
 // library's list (material::hardening::laws) and hands every call to it, so a case file runs
 // bit for bit as the typed case with j2_plasticity<that law>
 // (tests/unit/case_file/hardening_law.cpp); a law added to the list is read and run with no edit
 // here. Two states, so that a run keeps per point only what its laws need:
 //   j2_material     J2 and elastic bodies: material::j2_state (96 B per point)
-//   material_type   any law, Johnson-Cook and Zerilli-Armstrong included:
+//   material_type   any law, Johnson-Cook, Zerilli-Armstrong and Rankine included:
 //                   material::johnson_cook_state (152 B); its J2 points leave temperature and
 //                   damage NaN (no temperature: the solver passes NaN as before, and the
 //                   snapshots leave out a field that is NaN everywhere, io/solver_output.hpp),
-//                   its Zerilli-Armstrong points damage
-// The runner takes j2_material for a file whose bodies carry no temperature (uses_temperature,
-// case_description.hpp): at 10^6 particles and two points each, 82 MB less.
+//                   its Zerilli-Armstrong points damage, its Rankine points temperature (their
+//                   kappa (102) is kept where a Johnson-Cook point keeps its flow stress at rest,
+//                   their dissipation (106) as the plastic work, and their F as every point's,
+//                   which the solver reads at a re-reference; rankine_state_of)
+// The runner takes j2_material for a file whose bodies carry neither temperature nor damage
+// (uses_johnson_cook_state, case_description.hpp): at 10^6 particles and two points each, 82 MB less.
 //
 // "elastic" is J2 that never yields (flow stress +infinity). Its elastic part is the Hencky law
 // of material::elastic (tau = K tr(eps) + 2 mu dev(eps) = lambda tr(eps) + 2 mu eps in principal
@@ -36,6 +40,7 @@
 #include <rkpm/material/j2_plasticity.hpp>
 #include <rkpm/material/johnson_cook.hpp>
 #include <rkpm/material/radial_return.hpp>
+#include <rkpm/material/rankine_fracture.hpp>
 #include <rkpm/material/zerilli_armstrong.hpp>
 
 namespace rkpm::runner::case_file {
@@ -111,8 +116,25 @@ inline double plastic_work_increment(const hardening_law& h, double from, double
   return h.plastic_work(from, dgamma, flow_from, flow_to);
 }
 
-// J2 with the file's hardening law or, with State = johnson_cook_state, Johnson-Cook or
-// Zerilli-Armstrong too (a branch or two per point update).
+// A Rankine point's state in a Johnson-Cook state, and back: the fields the law reads and writes,
+// so that a point updates bit for bit as with material::rankine_fracture_state.
+inline material::rankine_fracture_state rankine_state_of(const material::johnson_cook_state& s) {
+  material::rankine_fracture_state r;
+  r.plastic_work = r.fracture_work = s.plastic_work;
+  r.kappa = s.flow_stress_at_rest;
+  r.damage = s.damage;
+  r.crack_normal = vec2(s.crack_normal);
+  return r;
+}
+inline void store_rankine_state(const material::rankine_fracture_state& r, material::johnson_cook_state& s) {
+  s.plastic_work = r.plastic_work;
+  s.flow_stress_at_rest = r.kappa;
+  s.damage = r.damage;
+  s.crack_normal = r.crack_normal;
+}
+
+// J2 with the file's hardening law or, with State = johnson_cook_state, Johnson-Cook,
+// Zerilli-Armstrong or Rankine too (a branch or three per point update).
 template <class State>
 class basic_material_type {
  public:
@@ -130,6 +152,9 @@ class basic_material_type {
   explicit basic_material_type(material::zerilli_armstrong za)
     requires holds_johnson_cook
       : j2_(za.constants(), hardening_law::no_yield()), zerilli_armstrong_(std::move(za)) {}
+  explicit basic_material_type(material::rankine_fracture rankine)
+    requires holds_johnson_cook
+      : j2_(rankine.constants(), hardening_law::no_yield()), rankine_(std::move(rankine)) {}
 
   state_type initial_state() const {
     if constexpr (holds_johnson_cook) {
@@ -137,6 +162,7 @@ class basic_material_type {
       state_type s;
       s.damage = std::numeric_limits<double>::quiet_NaN();  // J2: neither temperature nor damage
       if (zerilli_armstrong_) s.temperature = zerilli_armstrong_->initial_state().temperature;
+      if (rankine_) store_rankine_state(rankine_->initial_state(), s);
       return s;
     } else {
       return j2_.initial_state();
@@ -146,6 +172,13 @@ class basic_material_type {
     if constexpr (holds_johnson_cook) {
       if (johnson_cook_) return johnson_cook_->kirchhoff_stress(F, s, step);
       if (zerilli_armstrong_) return zerilli_armstrong_->kirchhoff_stress(F, s, step);
+      if (rankine_) {
+        material::rankine_fracture_state r = rankine_state_of(s);
+        const mat3 tau = rankine_->kirchhoff_stress(F, r);
+        store_rankine_state(r, s);
+        s.previous_deformation = block_matrix::of(F);  // the total F, which a re-reference reads
+        return tau;
+      }
     }
     return j2_.kirchhoff_stress(F, s, step);
   }
@@ -159,6 +192,7 @@ class basic_material_type {
     if constexpr (holds_johnson_cook) {
       if (johnson_cook_) return johnson_cook_->current_kirchhoff_stress(F, s);
       if (zerilli_armstrong_) return zerilli_armstrong_->current_kirchhoff_stress(F, s);
+      if (rankine_) return rankine_->current_kirchhoff_stress(F, rankine_state_of(s));
     }
     return j2_.current_kirchhoff_stress(F, s);
   }
@@ -183,9 +217,11 @@ class basic_material_type {
   const material::zerilli_armstrong* zerilli_armstrong() const {
     return zerilli_armstrong_ ? &*zerilli_armstrong_ : nullptr;
   }
+  // The Rankine material, nullptr for the others.
+  const material::rankine_fracture* rankine() const { return rankine_ ? &*rankine_ : nullptr; }
   // Whether failed points open cracks (OpensCracks, concepts/material.hpp): Johnson-Cook's
-  // damage with opens_cracks.
-  bool opens_cracks() const { return johnson_cook_ && johnson_cook_->opens_cracks(); }
+  // damage with opens_cracks, and Rankine's always.
+  bool opens_cracks() const { return (johnson_cook_ && johnson_cook_->opens_cracks()) || rankine_; }
   // The J2 material (with a law that never yields for an elastic body).
   const j2_type& j2() const { return j2_; }
 
@@ -193,16 +229,17 @@ class basic_material_type {
   j2_type j2_;
   std::optional<material::johnson_cook> johnson_cook_;  // empty unless holds_johnson_cook
   std::optional<material::zerilli_armstrong> zerilli_armstrong_;  // likewise
+  std::optional<material::rankine_fracture> rankine_;             // likewise
 };
 
 using j2_material = basic_material_type<material::j2_state>;
 using material_type = basic_material_type<material::johnson_cook_state>;
 
 // The force loop's batched update (material/j2_batch.hpp, solver/point_materials.hpp): J2 and
-// elastic bodies in lanes, Johnson-Cook's and Zerilli-Armstrong's points one by one.
+// elastic bodies in lanes, Johnson-Cook's, Zerilli-Armstrong's and Rankine's points one by one.
 template <class State>
 bool updates_in_lanes(const basic_material_type<State>& m) {
-  return m.johnson_cook() == nullptr && m.zerilli_armstrong() == nullptr;
+  return m.johnson_cook() == nullptr && m.zerilli_armstrong() == nullptr && m.rankine() == nullptr;
 }
 template <class State, class V>
 basic_block_lanes<V> kirchhoff_stress_batch(const basic_material_type<State>& m, const basic_block_lanes<V>& F,

@@ -142,9 +142,10 @@ inline void check_histories(diagnostics& d, const case_description& c, const std
           }
           if constexpr (std::is_same_v<K, failed_fraction_history>) {
             for (const body_description& b : c.bodies)
-              if (b.name == k.body && b.material.law != material::johnson_cook::name)
+              if (b.name == k.body && b.material.law != material::johnson_cook::name &&
+                  b.material.law != material::rankine_fracture::name)
                 d.error(kind_at("body"), fmt::format("body '{}' has no damage (its material law is '{}'); give it "
-                                                     "\"law\": \"johnson_cook\" or measure another body",
+                                                     "\"law\": \"johnson_cook\" or \"rankine\" or measure another body",
                                                      k.body, b.material.law));
           }
           if constexpr (std::is_same_v<K, tool_gap_history>) {
