@@ -38,6 +38,10 @@ struct rankine_fracture_state {
   double fracture_work = 0.0;              // J/m^3, the same W_d, for a ledger that names fracture
   double kappa = 0.0;                      // (102), dimensionless
   double damage = 0.0;                     // D (104), >= 1 failed
+  // Unused: fills the 8 bytes before crack_normal's 16-byte alignment, which would otherwise be
+  // padding a copy may leave as it was, so that a state's bytes (a checkpoint's) are its values
+  // and a run on several processes writes one process's file.
+  double unused = 0.0;
   // Unit normal of the crack in the current configuration: the in-plane principal direction of
   // the larger in-plane effective stress at the update where D first grew; zero before, and zero
   // after when the out-of-plane stress was the largest (a hoop crack in axisymmetry).
@@ -52,6 +56,7 @@ struct rankine_fracture_state {
 };
 
 static_assert(bitwise_value<rankine_fracture_state>, "checkpoints write the state as raw bytes");
+static_assert(sizeof(rankine_fracture_state) == 8 * sizeof(double), "no padding: every byte a checkpoint writes is a value");
 
 class rankine_fracture {
  public:
