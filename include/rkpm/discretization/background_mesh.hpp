@@ -101,6 +101,15 @@ struct background_mesh {
   }
 };
 
+// One cell as a part of the mesh sees it (a rank's part of a run on several processes, which
+// holds no mesh): its corners by the part's particle ids (-1 where the part does not hold one)
+// and its neighbours across its sides k (corner k to k + 1) by the whole mesh's cell ids (-1 at
+// the boundary).
+struct cell_around {
+  std::array<stored_index, 4> corner{};
+  std::array<index_t, 4> neighbour{};
+};
+
 // Cells of the regular grid of counts[0] x counts[1] nodes on [lo, hi].
 inline background_mesh make_grid_mesh(const vec2& lo, const vec2& hi, const Eigen::Vector2i& counts) {
   if (counts[0] < 2 || counts[1] < 2) fail("grid mesh: need at least 2 nodes per direction");

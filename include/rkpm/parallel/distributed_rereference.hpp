@@ -1,18 +1,23 @@
 #pragma once
-// Re-referencing on P processes (docs/method.md sections 5.8 and 9.8): distributed_solver's
-// step(), rereference(), rebuild_from() and read_whole(). A re-reference is decided alike on
-// every rank (every_steps counts steps; the distortion is the largest over every rank's points,
-// an MPI_MAX: explicit_solver::rereference_due), and the step that decides it leaves the part
-// between steps with the re-reference pending. Then, collectively:
+// Re-referencing and cracks on P processes (docs/method.md sections 5.8, 5.12 and 9.8):
+// distributed_solver's step(), rereference(), rebuild_from() and read_whole(). A re-reference
+// is decided alike on every rank (every_steps counts steps; the distortion is the largest over
+// every rank's points, an MPI_MAX: explicit_solver::rereference_due), and so is a crack's cut
+// (whether the whole model's failed points cut a cell, or-ed over the ranks:
+// solver/part_cracks.hpp); the step that decides either leaves the part between steps with the
+// rebuild pending. Then, collectively:
 //   1. the run's state, the checkpoint one process would write at this step (the owned values
 //      gathered on rank 0, mpi_checkpoint_layout.hpp), is broadcast to every rank;
 //   2. every rank reads it into a one-process solver of the whole model (rereference_through's
 //      maker; a re-referenced state rebuilds its model through the builder as a restart does)
-//      and re-references it as one process does: the same bits on every rank;
+//      and ends the step as one process does (explicit_solver::end_step: the failed points'
+//      cells cut, then the re-reference), or re-references it when asked between steps: the same
+//      bits on every rank;
 //   3. every rank builds its part again from that solver's model with the same partition (the
 //      particles keep their ids and owners; new ghosts, halo plan and point owners), the
 //      whole solver's constraints and slaves, and its masses (kept across a re-reference), and
-//      takes its values of the whole solver's state by global index (read_checkpoint's path).
+//      takes its values of the whole solver's state by global index (read_checkpoint's path):
+//      the cuts among them (the reference sections), and each point's cell (cells_around).
 // So a re-referenced run on P processes is one process's bit for bit. Memory: the whole model
 // and its state on every rank during the rebuild, as at the set-up.
 // Included at the end of parallel/distributed_solver.hpp.
@@ -66,17 +71,22 @@ std::string state_bytes(const Solver& s) {
 template <class Solver>
 void distributed_solver<Solver>::step() {
   solver_->step();
-  if (solver_->rereference_pending()) rereference();
+  if (solver_->rereference_pending()) rebuild(true);
 }
 
 template <class Solver>
 void distributed_solver<Solver>::step_to_end() {
   solver_->step_to_end();
-  if (solver_->rereference_pending()) rereference();
+  if (solver_->rereference_pending()) rebuild(true);
 }
 
 template <class Solver>
 void distributed_solver<Solver>::rereference() {
+  rebuild(false);
+}
+
+template <class Solver>
+void distributed_solver<Solver>::rebuild(bool step_end) {
   communicator& comm = group_->comm();
   comm.guarded([&] {
     if (!make_whole_)
@@ -102,7 +112,8 @@ void distributed_solver<Solver>::rereference() {
     io::checkpoint_reader r(std::move(bytes), std::string(detail::rebuild_configuration),
                             checkpoint_identity_of(*whole, detail::rebuild_configuration), false);
     load_checkpoint(*whole, r);
-    whole->rereference();
+    if (step_end) whole->end_step();  // as one process's step ends: the cuts, then the re-reference
+    else whole->rereference();
   });
   comm.agree();
   // 3. The parts again.

@@ -21,9 +21,9 @@
 // same part.
 // Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: then
 // the surfaces' particles and rows join the shared region, and every rank corrects them alike.
-// Re-referencing (docs/method.md section 5.8) through step(), run() or rereference(): every rank
-// re-references a one-process solver of the whole model (rereference_through) and builds its
-// part again from it (parallel/distributed_rereference.hpp).
+// Re-referencing and cracks (docs/method.md sections 5.8 and 5.12) through step(), run() or
+// rereference(): every rank re-references (and cuts) a one-process solver of the whole model
+// (rereference_through) and builds its part again from it (parallel/distributed_rereference.hpp).
 
 #include <algorithm>
 #include <filesystem>
@@ -43,6 +43,7 @@
 #include <rkpm/parallel/rank_setup.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/discrete_model.hpp>
+#include <rkpm/solver/part_cracks.hpp>
 #include <rkpm/solver/problem.hpp>
 
 namespace rkpm::parallel {
@@ -168,17 +169,29 @@ class distributed_solver {
     rank_model r;
     comm.guarded([&] {
       whole = with_bodies<geometry_type>(std::move(whole));
+      // A part's model holds no crack faces (contact/crack_face_points.hpp): they would be missed.
+      if constexpr (ContactsOnSurfaces<typename Solver::contact_type>)
+        if (!whole.crack_faces.empty() && prob.contact.all_body_pairs())
+          fail("contact on the faces of cracks (all body pairs) on several processes is not available yet; run "
+               "on one process");
       shared_region(whole, prob, options_, find_axis);
       r.plan = make_halo_plan(partition_, whole.at_points, comm.rank(), &whole.at_particles,
                               shared_of(whole.at_particles, prob));
       r.shared = shared_;
       r.local = local_model(whole, r.plan);
+      if constexpr (BreakingState<typename Solver::state_type>)
+        r.local.cells_around = cells_around_points(whole.mesh, r.local);  // for part_cuts_a_cell
     });
     comm.agree();
     group_ = std::make_unique<mpi_process_group>(comm, partition_, r.plan, whole.at_points);
     whole = discrete_model{};
     finish(comm, std::move(r), std::move(prob), options_);
   }
+
+  // Collective: the parts built again from a whole solver that ends the step as one process does
+  // (`step_end`: the part's step left a rebuild pending) or re-references it
+  // (parallel/distributed_rereference.hpp).
+  void rebuild(bool step_end);
 
   void check(communicator& comm, const particle_partition& partition, index_t particles) const {
     if (partition.parts != comm.size())

@@ -16,6 +16,7 @@
 //   cracks_on        every cut's segment, as the crack_set the model builder reads, with its faces
 //   opens_cracks     whether the failed points of some body's material cut cells
 //   crack_fragments  the pieces the cracks have made: particles joined by a point's row
+// On a rank's part of a run on several processes: solver/part_cracks.hpp.
 
 #include <algorithm>
 #include <array>
@@ -49,14 +50,13 @@ inline bool is_cut(const std::vector<cell_crack>& cuts, index_t c) {
   return at < cuts.size() && cuts[at].cell == c;
 }
 
-// The cut of cell c (its corners at cells.node) through its centroid with unit normal n; none if
+// The cut of cell c, its corners at `corner`, through its centroid with unit normal n; none if
 // the line misses two sides (a degenerate cell).
-inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t c, const vec2& n) {
-  const auto& corner = cells.cell[c];
+inline std::optional<cell_crack> cut_cell(const std::array<vec2, 4>& corner, index_t c, const vec2& n) {
   vec2 centre = vec2::Zero();
-  for (const stored_index k : corner) centre += 0.25 * cells.node[k];
+  for (const vec2& x : corner) centre += 0.25 * x;
   std::array<double, 4> distance{};
-  for (int k = 0; k < 4; ++k) distance[k] = (cells.node[corner[k]] - centre).dot(n);
+  for (int k = 0; k < 4; ++k) distance[k] = (corner[k] - centre).dot(n);
   cell_crack cut{c, {}, {}};
   int found = 0;
   for (int k = 0; k < 4 && found < 2; ++k) {
@@ -68,6 +68,10 @@ inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t 
   }
   if (found < 2) return std::nullopt;
   return cut;
+}
+inline std::optional<cell_crack> cut_cell(const background_mesh& cells, index_t c, const vec2& n) {
+  const auto& k = cells.cell[c];
+  return cut_cell({cells.node[k[0]], cells.node[k[1]], cells.node[k[2]], cells.node[k[3]]}, c, n);
 }
 
 // The cells around each node (those that have it as a corner), in cell order.
@@ -97,13 +101,18 @@ inline std::vector<std::array<index_t, 4>> cell_neighbours(const background_mesh
 // cell of it, parallel cuts a cell apart that leave slivers of one particle column, whose high
 // frequencies shrink the stable step a hundredfold. The band is cut once across; its other
 // failed points carry no tension anyway.
-inline bool beside_a_cut(const std::vector<std::array<index_t, 4>>& neighbours, const std::vector<cell_crack>& cuts,
+// `around`: the cell's neighbours across its sides (-1 at the boundary).
+inline bool beside_a_cut(const std::array<index_t, 4>& around, const std::vector<cell_crack>& cuts,
                          const cell_crack& cut) {
   for (int k = 0; k < 4; ++k) {
     if (k == cut.side[0] || k == cut.side[1]) continue;
-    if (const index_t other = neighbours[cut.cell][k]; other >= 0 && is_cut(cuts, other)) return true;
+    if (const index_t other = around[k]; other >= 0 && is_cut(cuts, other)) return true;
   }
   return false;
+}
+inline bool beside_a_cut(const std::vector<std::array<index_t, 4>>& neighbours, const std::vector<cell_crack>& cuts,
+                         const cell_crack& cut) {
+  return beside_a_cut(neighbours[cut.cell], cuts, cut);
 }
 
 // Where `cut` crosses its cell's two sides, on the cells at their current corners.

@@ -72,6 +72,8 @@ struct discrete_model {
   std::vector<stored_index> point_id;
   std::vector<stored_index> particle_id;
   index_t whole_points = 0;  // a rank's model: the whole model's point count
+  // A rank's model of a material that breaks: each point's cell (crack_growth.hpp, cells_around_points).
+  std::vector<cell_around> cells_around;
 
   // Takes the bodies found for these particles and cells, and finds each point's.
   void set_bodies(model_bodies b) {

@@ -97,8 +97,10 @@ class explicit_solver {
   // Rebuilds the model in the current configuration through model_builder(), carrying the state
   // (solver/rereference_step.hpp): step() calls it when options().rereference says so or a crack
   // grows; a caller may, between steps. On a rank's part step() marks it pending instead, for
-  // parallel::distributed_solver, which rebuilds every part.
+  // parallel::distributed_solver, which rebuilds every part from a whole solver's end_step().
   void rereference();
+  // What step() ends with: new cracks cut and the model rebuilt if due, else the stable step updated.
+  void end_step();
   bool rereference_pending() const { return rereference_pending_; }
   // A rank's part built on a re-referenced model takes the run's masses (`physical`: empty without mass scaling).
   void carry_masses(std::vector<double> mass, std::vector<double> physical, double factor);

@@ -4,6 +4,7 @@
 //                      then the initial velocities, f_int(0), a(0) and the first stable step;
 //   step()             the velocity form of the central difference, (41)-(44), with contact and
 //                      constraints on the predicted configuration and the energy ledger (section 7);
+//   end_step()         the step's end: cracks cut, the model rebuilt, or the stable step updated;
 //   derive_from_model  what the step reads of the model besides the point states (the
 //                      constraint rows, the contact slaves, the particle sums): the one path the
 //                      constructor, a re-reference and a restart take (solver/rereference_step.hpp);
@@ -115,13 +116,21 @@ void explicit_solver<G, M, Ct>::step() {
   energy_.record();
   if (options_.mass_scaling.enabled())
     quasi_static_.observe(options_.mass_scaling, timeline_.time, options_.end_time, energy_.kinetic, energy_.internal);
+  end_step();
+  for (const auto& c : companions_) c->after_step(*this);
+}
+
+// On a rank's part the rebuild is left pending, decided alike on every rank (grow_cracks and
+// rereference_due reduce over the ranks); the distributed solver calls a whole solver's end_step()
+// in its place (parallel/distributed_rereference.hpp).
+template <Geometry G, Material M, Contact Ct>
+void explicit_solver<G, M, Ct>::end_step() {
   if (grow_cracks() || rereference_due()) {
-    if (model_.is_part()) rereference_pending_ = true;  // every rank alike (rereference_due)
+    if (model_.is_part()) rereference_pending_ = true;
     else rereference();
   } else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);
-  for (const auto& c : companions_) c->after_step(*this);
 }
 
 // Mass scaling (84): every mass times one factor, given or found from the unscaled step (a power

@@ -31,6 +31,7 @@
 
 #include <rkpm/solver/explicit_solver.hpp>
 #include <rkpm/solver/fields.hpp>
+#include <rkpm/solver/part_cracks.hpp>
 #include <rkpm/solver/rereference.hpp>
 
 namespace rkpm {
@@ -57,13 +58,15 @@ std::vector<vec2> explicit_solver<G, M, Ct>::particle_displacements() const {
 }
 
 // The cells of the points that have failed since the last call are cut (section 5.12), each once,
-// through its centroid normal to the first failed point's crack normal.
+// through its centroid normal to the first failed point's crack normal. A rank's part only says,
+// alike on every rank, whether the whole model would cut one (solver/part_cracks.hpp).
 template <Geometry G, Material M, Contact Ct>
 bool explicit_solver<G, M, Ct>::grow_cracks() {
   if constexpr (!BreakingState<state_type>) {
     return false;
   } else {
     if (!cracks_can_grow()) return false;  // no pass over the points (Johnson-Cook without opens_cracks)
+    if (model_.is_part()) return part_cuts_a_cell(model_, points_.states(), cracks_, d_);
     std::vector<std::pair<index_t, vec2>> failed;  // allocates only when a cell is to be cut
     for (index_t q = 0; q < model_.point_count(); ++q) {
       const state_type& s = points_.states()[q];
@@ -105,7 +108,7 @@ bool explicit_solver<G, M, Ct>::insert_cuts(const std::vector<std::pair<index_t,
   }
   if (cut && (!factory_ || !model_.bodies.nodes_are_particles() || model_.is_part()))
     fail("t = {:.6g} s: cutting a cell rebuilds the model: {}", timeline_.time,
-         model_.is_part() ? "cracks on several processes are not available yet; run on one process"
+         model_.is_part() ? "a rank's part cuts no cell (cut a notch on one process and read its checkpoint)"
                           : "build the solver with make_solver and give the particles at the mesh nodes");
   return cut;
 }
@@ -197,7 +200,7 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
     a.array("reference.volume", particles.volume);
     cells.node = particles.position;
     cells.tangled = !s.model_.nodal;
-    cells.cracks = cracks_on(cells, s.cracks_);
+    if (!s.model_.is_part()) cells.cracks = cracks_on(cells, s.cracks_);  // a part holds no cells
     quadrature_points carried;  // the carried points (none for a nodal rule)
     if (!s.model_.nodal) {
       carried.position.resize(s.model_.point_count());
