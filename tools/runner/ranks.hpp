@@ -89,6 +89,14 @@ class rank_steps final : public process_steps<Solver> {
         parallel::partition_particles(model.at_points, model.particle_count(), comm_.size());
     const io::vtu_cells cells = io::snapshot_cells(model);
     run_.emplace(comm_, std::move(model), std::move(*prob), options, partition);
+    // The library grows cracks on several processes (docs/method.md 9.8), but a part's fragments
+    // are its own pieces: the history and summary would not have the run's.
+    comm_.guarded([&] {
+      if (run_->solver().cracks_can_grow())
+        fail("cracks with --ranks: the fragments in history.csv are not reduced over the processes yet; run on one "
+             "process");
+    });
+    comm_.agree();
     // A re-reference (and the read of a re-referenced checkpoint) goes through the whole model's
     // one-process solver on every rank (parallel/distributed_rereference.hpp), made as rank 0's.
     if (options.rereference.enabled())
