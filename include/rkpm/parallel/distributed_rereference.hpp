@@ -90,8 +90,8 @@ void distributed_solver<Solver>::rebuild(bool step_end) {
   communicator& comm = group_->comm();
   comm.guarded([&] {
     if (!make_whole_)
-      fail("re-referencing on several processes needs the one-process solver of the whole model: give "
-           "distributed_solver::rereference_through its maker");
+      fail("re-referencing (or cutting cracks) on several processes needs the one-process solver of the whole "
+           "model: give distributed_solver::rereference_through its maker");
     if (!solver_->between_steps()) fail("rereference() between steps only");
   });
   comm.agree();

@@ -179,8 +179,8 @@ class distributed_solver {
                               shared_of(whole.at_particles, prob));
       r.shared = shared_;
       r.local = local_model(whole, r.plan);
-      if constexpr (BreakingState<typename Solver::state_type>)
-        r.local.cells_around = cells_around_points(whole.mesh, r.local);  // for part_cuts_a_cell
+      if constexpr (BreakingState<typename Solver::state_type>)  // for part_cuts_a_cell (else it asks the whole)
+        if (whole.bodies.nodes_are_particles()) r.local.cells_around = cells_around_points(whole.mesh, r.local);
     });
     comm.agree();
     group_ = std::make_unique<mpi_process_group>(comm, partition_, r.plan, whole.at_points);
