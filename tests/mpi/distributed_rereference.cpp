@@ -8,7 +8,10 @@
 // times. A checkpoint written on P ranks after the re-references is one process's file byte for
 // byte; read on P ranks (through the whole solver, which rebuilds the re-referenced model), and
 // a checkpoint in parts likewise (parallel/checkpoint_parts.hpp), it continues to the
-// uninterrupted run's bits across more re-references. Without the whole solver's maker the
+// uninterrupted run's bits across more re-references. From a lopsided partition with the load
+// bound (rereference.rebalance_above) just above 1, every re-reference on several ranks
+// partitions the particles again (the owned counts change, the load falls) and the run stays
+// one process's bits; a bound never passed keeps the partition. Without the whole solver's maker the
 // re-reference is refused on every rank alike; a part stepped past a pending re-reference is
 // refused.
 
@@ -32,6 +35,7 @@
 #include <rkpm/solver/make_solver.hpp>
 
 #include "mpi/bar_impact.hpp"
+#include "support/error_message.hpp"
 
 namespace test_mpi_distributed_rereference {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
@@ -85,6 +89,16 @@ bool same_run(communicator& world, const distributed_solver<solver_type>& run, c
   CHECK(positions == 0);
   CHECK(totals);
   return n.coefficients == 0 && n.velocities == 0 && positions == 0 && totals;
+}
+
+// A lopsided partition: part 0 owns the first three quarters of the particles (by index), the
+// other parts share the rest.
+particle_partition lopsided(index_t n, int parts) {
+  std::vector<stored_index> part(n, 0);
+  const index_t rest = n / 4;
+  for (index_t k = 0; k < rest && parts > 1; ++k)
+    part[n - rest + k] = static_cast<stored_index>(1 + k * (parts - 1) / rest);
+  return given_partition(std::move(part), parts);
 }
 
 std::string bytes_of(const std::filesystem::path& p) {
@@ -141,6 +155,47 @@ TEST_CASE("a run re-referenced on P ranks is one process's, bit for bit, and res
   }
   MPI_Barrier(world.get());
   if (world.rank() == 0) std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("past the load bound a re-reference partitions the particles again, with one process's bits") {
+  const rereference_policy unbounded{.every_steps = 1, .rebalance_above = 0.9};
+  CHECK(test::contains(test::error_message([&] { unbounded.validate(); }), "rebalance_above 0.9 must be at least 1"));
+  communicator world;
+  run_options o = options({.every_steps = 10});
+  o.rereference.rebalance_above = 1.0 + 1e-12;  // every re-reference on several ranks repartitions
+  solver_type one = make_solver<method>(bar(), o);
+  const discrete_model whole = one.model();
+  const particle_partition start = lopsided(whole.particle_count(), world.size());
+  const double before = load_imbalance(whole.at_points, start);
+  distributed_solver<solver_type> run(world, whole, bar(), o, start);
+  run.rereference_through([o] { return make_solver<method>(bar(), o); });
+  for (int n = 1; n <= 30; ++n) {
+    one.step();
+    run.step();
+    if (n % 15 == 0) {
+      CAPTURE(n);
+      same_run(world, run, one);
+    }
+  }
+  CHECK(one.rereferences() >= 2);
+  CHECK(run.rebuilds() == one.rereferences());
+  if (world.size() == 1) {
+    CHECK(run.repartitions() == 0);  // one part is balanced
+    return;
+  }
+  // What the test is for: the parts were built on a new partition, whose load is the partitioner's.
+  CHECK(run.repartitions() >= 1);
+  CHECK(run.partition().sizes() != start.sizes());
+  CHECK(static_cast<index_t>(run.plan().owned.size()) == run.partition().sizes()[world.rank()]);
+  CHECK(load_imbalance(one.model().at_points, run.partition()) < before);
+  // A bound never passed keeps the set-up's partition.
+  o.rereference.rebalance_above = 1e300;
+  distributed_solver<solver_type> kept(world, whole, bar(), o, start);
+  kept.rereference_through([o] { return make_solver<method>(bar(), o); });
+  for (int n = 1; n <= 10; ++n) kept.step();
+  CHECK(kept.rebuilds() == 1);
+  CHECK(kept.repartitions() == 0);
+  CHECK(kept.partition().part == start.part);
 }
 
 TEST_CASE("a re-reference on P ranks without the whole solver is refused on every rank; so is a part stepped past it") {

@@ -188,6 +188,26 @@ TEST_CASE("partition cost: links cut, points computed twice and ghosts, against 
   }
 }
 
+TEST_CASE("part loads: the table's entries at each part's particles, against a hand count") {
+  // Three points over five particles: point 0 holds 0, 1, 2; point 1 holds 1, 2, 3; point 2 holds 3, 4.
+  shape_table<2> t;
+  t.offset = {0, 3, 6, 8};
+  t.neighbor = {0, 1, 2, 1, 2, 3, 3, 4};
+  // Part 0 owns 0, 1, 2 (entries 1 + 2 + 2), part 1 owns 3, 4 (2 + 1): loads 5 and 3, mean 4.
+  const particle_partition p = given_partition({0, 0, 0, 1, 1}, 2);
+  CHECK(part_loads(t, p) == std::vector<std::int64_t>{5, 3});
+  CHECK(load_imbalance(t, p) == 1.25);
+  // Part 1 takes particle 0 too: loads 4 and 4; one part: 1.
+  CHECK(load_imbalance(t, given_partition({1, 0, 0, 1, 1}, 2)) == 1.0);
+  CHECK(load_imbalance(t, given_partition({0, 0, 0, 0, 0}, 1)) == 1.0);
+  // The partition's cost reports the same balance; a table naming a particle past the partition is refused.
+  const test::grid_problem g;
+  const particle_partition stripes = g.stripes(3);
+  CHECK(partition_cost(g.table, stripes).imbalance == load_imbalance(g.table, stripes));
+  CHECK(contains(error_message([&] { part_loads(t, given_partition({0, 1, 0, 1}, 2)); }),
+                 "names particle 4 but the partition has 4 particles"));
+}
+
 TEST_CASE("coordinate bisection errors: one line with the fix") {
   const test::grid_problem g;
   const std::vector<vec2>& x = g.particles.position;

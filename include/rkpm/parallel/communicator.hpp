@@ -17,6 +17,8 @@
 // MPI's own errors are fatal (MPI_ERRORS_ARE_FATAL, the default): they abort the job.
 // Needs MPI (Debian libopenmpi-dev; the opt-in target rkpm::mpi links it).
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -140,6 +142,17 @@ class communicator {
     throw rank_failure(first, failing > 1 ? fmt::format("rank {} (and {} more of {} ranks): {}", first, failing - 1,
                                                         size_, message)
                                           : fmt::format("rank {} of {}: {}", first, size_, message));
+  }
+
+  // Collective: rank 0's `bytes` on every rank (in pieces below 2^31 bytes). No agree(): the
+  // caller's, before it, when rank 0 made them inside guarded().
+  void broadcast(std::string& bytes) {
+    std::uint64_t size = bytes.size();
+    MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm_);
+    bytes.resize(size);
+    constexpr std::uint64_t piece = std::uint64_t{1} << 30;
+    for (std::uint64_t at = 0; at < size; at += piece)
+      MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(piece, size - at)), MPI_BYTE, 0, comm_);
   }
 
   // Order-free reductions (the largest and smallest value are the same in any order), after agree().

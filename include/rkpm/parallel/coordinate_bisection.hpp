@@ -92,7 +92,7 @@ inline particle_partition bisect_coordinates(std::span<const vec2> x, index_t pa
 //   shared_points    the extra computations of points whose support spans several parts:
 //                    sum over the points of (parts it touches - 1), the redundant work
 //   max_ghosts       the most ghosts any part holds (the other parts' particles in its points)
-//   imbalance        the largest part's work over the mean (work: a particle's table entries)
+//   imbalance        the largest part's work over the mean (load_imbalance, parallel/partition.hpp)
 struct partition_costs {
   std::int64_t links_cut = 0;
   index_t shared_points = 0;
@@ -125,11 +125,8 @@ partition_costs partition_cost(const shape_table<Dim>& table, const particle_par
   ghost.erase(std::ranges::unique(ghost).begin(), ghost.end());
   std::vector<index_t> ghosts(p.parts, 0);
   for (const auto& [r, I] : ghost) ++ghosts[r];
-  std::vector<double> work(p.parts, 0.0);
-  for (index_t I = 0; I < p.particles(); ++I) work[p.part[I]] += graph.vertex_weight[I];
   c.max_ghosts = *std::ranges::max_element(ghosts);
-  const double mean = std::accumulate(work.begin(), work.end(), 0.0) / static_cast<double>(p.parts);
-  c.imbalance = mean > 0.0 ? *std::ranges::max_element(work) / mean : 1.0;
+  c.imbalance = load_imbalance(table, p);
   return c;
 }
 

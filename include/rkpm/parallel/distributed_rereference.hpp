@@ -13,25 +13,28 @@
 //      and ends the step as one process does (explicit_solver::end_step: the failed points'
 //      cells cut, then the re-reference), or re-references it when asked between steps: the same
 //      bits on every rank;
-//   3. every rank builds its part again from that solver's model with the same partition (the
-//      particles keep their ids and owners; new ghosts, halo plan and point owners), the
-//      whole solver's constraints and slaves, and its masses (kept across a re-reference), and
-//      takes its values of the whole solver's state by global index (read_checkpoint's path):
-//      the cuts among them (the reference sections), and each point's cell (cells_around).
-// So a re-referenced run on P processes is one process's bit for bit. Memory: the whole model
-// and its state on every rank during the rebuild, as at the set-up.
+//   3. every rank measures the load of the partition on the new model as the partitioner
+//      weighs it (load_imbalance: the table entries at each part's particles); past
+//      run_options::rereference.rebalance_above (the largest part over the mean) it partitions
+//      the new model again (partition_particles, METIS with fixed options: the same parts on
+//      every rank, which all hold the same model), else it keeps the partition;
+//   4. every rank builds its part again from that solver's model on that partition (the
+//      particles keep their ids, the global indices; new owners if repartitioned, new ghosts,
+//      halo plan and point owners), the whole solver's constraints and slaves, and its masses
+//      (kept across a re-reference), and takes its values of the whole solver's state by global
+//      index (read_checkpoint's path): the cuts among them (the reference sections), and each
+//      point's cell (cells_around).
+// So a re-referenced run on P processes is one process's bit for bit, on whichever partition.
+// Memory: the whole model and its state on every rank during the rebuild, as at the set-up (and
+// the particle graph while repartitioning).
 // Included at the end of parallel/distributed_solver.hpp.
 
-#include <algorithm>
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <mpi.h>
 
 #include <rkpm/core/error.hpp>
 #include <rkpm/io/checkpoint.hpp>
@@ -45,16 +48,6 @@ namespace rkpm::parallel {
 namespace detail {
 
 inline constexpr std::string_view rebuild_configuration = "the run on several processes";
-
-// Collective: rank 0's bytes on every rank (in pieces below 2^31 bytes).
-inline void broadcast_bytes(communicator& comm, std::string& bytes) {
-  std::uint64_t size = bytes.size();
-  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm.get());
-  bytes.resize(size);
-  constexpr std::uint64_t piece = std::uint64_t{1} << 30;
-  for (std::uint64_t at = 0; at < size; at += piece)
-    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(piece, size - at)), MPI_BYTE, 0, comm.get());
-}
 
 // A solver's whole state in memory (section checksums skipped: read at once).
 template <class Solver>
@@ -104,7 +97,7 @@ void distributed_solver<Solver>::rebuild(bool step_end) {
   std::string bytes;
   comm.guarded([&] { bytes = w.close(); });
   comm.agree();
-  detail::broadcast_bytes(comm, bytes);
+  comm.broadcast(bytes);
   // 2. One process's re-reference, on every rank alike.
   std::optional<Solver> whole;
   comm.guarded([&] {
@@ -116,7 +109,7 @@ void distributed_solver<Solver>::rebuild(bool step_end) {
     else whole->rereference();
   });
   comm.agree();
-  // 3. The parts again.
+  // 3 and 4. The parts again.
   rebuild_from(*whole);
 }
 
@@ -129,6 +122,12 @@ void distributed_solver<Solver>::rebuild_from(const Solver& whole) {
     bytes = detail::state_bytes(whole);
     prob.constraints = whole.constraints().constraints();
     prob.slave_particles = whole.slave_particles();
+    // 3. The new model's load on the partition; past the bound, a new partition.
+    const discrete_model& m = whole.model();
+    if (load_imbalance(m.at_points, partition_) > options_.rereference.rebalance_above) {
+      partition_ = partition_particles(m.at_points, m.particle_count(), comm.size());
+      ++repartitions_;
+    }
   });
   comm.agree();
   solver_.reset();  // it points to the group built again below

@@ -23,7 +23,8 @@
 // the surfaces' particles and rows join the shared region, and every rank corrects them alike.
 // Re-referencing and cracks (docs/method.md sections 5.8 and 5.12) through step(), run() or
 // rereference(): every rank re-references (and cuts) a one-process solver of the whole model
-// (rereference_through) and builds its part again from it (parallel/distributed_rereference.hpp).
+// (rereference_through) and builds its part again from it, on a new partition when the load
+// has become unbalanced (parallel/distributed_rereference.hpp).
 
 #include <algorithm>
 #include <filesystem>
@@ -150,8 +151,12 @@ class distributed_solver {
   // rank, and the parts built from it: read_checkpoint's path when rereference_through was given,
   // for a re-referenced checkpoint's model.
   void read_whole(const std::filesystem::path& path, std::string_view configuration);
-  // How many times the parts were built again (a caller's layouts of the old parts are stale).
+  // How many times the parts were built again (a caller's layouts of the old parts are stale),
+  // and how many of those on a new partition (a caller's pieces of the old one are stale).
   index_t rebuilds() const { return rebuilds_; }
+  index_t repartitions() const { return repartitions_; }
+  // The partition the parts are built on: the set-up's, or the last repartition's.
+  const particle_partition& partition() const { return partition_; }
 
  private:
   // The problem as given, without its particles and cells (the model has them): a part built
@@ -247,6 +252,7 @@ class distributed_solver {
   std::optional<problem_type> problem_;
   std::function<Solver()> make_whole_;
   index_t rebuilds_ = 0;
+  index_t repartitions_ = 0;
 };
 
 }  // namespace rkpm::parallel

@@ -6,7 +6,11 @@
 //   partition_particles(graph, P)           METIS, fixed options: the same parts every time
 //   given_partition(part, P)                the caller's parts, checked (tests force a cut
 //                                           through a body, a contact or the axis with it)
-// The kernel is Lagrangian, so the graph never changes: a run partitions once, at set-up.
+//   part_loads(table, partition)            each part's work as the partition weighs it, and
+//   load_imbalance(table, partition)        the largest over the mean
+// The kernel is Lagrangian, so the graph never changes: a run partitions once, at set-up, and
+// again only after a re-reference has changed the table past a bound (rebalance_above,
+// parallel/distributed_rereference.hpp).
 // Needs METIS (Debian libmetis-dev; the opt-in target rkpm::mpi links it).
 
 #include <algorithm>
@@ -160,6 +164,31 @@ inline particle_partition partition_particles(const particle_graph& graph, index
     if (sizes[k] == 0)
       fail("METIS left part {} of {} empty ({} particles): run on fewer processes", k, parts, n);
   return {parts, std::move(stored)};
+}
+
+// Each part's load as partition_particles weighs it (the graph's vertex weights): the entries
+// of `table` (rows: points) at the particles the part owns, its share of the force loop.
+//   returns  #parts
+template <int Dim>
+std::vector<std::int64_t> part_loads(const shape_table<Dim>& table, const particle_partition& p) {
+  std::vector<std::int64_t> load(p.parts, 0);
+  for (const particle_index I : table.neighbor) {
+    if (I < 0 || I >= p.particles())
+      fail("part loads: the shape table names particle {} but the partition has {} particles; measure the "
+           "partition of this table's particles",
+           I, p.particles());
+    ++load[p.part[I]];
+  }
+  return load;
+}
+
+// The largest part's load over the mean (1: balanced; 1 for a table without entries).
+template <int Dim>
+double load_imbalance(const shape_table<Dim>& table, const particle_partition& p) {
+  const std::vector<std::int64_t> load = part_loads(table, p);
+  const double mean = static_cast<double>(std::accumulate(load.begin(), load.end(), std::int64_t{0})) /
+                      static_cast<double>(p.parts);
+  return mean > 0.0 ? static_cast<double>(*std::ranges::max_element(load)) / mean : 1.0;
 }
 
 // The METIS partition of the particles of `table`.

@@ -32,6 +32,10 @@ struct rereference_policy {
   double max_stretch = 0.0;
   // Re-reference every this many steps (1: the updated-Lagrangian limit); 0: not by count.
   index_t every_steps = 0;
+  // On several processes, after a re-reference: the particles are partitioned again when the
+  // most loaded process's work (parallel::load_imbalance) exceeds this multiple of the mean
+  // (>= 1; infinity keeps the set-up's partition). The results are the same bits either way.
+  double rebalance_above = 1.1;
 
   bool enabled() const { return max_stretch > 0.0 || every_steps > 0; }
   void validate() const {
@@ -41,6 +45,10 @@ struct rereference_policy {
            max_stretch);
     if (every_steps < 0) fail("rereference: every_steps {} must be positive, or 0 to re-reference by stretch only",
                               every_steps);
+    if (!(rebalance_above >= 1.0))
+      fail("rereference: rebalance_above {} must be at least 1 (the largest process's load over the mean), or "
+           "infinity to keep the partition",
+           rebalance_above);
   }
 };
 
