@@ -50,6 +50,8 @@ class process_steps {
  public:
   virtual ~process_steps() = default;
   virtual int processes() const = 0;
+  // How many times a re-reference partitioned the particles again (parallel/distributed_rereference.hpp).
+  virtual index_t repartitions() const { return 0; }
   // Whether the run is divided over processes (mpiexec, even with one): snapshots in pieces.
   virtual bool divided() const = 0;
 

@@ -23,7 +23,8 @@
 // the same collective calls (follow_run) and write nothing else.
 // A re-referenced run re-references through distributed_solver::run: at each re-reference every
 // rank builds its part again from a one-process solver of the whole model that it makes and
-// re-references (parallel/distributed_rereference.hpp); the mirror's gathers follow (layout()).
+// re-references (parallel/distributed_rereference.hpp); the mirror's gathers follow (layout()),
+// and the snapshot pieces follow a new partition (pieces()); summary.json counts the repartitions.
 // Cost of this form: rank 0 holds the whole model beside its part (every rank, during a re-reference).
 
 #include <algorithm>
@@ -105,11 +106,13 @@ class rank_steps final : public process_steps<Solver> {
         discrete_model m = make_model<G>(method, p.particles, p.mesh, options.max_moment_condition);
         return Solver(std::move(m), std::move(p), options, model_factory_of<G>(method));
       });
+    cells_ = cells;
     pieces_.emplace(comm_, partition, cells);
     return whole;
   }
 
   int processes() const override { return comm_.size(); }
+  index_t repartitions() const override { return run_->repartitions(); }
   bool divided() const override { return true; }
 
   // A checkpoint file (from any number of processes) or a folder of parts (from any number too).
@@ -147,8 +150,8 @@ class rank_steps final : public process_steps<Solver> {
           char wanted = !root ? 0 : reads(part.time()) | (index.empty() ? 0 : snapshot);
           MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
           if (wanted & snapshot) {
-            broadcast_from_root(index);
-            pieces_->write(part, index, snapshot_format_);
+            comm_.broadcast(index);
+            pieces().write(part, index, snapshot_format_);
           }
           if (wanted & observe_part) {
             row_reduction reduced = reduce_on_root(reduction_(part));
@@ -199,6 +202,16 @@ class rank_steps final : public process_steps<Solver> {
     return *layout_;
   }
 
+  // The snapshot pieces, made again (collectively) once a re-reference has repartitioned the particles.
+  parallel::snapshot_pieces& pieces() {
+    if (pieces_repartitions_ != run_->repartitions()) {
+      pieces_.reset();
+      pieces_.emplace(comm_, run_->partition(), cells_);
+      pieces_repartitions_ = run_->repartitions();
+    }
+    return *pieces_;
+  }
+
   // Collective: the parts' maxima (MPI_MAX) and exact sums (their limbs' MPI_SUM, exact) on rank 0.
   row_reduction reduce_on_root(row_reduction r) {
     const bool root = comm_.rank() == 0;
@@ -225,14 +238,6 @@ class rank_steps final : public process_steps<Solver> {
     return r;
   }
 
-  // Collective: rank 0's `text` on every rank.
-  void broadcast_from_root(std::string& text) {
-    unsigned long size = text.size();
-    MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm_.get());
-    text.resize(size);
-    MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm_.get());
-  }
-
   // Collective: rank 0 says whether its observer handed a checkpoint over, and its path and
   // description; every rank writes its part of it.
   void write_checkpoint_handed_over() {
@@ -241,8 +246,8 @@ class rank_steps final : public process_steps<Solver> {
     if (!due) return;
     auto [path, description] = handed_over_.value_or(std::pair<std::string, std::string>());
     handed_over_.reset();
-    broadcast_from_root(path);
-    broadcast_from_root(description);
+    comm_.broadcast(path);
+    comm_.broadcast(description);
     parallel::write_checkpoint_parts(*run_, path, configuration_, description);
   }
 
@@ -253,7 +258,9 @@ class rank_steps final : public process_steps<Solver> {
   std::function<row_reduction(const Solver&)> reduction_;
   std::optional<parallel::mpi_checkpoint_layout> layout_;  // the syncs' gathers (layout())
   index_t layout_rebuilds_ = 0;
+  io::vtu_cells cells_;  // the whole model's snapshot cells, for the pieces of a new partition
   std::optional<parallel::snapshot_pieces> pieces_;
+  index_t pieces_repartitions_ = 0;
   std::optional<std::pair<std::string, std::string>> handed_over_;  // rank 0: a checkpoint's path, description
   bool started_ = false;
 };

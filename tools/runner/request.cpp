@@ -89,6 +89,10 @@ void add_run_options(CLI::App* sub, run_request& r) {
   sub->add_option("--rereference-every", r.rereference.every_steps,
                   "rebuild the kernels in the current configuration every N steps (1: updated Lagrangian)")
       ->check(CLI::Range(index_t{1}, index_t{1'000'000'000}));
+  sub->add_option("--rebalance-above", r.rereference.rebalance_above,
+                  "on several processes, partition the particles again after a re-reference when the most loaded "
+                  "process's work exceeds this multiple of the mean (default 1.1; the results are the same bits)")
+      ->check(CLI::Range(1.0, 1e300));
   sub->add_option("--mass-scaling-factor", r.mass_scaling.factor,
                   "multiply every mass by this (>= 1) for a process slower than the waves: the step grows by its "
                   "square root (docs/method.md section 5.10); the summary reports the added mass")
@@ -229,6 +233,7 @@ void adopt_checkpoint_run(run_request& r, const nlohmann::ordered_json& descript
   if (given && (r.rereference.max_stretch != theirs.max_stretch || r.rereference.every_steps != theirs.every_steps))
     fail("--rereference-*: the checkpoint was run with other re-referencing, and a restart continues the same "
          "run (drop them)");
+  theirs.rebalance_above = r.rereference.rebalance_above;  // the processes' balance, not the run's
   r.rereference = theirs;
   // The mass scaling the run had (none when the description names none).
   mass_scaling_policy scaled;

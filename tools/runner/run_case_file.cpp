@@ -37,7 +37,11 @@ run_outcome run_case_file(const run_request& request) {
     if (!given("--correction")) r.correction = c.method.correction;
     if (!given("--quadrature")) r.quadrature = c.method.quadrature;
     if (!given("--enforcement")) r.contact = c.method.contact;
-    if (!given("--rereference-stretch") && !given("--rereference-every")) r.rereference = c.rereference;
+    if (!given("--rereference-stretch") && !given("--rereference-every")) {
+      const double rebalance_above = r.rereference.rebalance_above;  // --rebalance-above or the default
+      r.rereference = c.rereference;
+      r.rereference.rebalance_above = rebalance_above;
+    }
     if (!given("--mass-scaling-factor") && !given("--mass-scaling-dt")) r.mass_scaling = c.mass_scaling;
   }
   if (r.end_time) {

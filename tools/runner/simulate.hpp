@@ -260,6 +260,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   summary["status"] = !error.empty() ? "failed" : stopped ? "stopped" : "completed";
   if (!error.empty()) summary["error"] = error;
   add_run_summary(summary, s, observe, steps->processes());
+  if (steps->divided() && s.options().rereference.enabled()) summary["repartitions"] = steps->repartitions();
   json& results = summary["results"];  // the case's measures at the end of the run
   results = json::object();
   for (const auto& [k, v] : observe.last_measures()) results[k] = v;

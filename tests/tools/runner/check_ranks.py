@@ -9,7 +9,8 @@
         one process's .vtu is, on P processes, a .pvtu index of P pieces that together hold its
         points, arrays and cells bit for bit (pieces.py, read by meshio); summary.json records
         the processes; tools/rkpm view draws the 2 processes' last snapshot with one process's cells.
-        With --rereference-* among ARGS (the label NAME_rereferenced), the re-references too
+        With --rereference-* among ARGS (the label NAME_rereferenced), the re-references too; with
+        --rebalance-above, at least one repartition on every run of several processes
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
         block forging (moving tools, friction) checkpointed mid-run on 2 processes, in parts (a
         folder checkpoint_*.rkpmcp of part-0-of-2.rkpmcp and part-1-of-2.rkpmcp, named as one
@@ -111,6 +112,10 @@ def same(mpiexec, rkpm_run, work, name, args):
         check(summary(out).get("processes") == p, f"{label}: summary.json records {summary(out).get('processes')} "
                                                   f"processes, not {p}")
         folders[p, threads] = out
+    if "--rebalance-above" in args:  # what the bound is for: the particles partitioned again
+        for p, threads in ((2, 1), (3, 1), (2, 2)):
+            n = summary(folders[p, threads]).get("repartitions", 0)
+            check(n > 0, f"{label} on {p} processes: no repartition (summary.json: {n})")
     rows = read(os.path.join(folders[1, 1], "history.csv")).count("\n") - 1
     check(rows >= 10, f"{label}: only {rows} history rows: too short a run to compare")
     for p, threads in ((2, 1), (3, 1), (2, 2)):
