@@ -52,7 +52,7 @@ struct file_case {
     return case_file::measure(s, c, mean_tool_force);
   }
   // The rows on several processes by reduction (row_reduction.hpp, case_file/measure_parts.hpp),
-  // unless a history needs the whole model (a probe, an edge of one of several Gmsh bodies).
+  // unless a history needs the whole model (an edge of one of several Gmsh bodies).
   static bool reducible(const parameters& c) { return case_file::reducible(c); }
   template <class Solver>
   static std::vector<double> measure_maxima(const Solver& s, const parameters& c) {
@@ -63,11 +63,16 @@ struct file_case {
     return case_file::measure_sums(s, c);
   }
   template <class Solver>
+  static std::vector<nearest_value> measure_nearest(const Solver& s, const parameters& c) {
+    return case_file::measure_nearest(s, c);
+  }
+  template <class Solver>
   static std::vector<std::pair<std::string, double>> measure_from(const std::vector<double>& maxima,
-                                                                  const std::vector<exact_sum>& sums, const Solver& s,
-                                                                  const parameters& c,
+                                                                  const std::vector<exact_sum>& sums,
+                                                                  const std::vector<nearest_value>& nearest,
+                                                                  const Solver& s, const parameters& c,
                                                                   const std::vector<vec2>& mean_tool_force) {
-    return case_file::measure_from(maxima, sums, s, c, mean_tool_force);
+    return case_file::measure_from(maxima, sums, nearest, s, c, mean_tool_force);
   }
 };
 

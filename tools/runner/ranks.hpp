@@ -7,7 +7,8 @@
 //   the time and step only (most calls)   nothing: the progress line (pass)
 //   a history row, a snapshot             nothing whole: each rank takes the case's extremes
 //                                         and exact sums over its part, one MPI_MAX and one
-//                                         MPI_SUM bring them to rank 0 (row_reduction.hpp),
+//                                         MPI_SUM bring them to rank 0 (row_reduction.hpp,
+//                                         reduce_on_root.hpp; a probe's nearest value too),
 //                                         which observes its own part, whose
 //                                         time, energies and tool impulses are the run's; each
 //                                         rank writes its snapshot piece (snapshot_pieces.hpp)
@@ -27,8 +28,6 @@
 // and the snapshot pieces follow a new partition (pieces()); summary.json counts the repartitions.
 // Cost of this form: rank 0 holds the whole model beside its part (every rank, during a re-reference).
 
-#include <algorithm>
-#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -46,6 +45,7 @@
 #include <rkpm/solver/make_model.hpp>
 
 #include "process_steps.hpp"
+#include "reduce_on_root.hpp"
 #include "row_reduction.hpp"
 #include "run_record.hpp"
 #include "simulate.hpp"
@@ -154,7 +154,7 @@ class rank_steps final : public process_steps<Solver> {
             pieces().write(part, index, snapshot_format_);
           }
           if (wanted & observe_part) {
-            row_reduction reduced = reduce_on_root(reduction_(part));
+            row_reduction reduced = reduce_on_root(comm_, reduction_(part));
             comm_.guarded([&] {
               if (root) o.observe_part(part, std::move(reduced));
             });
@@ -210,32 +210,6 @@ class rank_steps final : public process_steps<Solver> {
       pieces_repartitions_ = run_->repartitions();
     }
     return *pieces_;
-  }
-
-  // Collective: the parts' maxima (MPI_MAX) and exact sums (their limbs' MPI_SUM, exact) on rank 0.
-  row_reduction reduce_on_root(row_reduction r) {
-    const bool root = comm_.rank() == 0;
-    MPI_Reduce(root ? MPI_IN_PLACE : r.maxima.data(), r.maxima.data(), static_cast<int>(r.maxima.size()), MPI_DOUBLE,
-               MPI_MAX, 0, comm_.get());
-    if (r.sums.empty()) return r;
-    constexpr int L = exact_sum::limb_count;
-    std::vector<std::int64_t> limbs(r.sums.size() * L);
-    std::vector<double> special(r.sums.size());
-    for (std::size_t k = 0; k < r.sums.size(); ++k) {
-      r.sums[k].normalize();
-      std::copy_n(r.sums[k].limbs().begin(), L, limbs.begin() + static_cast<std::ptrdiff_t>(k * L));
-      special[k] = r.sums[k].special();
-    }
-    MPI_Reduce(root ? MPI_IN_PLACE : limbs.data(), limbs.data(), static_cast<int>(limbs.size()), MPI_INT64_T, MPI_SUM, 0,
-               comm_.get());
-    MPI_Reduce(root ? MPI_IN_PLACE : special.data(), special.data(), static_cast<int>(special.size()), MPI_DOUBLE,
-               MPI_SUM, 0, comm_.get());
-    for (std::size_t k = 0; k < r.sums.size(); ++k) {
-      std::copy_n(limbs.begin() + static_cast<std::ptrdiff_t>(k * L), L, r.sums[k].limbs().begin());
-      r.sums[k].special() = special[k];
-      r.sums[k].normalize();
-    }
-    return r;
   }
 
   // Collective: rank 0 says whether its observer handed a checkpoint over, and its path and

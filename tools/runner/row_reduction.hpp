@@ -9,8 +9,11 @@
 //   Case::measure_sums(solver, parameters)  (optional) std::array<exact_sum, M> (or a vector):
 //                                 sums over the solver's own particles and own points
 //                                 (for_each_owned_point)
-//   Case::measure_from(maxima[, sums], solver, parameters, mean_tool_force)  the measures from
-//                                 them and from the totals
+//   Case::measure_nearest(solver, parameters)  (optional, with measure_sums) a vector of
+//                                 nearest_value: per value at the particle nearest a point (a
+//                                 case file's probe), the part's own particle nearest it
+//   Case::measure_from(maxima[, sums[, nearest]], solver, parameters, mean_tool_force)  the
+//                                 measures from them and from the totals
 //   Case::reducible(parameters)   (optional) whether this problem's measures all reduce (a case
 //                                 file's: case_file/measure_parts.hpp)
 // with measure() = measure_from(measure_maxima(s)[, measure_sums(s, p)], ...) come from what
@@ -18,7 +21,9 @@
 // copies hold their owners' states, and a maximum of finite values does not depend on the order
 // it is taken in; a signed zero aside: -0 and +0 compare equal, so an extreme that is exactly
 // zero may keep either sign, the cases' are not), one MPI_SUM the sums' limbs (core/exact_sum.hpp:
-// exact, so in no order either). The row has one process's bits. A case without them, or with
+// exact, so in no order either), one reduction by the smallest (distance, global index) the
+// nearest values (a choice, no arithmetic: the whole model's nearest particle, ties to the
+// smallest index, as one process's loop finds it). The row has one process's bits. A case without them, or with
 // companions, gathers the whole state for its rows (mirror_state).
 
 #include <algorithm>
@@ -26,6 +31,7 @@
 #include <concepts>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,11 +41,25 @@
 
 namespace rkpm::runner {
 
-// What a rank gives a row: its part's maxima and sums, combined over the ranks.
+// A value at the particle nearest a point, from a part: the squared distance (in the reference
+// configuration) of the part's own particle nearest it, that particle's global index and the
+// value there; none (infinite distance) from a part without one.
+struct nearest_value {
+  double distance2 = std::numeric_limits<double>::infinity();
+  double index = std::numeric_limits<double>::infinity();  // a global index: exact below 2^53
+  double value = 0.0;
+  // Nearer, or as near with a smaller index: the one process's first nearest particle.
+  bool before(const nearest_value& o) const {
+    return distance2 < o.distance2 || (distance2 == o.distance2 && index < o.index);
+  }
+};
+
+// What a rank gives a row: its part's maxima, sums and nearest values, combined over the ranks.
 struct row_reduction {
   std::vector<double> maxima;
   std::vector<exact_sum> sums;
-  bool empty() const { return maxima.empty() && sums.empty(); }
+  std::vector<nearest_value> nearest;
+  bool empty() const { return maxima.empty() && sums.empty() && nearest.empty(); }
 };
 
 // The case's maxima over the solver's part, with the parameters when it takes them.
@@ -54,6 +74,11 @@ auto measure_maxima_of(const Solver& s, const typename Case::parameters& p) {
 template <class Case, class Solver>
 concept MeasuredBySums = requires(const Solver& s, const typename Case::parameters& p) {
   { Case::measure_sums(s, p) };
+};
+
+template <class Case, class Solver>
+concept MeasuredByNearest = requires(const Solver& s, const typename Case::parameters& p) {
+  { Case::measure_nearest(s, p) };
 };
 
 template <class Case, class Solver>
@@ -87,6 +112,7 @@ std::function<row_reduction(const Solver&)> row_reduction_of(const typename Case
         const auto sums = Case::measure_sums(s, p);
         r.sums.assign(sums.begin(), sums.end());
       }
+      if constexpr (MeasuredByNearest<Case, Solver>) r.nearest = Case::measure_nearest(s, p);
       return r;
     };
   } else {
@@ -106,7 +132,10 @@ std::vector<std::pair<std::string, double>> row_measures(const row_reduction& re
       const auto m = values_from<decltype(measure_maxima_of<Case>(s, p))>(reduced.maxima);
       if constexpr (MeasuredBySums<Case, Solver>) {
         const auto sums = values_from<decltype(Case::measure_sums(s, p))>(reduced.sums);
-        return Case::measure_from(m, sums, s, p, mean_tool_force);
+        if constexpr (MeasuredByNearest<Case, Solver>)
+          return Case::measure_from(m, sums, reduced.nearest, s, p, mean_tool_force);
+        else
+          return Case::measure_from(m, sums, s, p, mean_tool_force);
       } else {
         return Case::measure_from(m, s, p, mean_tool_force);
       }

@@ -7,8 +7,9 @@
 // several bodies each measure that names a body looks at that body's particles or points only.
 //   mean_tool_force  #tools list of the tools' reactions averaged over the last interval (N
 //                    or N/m, as the runner passes them to every case's measure)
-// measure() is measure_from() of the maxima and sums measure_parts.hpp takes over the solver's
-// own particles and points, which on several processes combine over the ranks first.
+// measure() is measure_from() of the maxima, sums and nearest values measure_parts.hpp takes
+// over the solver's own particles and points, which on several processes combine over the
+// ranks first.
 
 #include <algorithm>
 #include <cmath>
@@ -129,14 +130,7 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
         } else if constexpr (std::is_same_v<H, tool_displacement_history>) {
           return s.contact().tools()[tool_index(s, h.tool)].displacement(s.time())[h.component];
         } else if constexpr (std::is_same_v<H, probe_history>) {
-          const auto& X = s.initial_positions();
-          const auto body = body_particles(s, c, h.body);
-          auto nearest = static_cast<std::size_t>(body.first);
-          for (auto I = nearest + 1; I < static_cast<std::size_t>(body.last); ++I)
-            if ((X[I] - h.point).squaredNorm() < (X[nearest] - h.point).squaredNorm()) nearest = I;
-          if (h.quantity == "position") return x[nearest][h.component];
-          const auto values = h.quantity == "velocity" ? s.particle_velocities() : s.particle_displacements();
-          return values[nearest][h.component];
+          fail("case file: a probe is measured by measure_nearest (measure_parts.hpp)");
         } else if constexpr (std::is_same_v<H, max_plastic_strain_history>) {
           const auto in_body = of_body(s, c, h.body);
           double eps_p = 0.0;
@@ -171,18 +165,19 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
 
 }  // namespace detail
 
-// The row from the maxima and sums of measure_parts.hpp (over the whole model, or combined over
-// the ranks' parts) and the totals `s` holds; a history that cannot be reduced is evaluated on
-// `s`, which is then the whole model.
+// The row from the maxima, sums and nearest values of measure_parts.hpp (over the whole model,
+// or combined over the ranks' parts) and the totals `s` holds; a history that cannot be reduced
+// is evaluated on `s`, which is then the whole model.
 template <class Solver>
 std::vector<std::pair<std::string, double>> measure_from(const std::vector<double>& maxima,
-                                                         const std::vector<exact_sum>& sums, const Solver& s,
+                                                         const std::vector<exact_sum>& sums,
+                                                         const std::vector<nearest_value>& nearest, const Solver& s,
                                                          const case_description& c,
                                                          const std::vector<vec2>& mean_tool_force) {
   std::vector<std::pair<std::string, double>> out;
   out.reserve(c.histories.size());
   std::vector<vec2> x;  // the whole model's positions, for the histories that are not reduced
-  std::size_t m = 0, k = 0;
+  std::size_t m = 0, k = 0, n = 0;
   for (const auto& h : c.histories) {
     double value = 0.0;
     if (!detail::reducible(c, h.kind)) {
@@ -192,6 +187,8 @@ std::vector<std::pair<std::string, double>> measure_from(const std::vector<doubl
       const double hi = maxima[m], lo = -maxima[m + 1];
       value = maxima[m + 2] == 0.0 ? 0.0 : e->of.starts_with("max") ? hi : e->of.starts_with("min") ? lo : hi - lo;
       m += 3;
+    } else if (std::holds_alternative<probe_history>(h.kind)) {
+      value = nearest[n++].value;
     } else if (std::holds_alternative<max_plastic_strain_history>(h.kind)) {
       value = maxima[m++];
     } else if (std::holds_alternative<max_temperature_history>(h.kind)) {
@@ -217,7 +214,7 @@ std::vector<std::pair<std::string, double>> measure_from(const std::vector<doubl
 template <class Solver>
 std::vector<std::pair<std::string, double>> measure(const Solver& s, const case_description& c,
                                                     const std::vector<vec2>& mean_tool_force) {
-  return measure_from(measure_maxima(s, c), measure_sums(s, c), s, c, mean_tool_force);
+  return measure_from(measure_maxima(s, c), measure_sums(s, c), measure_nearest(s, c), s, c, mean_tool_force);
 }
 
 }  // namespace rkpm::runner::case_file

@@ -2,9 +2,8 @@
 // A case file's histories from what each process takes over its part (tools/runner/
 // row_reduction.hpp, docs/method.md section 9.8), so that a row on several processes gathers
 // nothing:
-//   reducible(case)                     whether every history can be: not a probe (the nearest
-//                                       particle of the whole), nor an edge of a Gmsh body among
-//                                       several (its nodes are numbered within the body)
+//   reducible(case)                     whether every history can be: not an edge of a Gmsh
+//                                       body among several (its nodes are numbered within the body)
 //   measure_maxima(solver, case)        per history, in the file's order: an extent's largest
 //                                       and negated smallest coordinate and whether any particle
 //                                       was chosen; a largest plastic strain or temperature (-inf
@@ -12,7 +11,12 @@
 //   measure_sums(solver, case)          per history: a momentum's sum of m v, a volume change's
 //                                       sums of w and w det F, a failed fraction's counts; exact
 //                                       sums (core/exact_sum.hpp), so in no particular order
-//   measure_from(maxima, sums, solver, case, mean_tool_force)
+//   measure_nearest(solver, case)       per probe: the solver's own particle of the body nearest
+//                                       the point in the reference configuration (X, fixed for
+//                                       the run), its global index and the quantity there
+//                                       (nearest_value: over the ranks the nearest of all, ties
+//                                       to the smallest index, one process's choice)
+//   measure_from(maxima, sums, nearest, solver, case, mean_tool_force)
 //                                       the row from them (combined over the ranks) and the
 //                                       totals every rank holds (time, tools, penetration)
 // On one process the same functions give case_file::measure its values, so that a row has the
@@ -34,6 +38,7 @@
 #include <rkpm/io/solver_output.hpp>
 #include <rkpm/solver/fields.hpp>
 
+#include "../row_reduction.hpp"
 #include "body_edges.hpp"
 #include "case_description.hpp"
 
@@ -74,7 +79,6 @@ auto edge_test(const Solver& s, const body_description& b, const std::string& ed
 }
 
 inline bool reducible(const case_description& c, const history_kind& kind) {
-  if (std::holds_alternative<probe_history>(kind)) return false;
   if (const auto* h = std::get_if<extent_history>(&kind); h && !h->on_edge.empty() && c.bodies.size() > 1)
     for (const auto& b : c.bodies)
       if (b.name == h->body && std::holds_alternative<mesh_shape>(b.shape)) return false;
@@ -134,6 +138,44 @@ std::vector<double> measure_maxima(const Solver& s, const case_description& c) {
       });
       out.push_back(std::isnan(largest) ? detail::none : largest);
     }
+  }
+  return out;
+}
+
+template <class Solver>
+std::vector<nearest_value> measure_nearest(const Solver& s, const case_description& c) {
+  std::vector<nearest_value> out;
+  const discrete_model& m = s.model();
+  const std::vector<vec2>& X = s.initial_positions();
+  for (const history_description& h : c.histories) {
+    const auto* p = std::get_if<probe_history>(&h.kind);
+    if (!p) continue;
+    const index_t body = detail::body_index(c, p->body);
+    nearest_value best;
+    index_t chosen = -1;
+    for (index_t I = m.own.particles.begin; I < m.own.particles.end; ++I) {
+      if (!detail::in_body(s, c, body, I)) continue;
+      const nearest_value here{(X[I] - p->point).squaredNorm(), static_cast<double>(m.global_particle(I))};
+      if (here.before(best)) {
+        best = here;
+        chosen = I;
+      }
+    }
+    if (chosen >= 0) {
+      // As the solver's particle_positions(), particle_velocities() and particle_displacements()
+      // give it: the displacement since the initial reference once the model was re-referenced.
+      vec2 value;
+      if (p->quantity == "position") {
+        value = position_at_particle(m, s.coefficients(), chosen);
+      } else if (p->quantity == "velocity") {
+        value = m.at_particles.interpolate(chosen, s.coefficient_velocities());
+      } else {
+        value = m.at_particles.interpolate(chosen, s.coefficients());
+        if (&X != &m.particles.position) value += m.particles.position[chosen] - X[chosen];
+      }
+      best.value = value[p->component];
+    }
+    out.push_back(best);
   }
   return out;
 }
