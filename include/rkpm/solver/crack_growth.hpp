@@ -14,6 +14,7 @@
 //   crack_chord      the cut's segment on the cells at their current corners, lengthened past
 //                    the cell's sides so that the cuts of neighbouring cells overlap
 //   cracks_on        every cut's segment, as the crack_set the model builder reads, with its faces
+//   failed_uncut_cells  the cells of failed points not cut yet, with their normals
 //   opens_cracks     whether the failed points of some body's material cut cells
 //   crack_fragments  the pieces the cracks have made: particles joined by a point's row
 // On a rank's part of a run on several processes: solver/part_cracks.hpp.
@@ -22,6 +23,7 @@
 #include <array>
 #include <numeric>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <rkpm/concepts/material.hpp>
@@ -147,6 +149,20 @@ inline crack_set cracks_on(const background_mesh& cells, const std::vector<cell_
     faces.push_back({cut.cell, crack_crossings(cells, cut)});
   }
   return crack_set(std::move(segments), std::move(faces));
+}
+
+// The cells not cut yet of the failed points with an in-plane crack normal (a hoop crack cuts no
+// cell), each with its point's normal, in point order: explicit_solver::grow_cracks's candidates.
+template <class State>
+std::vector<std::pair<index_t, vec2>> failed_uncut_cells(const discrete_model& m, const std::vector<State>& states,
+                                                         const std::vector<cell_crack>& cuts) {
+  std::vector<std::pair<index_t, vec2>> failed;  // allocates only when a cell is to be cut
+  for (index_t q = 0; q < m.point_count(); ++q) {
+    const State& s = states[q];
+    if (!s.failed() || !(vec2(s.crack_normal).squaredNorm() > 0.0)) continue;
+    if (const index_t c = m.points.cell[q]; !is_cut(cuts, c)) failed.emplace_back(c, vec2(s.crack_normal));
+  }
+  return failed;
 }
 
 // Whether failed points may cut cells: a state that breaks (BreakingState) and a material that

@@ -51,15 +51,21 @@ inline std::vector<cell_around> cells_around_points(const background_mesh& whole
 // or-ed (a max over the ranks). A failed point whose cell the part cannot see (a corner not held,
 // or no cells_around) answers yes: the rebuild then decides on the whole model, which a wrong
 // yes costs time, not bits. `d`: the coefficients, ghosts' current.
+// `look`: whether this rank reads its states (false: none of its points can cut, as its last look
+// found, point_materials::failures_to_scan); `left_uncut`: whether it found a failed point in a
+// cell not cut.
 template <class State>
 bool part_cuts_a_cell(const discrete_model& part, const std::vector<State>& states, const std::vector<cell_crack>& cuts,
-                      const std::vector<vec2>& d) {
+                      const std::vector<vec2>& d, bool look, bool& left_uncut) {
   process_group& group = *part.own.group;
   std::vector<index_t> failed;  // allocates only when some point has failed
-  for_each_owned_point(part, [&](index_t q) {
-    const State& s = states[q];
-    if (s.failed() && vec2(s.crack_normal).squaredNorm() > 0.0 && !is_cut(cuts, part.points.cell[q])) failed.push_back(q);
-  });
+  if (look)
+    for_each_owned_point(part, [&](index_t q) {
+      const State& s = states[q];
+      if (s.failed() && vec2(s.crack_normal).squaredNorm() > 0.0 && !is_cut(cuts, part.points.cell[q]))
+        failed.push_back(q);
+    });
+  left_uncut = !failed.empty();
   if (!(group.max(failed.empty() ? 0.0 : 1.0) > 0.0)) return false;
   std::vector<vec2> x(part.particle_count(), vec2::Zero());
   for (index_t I = part.own.particles.begin; I < part.own.particles.end; ++I) x[I] = position_at_particle(part, d, I);

@@ -27,6 +27,7 @@ enum class point_failure : char { none, inverted, material };
 struct point_tile_summary {
   double narrowest = std::numeric_limits<double>::infinity();
   double plastic = 0.0;
+  index_t broken = 0;  // points whose state has failed (BreakingState: a damage at 1)
   point_failure failed = point_failure::none;
   index_t point = -1;  // the first failed point of the tile
   double det = 0.0;    // its det F

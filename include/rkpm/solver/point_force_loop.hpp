@@ -46,6 +46,7 @@ void point_materials<G, M, V>::internal_force(const discrete_model& m, const mat
       return;
     }
     if constexpr (!stress_recomputed) tau_[q] = block_matrix::of(tau);
+    if constexpr (BreakingState<state_type>) tile.broken += state_[q].failed() ? 1 : 0;
     if (reference_.active()) point_force_rereferenced(m, tile, q, F_rel, tau, S, hoop);
     else point_force(m, tile, q, F, tau, S, hoop);
   };
@@ -60,13 +61,16 @@ void point_materials<G, M, V>::internal_force(const discrete_model& m, const mat
   }
   // The tiles in order: the same sums and the same first failure whatever the thread count.
   double narrowest = std::numeric_limits<double>::infinity(), plastic = 0.0;
+  index_t broken = 0;
   for (const tile_summary& tile : tile_) {
     if (tile.failed != failure::none) report_failure(m, tile, where);
     narrowest = std::min(narrowest, tile.narrowest);
     plastic += tile.plastic;
+    broken += tile.broken;
   }
   min_stretch_ = narrowest;
   plastic_work_ = plastic;
+  failed_points_ = broken;
 }
 
 template <Geometry G, Material M, class V>
@@ -97,6 +101,8 @@ bool point_materials<G, M, V>::batch_update(const discrete_model& m, const mater
   const V weight = gather_lanes<V>([&](int k) { return m.points.weight[q0 + k]; });
   const V radius = gather_lanes<V>([&](int k) { return m.points.position[q0 + k][0]; });
   tile_summary& tile = tile_[t];
+  if constexpr (BreakingState<state_type>)
+    for (int k = 0; k < lanes; ++k) tile.broken += state_[q0 + k].failed() ? 1 : 0;
   if (rereferenced) {  // (80): F_rel with tau / det F_r, as point_force_rereferenced
     const V volume_change = gather_lanes<V>([&](int k) { return reference_.volume_change(q0 + k); });
     const basic_block_lanes<V> tau_r{tau.xx / volume_change, tau.xy / volume_change, tau.yx / volume_change,

@@ -94,6 +94,14 @@ class point_materials {
   // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
   double plastic_work() const { return plastic_work_; }
   const std::vector<state_type>& states() const { return state_; }
+  // Whether explicit_solver::grow_cracks must read the states again (a pass over every point's,
+  // a tenth of a step): a point has failed since its last look (the force loop counts them), or
+  // that look left a failed point's cell uncut; scanned() records a look.
+  bool failures_to_scan() const { return failed_points_ != scanned_failed_points_ || scan_left_uncut_; }
+  void scanned(bool left_uncut) {
+    scanned_failed_points_ = failed_points_;
+    scan_left_uncut_ = left_uncut;
+  }
   // f(q, state) on every point's state, between steps (explicit_solver::set_point_temperatures).
   template <class F>
   void update_states(F&& f) {
@@ -223,6 +231,8 @@ class point_materials {
   index_t whole_points_ = 0;            // the whole model's points (a rank's part: not its own)
   vec2 support_inverse_ = vec2::Ones();  // 1 / mean support per direction
   double min_stretch_ = 1.0, plastic_work_ = 0.0;
+  index_t failed_points_ = 0, scanned_failed_points_ = -1;  // at the last evaluation, at the last look
+  bool scan_left_uncut_ = false;
 };
 
 }  // namespace rkpm

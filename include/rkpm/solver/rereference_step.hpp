@@ -57,23 +57,25 @@ std::vector<vec2> explicit_solver<G, M, Ct>::particle_displacements() const {
   return u;
 }
 
-// The cells of the points that have failed since the last call are cut (section 5.12), each once,
-// through its centroid normal to the first failed point's crack normal. A rank's part only says,
-// alike on every rank, whether the whole model would cut one (solver/part_cracks.hpp).
+// The cells of points failed since the last call are cut (section 5.12), each once, through its
+// centroid normal to the first failed point's crack normal. A rank's part only says, alike on
+// every rank, whether the whole model would cut one (solver/part_cracks.hpp).
 template <Geometry G, Material M, Contact Ct>
 bool explicit_solver<G, M, Ct>::grow_cracks() {
-  if constexpr (!BreakingState<state_type>) {
-    return false;
-  } else {
+  if constexpr (!BreakingState<state_type>) return false;
+  else {
     if (!cracks_can_grow()) return false;  // no pass over the points (Johnson-Cook without opens_cracks)
-    if (model_.is_part()) return part_cuts_a_cell(model_, points_.states(), cracks_, d_);
-    std::vector<std::pair<index_t, vec2>> failed;  // allocates only when a cell is to be cut
-    for (index_t q = 0; q < model_.point_count(); ++q) {
-      const state_type& s = points_.states()[q];
-      if (!s.failed() || !(vec2(s.crack_normal).squaredNorm() > 0.0)) continue;  // a hoop crack cuts no cell
-      if (const index_t c = model_.points.cell[q]; !is_cut(cracks_, c)) failed.emplace_back(c, vec2(s.crack_normal));
+    const bool look = points_.failures_to_scan();  // else no cell can be cut (failures_to_scan)
+    bool left_uncut = false, cut = false;
+    if (model_.is_part()) {
+      cut = part_cuts_a_cell(model_, points_.states(), cracks_, d_, look, left_uncut);
+    } else if (look) {
+      const std::vector<std::pair<index_t, vec2>> failed = failed_uncut_cells(model_, points_.states(), cracks_);
+      cut = !failed.empty() && insert_cuts(failed, true);
+      left_uncut = std::ranges::any_of(failed, [&](const auto& f) { return !is_cut(cracks_, f.first); });
     }
-    return !failed.empty() && insert_cuts(failed, true);
+    if (look) points_.scanned(left_uncut);
+    return cut;
   }
 }
 
