@@ -151,6 +151,8 @@ class explicit_solver {
   const std::vector<vec2>& internal_force() const { return f_int_; }
   const std::vector<state_type>& point_states() const { return points_.states(); }
   double point_det_F(index_t q) const { return points_.det_F(q); }  // at the last force evaluation
+  // V_0 / w_q, point q's initial volume per unit of its weight (1 until a re-reference).
+  double point_initial_volume_per_weight(index_t q) const { return points_.initial_volume_per_weight(q); }
   // F relative to the current reference at point q (F itself until a re-reference): how far the
   // kernels have been distorted since they were built.
   mat3 point_relative_deformation_gradient(index_t q) const { return points_.relative_deformation_gradient(q); }

@@ -93,6 +93,9 @@ class point_materials {
   double min_stretch() const { return min_stretch_; }
   // Plastic work of the body, sum_q w_q (plastic work per reference volume)_q.
   double plastic_work() const { return plastic_work_; }
+  double initial_volume_per_weight(index_t q) const {  // V_0 / w_q (solver/point_reference.hpp)
+    return reference_.active() ? reference_.initial_volume_per_weight(q) : 1.0;
+  }
   const std::vector<state_type>& states() const { return state_; }
   // Whether explicit_solver::grow_cracks must read the states again (a pass over every point's,
   // a tenth of a step): a point has failed since its last look (the force loop counts them), or

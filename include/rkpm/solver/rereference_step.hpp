@@ -170,6 +170,7 @@ void explicit_solver<G, M, Ct>::rereference() {
   energy_.record();
   rereference_times_.push_back(timeline_.time);
   last_rereference_step_ = timeline_.steps;
+  for (const auto& c : companions_) c->after_rebuild(*this, {});  // e.g. heat conduction, rebound
 }
 
 // The re-referenced model in a checkpoint: the particles' current reference (positions,
@@ -236,6 +237,7 @@ void explicit_solver<G, M, Ct>::reference_sections(Archive& a, Self& s) {
     s.model_.deformed_reference = true;
     s.points_.bind(s.model_);
     s.derive_from_model(s.constraints_.constraints());
+    for (const auto& c : s.companions_) c->after_rebuild(s, {.restart = true});  // their state is read next
   } else if (count > 0) {
     a.array("reference.position", s.model_.particles.position);
     a.array("reference.support", s.model_.particles.support);

@@ -14,8 +14,8 @@
 //     add_particle_heat(model, J, frictional heat at slave J, s);             thermal/heat_sources.hpp)
 //     heat.advance(dt, F_of_point, s);   // sub-cycles itself when dt > stable_time_step()
 //     the material update reads heat.temperature_at_point(q)
-//   after a re-reference: heat.rebind(new_model, new_masses), then set_coefficients() from the
-//   temperatures at the particles; contact heat enters through s (or a heat_flux set).
+//   after a re-reference: heat.rebind(new_model, masses), the coefficients kept with their particles
+//   (heat_coupling::after_rebuild); contact heat enters through s (or a heat_flux set).
 // F is the deformation gradient at each point (a callable q -> mat3, a std::vector<mat3>, or
 // nullptr for the reference configuration), as time_step_controller::start takes it.
 // One process (a rank's part of a model is refused).
@@ -72,7 +72,7 @@ class heat_conduction {
 
   // Builds everything derived from the model and the masses again (a model rebuilt by a
   // re-reference, section 5.8, or masses changed by mass scaling) and measures the stable step;
-  // keeps the coefficients (set them afterwards if the particles' values must be carried), the
+  // keeps the coefficients (a re-reference keeps them with their particles, section 5.11), the
   // time and the ledger.
   void rebind(const discrete_model& m, const std::vector<double>& mass) {
     if (m.is_part()) fail("heat conduction runs on one process: this is one rank's part of a model");

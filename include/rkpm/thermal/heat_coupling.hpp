@@ -5,14 +5,8 @@
 // quadrature point its temperature back:
 //   plastic heat   beta times the plastic work of each point since the last exchange (98),
 //                  scattered to the coefficients through the point's row N_I(x_q);
-//   friction       at each slave in contact with a tool, -f_t . v_T (the tangential force
-//                  against the slip), a fraction to the body at the slave's row, the rest to
-//                  the tool (99);
-//   tool contact   h_c (T_tool - T^h(x_J)) A_J at each slave in contact with a tool (100), A_J the
-//                  slave's share of the body's boundary in the current configuration;
-//   body contact   h_c (T^h(x_c) - T^h(x_J)) A_J from a master body's contact point x_c to a slave
-//                  in contact with it, and the frictional heat half to each (100), so that
-//                  what one body gains the other loses;
+//   contact        friction and conduction at the tools and between bodies (99)-(100), each
+//                  step (thermal/contact_heat.hpp);
 //   temperatures   T_q = T^h(x_q) written into the point states (the material's set_temperature),
 //                  so the flow stress of the next steps follows the field (101).
 // The exchange interval is the largest whole number of mechanical steps within the conduction's
@@ -22,7 +16,9 @@
 // Attached to the solver (explicit_solver::attach, solver/step_companion.hpp), it is stepped by
 // every step, saved in the solver's checkpoints and reported in the runner's history:
 //   solver.attach(std::make_shared<thermal::heat_coupling<Solver>>(solver, bodies, betas, T0, ...));
-// One process, a Lagrangian run (no re-referencing), particles at the mesh nodes.
+// A re-reference (docs/method.md section 5.8) rebinds it (after_rebuild): the conduction on the
+// new model, the coefficients T_I kept as the velocity's are (83). One process, particles at the
+// mesh nodes.
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +27,7 @@
 #include <rkpm/core/error.hpp>
 #include <rkpm/solver/fields.hpp>
 #include <rkpm/solver/step_companion.hpp>
+#include <rkpm/thermal/contact_heat.hpp>
 #include <rkpm/thermal/heat_conduction.hpp>
 #include <rkpm/thermal/heat_sources.hpp>
 #include <rkpm/thermal/tool_heat.hpp>
@@ -51,8 +48,6 @@ class heat_coupling : public step_companion<Solver> {
         tools_(std::move(tools)),
         max_interval_(max_interval) {
     const discrete_model& m = s.model();
-    if (s.options().rereference.enabled())
-      fail("heat conduction with re-referencing is not available yet: run without \"rereference\"");
     if (!m.bodies.nodes_are_particles())
       fail("heat conduction's contact areas need the particles at the mesh nodes (make_grid_particles with "
            "make_grid_mesh, or particles from the mesh)");
@@ -68,9 +63,7 @@ class heat_coupling : public step_companion<Solver> {
     point_heat_.assign(m.point_count(), 0.0);
     rate_.assign(m.particle_count(), 0.0);
     heat_in_.assign(m.particle_count(), 0.0);
-    touching_.assign(m.particle_count(), 0);
-    area_.assign(m.particle_count(), 0.0);
-    boundary_edges_ = m.mesh.boundary_edges();
+    contact_.bind(m);
     last_time_ = s.time();
     write_temperatures(s);
   }
@@ -83,11 +76,26 @@ class heat_coupling : public step_companion<Solver> {
     last_time_ = s.time();
     ++steps_since_;
     since_ += dt;
-    contact_heat(s, dt);
+    contact_.add(s, dt, heat_, tools_, ledger_, heat_in_);
     if (steps_since_ >= interval(s) || !s.before_end()) {
       exchange(s);
       write_temperatures(s);
     }
+  }
+
+  // The model rebuilt (docs/method.md 5.8 and 5.11): the same particles and the same material
+  // points, in the same order, so the coefficients T_I stay with their particles (the heat
+  // sum_I m_I c_p T_I kept), the plastic work at the last exchange and the pending heat stay with
+  // their points and particles; the conduction and the contact areas are built on the new model.
+  // Reading a re-referenced checkpoint (remap_info::restart), the state is read next.
+  void after_rebuild(Solver& s, const remap_info&) override {
+    const discrete_model& m = s.model();
+    if (m.point_count() != static_cast<index_t>(last_work_.size()) ||
+        m.particle_count() != static_cast<index_t>(heat_in_.size()))
+      fail("heat coupling: a model rebuilt with {} points and {} particles from {} and {}", m.point_count(),
+           m.particle_count(), last_work_.size(), heat_in_.size());
+    heat_.rebind(m, s.physical_mass());
+    contact_.bind(m);
   }
 
   void save(io::checkpoint_writer& w) const override { sections(w, *this); }
@@ -165,105 +173,14 @@ class heat_coupling : public step_companion<Solver> {
       s.set_point_temperatures([&](index_t q) { return heat_.temperature_at_point(q); });
   }
 
-  // (99)-(100) of the step just taken, as heat (J) on the coefficients. A slave's area is half of
-  // each boundary edge whose two ends touch the same tool, in the current configuration, times
-  // omega (16): the body's contact length, without the sides at its corners.
-  void contact_heat(const Solver& s, double dt) {
-    if constexpr (ReportsToolPairs<typename Solver::contact_type>) tool_contact_heat(s, dt);
-    if constexpr (ReportsBodyPairs<typename Solver::contact_type>) body_contact_heat(s, dt);
-  }
-
-  // A_J of (100): half of each boundary edge whose two ends carry the same contact mark
-  // (touching_), in the current configuration, times omega (16). Only those edges' ends are
-  // interpolated: no pass over the body in the step.
-  void add_contact_areas(const Solver& s) {
-    const discrete_model& m = s.model();
-    const auto position = [&](index_t I) {
-      return vec2(m.particles.position[I] + m.at_particles.interpolate(I, s.coefficients()));
-    };
-    for (const auto& [a, b] : boundary_edges_)
-      if (touching_[a] != 0 && touching_[a] == touching_[b]) {
-        const vec2 xa = position(a), xb = position(b);
-        const double half = 0.5 * (xb - xa).norm();
-        area_[a] += half * geometry_type::weight_factor(xa);
-        area_[b] += half * geometry_type::weight_factor(xb);
-      }
-  }
-
-  void tool_contact_heat(const Solver& s, double dt) {
-    const auto pairs = s.contact().active_pairs();
-    if (pairs.empty()) return;
-    const discrete_model& m = s.model();
-    const double t = s.time();
-    const std::vector<vec2>& v = s.coefficient_velocities();
-    for (const auto& p : pairs) {
-      const index_t J = s.slave_particles()[p.slave];
-      const auto& tool = s.contact().tools()[p.tool];
-      const vec2 v_tool = (tool.displacement(t) - tool.displacement(t - dt)) / dt;
-      const vec2 rel = m.at_particles.interpolate(J, v) - v_tool;
-      const vec2 slip = rel - rel.dot(p.normal) * p.normal;
-      const double friction = std::max(0.0, -p.tangential_force.dot(slip)) * dt;
-      ledger_.friction += friction;
-      ledger_.friction_to_body += tools_.friction_to_body * friction;
-      add_particle_heat(m, J, tools_.friction_to_body * friction, heat_in_);
-      touching_[J] = p.tool + 1;
-    }
-    if (!tools_.temperature.empty()) {
-      add_contact_areas(s);
-      for (const auto& p : pairs) {
-        const index_t J = s.slave_particles()[p.slave];
-        const double T_tool = tools_.temperature[p.tool](t);
-        const double conducted = tools_.conductance * (T_tool - heat_.temperature_at_particle(J)) * area_[J] * dt;
-        ledger_.from_tools += conducted;
-        add_particle_heat(m, J, conducted, heat_in_);
-      }
-    }
-    for (const auto& p : pairs) {
-      const index_t J = s.slave_particles()[p.slave];
-      touching_[J] = 0;
-      area_[J] = 0.0;
-    }
-  }
-
-  // (99)-(100) between deformable bodies: each slave J against its master segment (a, b) at the
-  // contact point (1 - lambda) x_a + lambda x_b, the slave's area as for the tools; none at crack faces.
-  void body_contact_heat(const Solver& s, double dt) {
-    const auto pairs = s.contact().bodies().active_pairs();
-    if (pairs.empty()) return;
-    const discrete_model& m = s.model();
-    const std::vector<vec2>& v = s.coefficient_velocities();
-    const auto each = [&, n = m.particle_count()](auto&& f) {  // faces' virtual points are numbered after n
-      for (const auto& p : pairs) if (p.slave < n && p.a < n && p.b < n) f(p);
-    };
-    each([&](const auto& p) { touching_[p.slave] = -(p.pair + 1); });
-    add_contact_areas(s);
-    each([&](const auto& p) {
-      const double wa = 1.0 - p.lambda, wb = p.lambda;
-      const vec2 rel = m.at_particles.interpolate(p.slave, v) -
-                       (wa * m.at_particles.interpolate(p.a, v) + wb * m.at_particles.interpolate(p.b, v));
-      const vec2 slip = rel - rel.dot(p.normal) * p.normal;
-      const double friction = std::max(0.0, -p.tangential_force.dot(slip)) * dt;
-      const double T_master = wa * heat_.temperature_at_particle(p.a) + wb * heat_.temperature_at_particle(p.b);
-      const double conducted =
-          tools_.conductance * (T_master - heat_.temperature_at_particle(p.slave)) * area_[p.slave] * dt;
-      ledger_.friction += friction;
-      ledger_.friction_to_body += friction;  // both halves stay in the bodies
-      ledger_.between_bodies += conducted;
-      const double to_slave = 0.5 * friction + conducted, to_master = 0.5 * friction - conducted;
-      add_particle_heat(m, p.slave, to_slave, heat_in_);
-      add_particle_heat(m, p.a, wa * to_master, heat_in_);
-      add_particle_heat(m, p.b, wb * to_master, heat_in_);
-    });
-    each([&](const auto& p) { touching_[p.slave] = 0, area_[p.slave] = 0.0; });
-  }
-
   // (98) and the conduction over the interval; then the points' temperatures (101).
   void exchange(Solver& s) {
     const discrete_model& m = s.model();
     for (index_t q = 0; q < m.point_count(); ++q) {
       const double W = plastic_work(s, q);
       const double beta = beta_[beta_.size() == 1 ? 0 : static_cast<std::size_t>(m.bodies.of_point(q))];
-      point_heat_[q] = beta * (W - last_work_[q]);  // J per reference volume
+      // J per volume of the current reference: W_p is per initial volume (section 5.8)
+      point_heat_[q] = beta * (W - last_work_[q]) * s.point_initial_volume_per_weight(q);
       ledger_.plastic += point_heat_[q] * m.points.weight[q];
       last_work_[q] = W;
     }
@@ -285,11 +202,9 @@ class heat_coupling : public step_companion<Solver> {
   index_t max_interval_;
   std::vector<double> last_work_;  // W_p per point at the last exchange (J/m^3)
   std::vector<double> point_heat_;  // beta (W_p - W_p^last) per point (J/m^3)
-  std::vector<index_t> touching_;   // per particle: 1 + the tool it touches this step, or 0
-  std::vector<double> area_;        // per particle: its contact area this step
   std::vector<double> heat_in_;    // J per coefficient since the last exchange
   std::vector<double> rate_;       // W per coefficient over the interval
-  std::vector<std::array<index_t, 2>> boundary_edges_;
+  contact_heat contact_;
   coupling_ledger ledger_;
   double since_ = 0.0;      // s since the last exchange
   double last_time_ = 0.0;  // the solver's time at the last step
