@@ -69,12 +69,10 @@ class explicit_solver {
   void run() { run([](const explicit_solver&) {}); }
   // Whether the run has yet to reach options().end_time; one step toward it as run() takes them.
   bool before_end() const { return timeline_.before(options_.end_time); }
-  void step_to_end() {
-    timeline_.approach_end(options_);
-    step();
-  }
-  // A component stepped with the solver (solver/step_companion.hpp): after every step, in the
-  // checkpoints (attach it before reading one), in the runner's history and summary.
+  void step_to_end() { timeline_.approach_end(options_); step(); }
+  // A component stepped with the solver (solver/step_companion.hpp): after every step and every
+  // rebuild of the model, in the checkpoints (attach it before reading one), in the runner's
+  // history and summary.
   void attach(std::shared_ptr<step_companion<explicit_solver>> c) { companions_.push_back(std::move(c)); }
   const std::vector<std::shared_ptr<step_companion<explicit_solver>>>& companions() const { return companions_; }
   // Sets every point's temperature, T(q) in K, between steps (coupled heat conduction,
