@@ -13,12 +13,10 @@
 //   3. the coefficients: d = 0 (the displacement since the new reference); the velocity
 //      coefficients stay (83): the masses and v, so the linear momentum and the kinetic energy,
 //      are kept exactly, and a linear velocity field (a rigid motion among them) is the same
-//      field on the new kernels. (Solving for coefficients that give each particle its current
-//      velocity instead divides the highest mode by the kernel's smallest eigenvalue, about 1/9
-//      for the cubic spline at twice the spacing in 2D, at every re-reference: it blows up.)
+//      field on the new kernels (solving for each particle's velocity instead blows up, 5.8).
 //      The constraints' projection then books its change of kinetic energy as energy().remap;
 //   4. the constraint rows, the contact slaves' rows and surfaces, the stable step (a short
-//      warm-started power iteration) and f_int, a at the new reference.
+//      warm-started power iteration) and f_int, a at the new reference; then the companions'.
 // Included at the end of solver/explicit_solver.hpp.
 
 #include <algorithm>
