@@ -119,7 +119,9 @@ std::string bytes_of(const std::filesystem::path& p) {
 
 TEST_CASE("a crack grown on P ranks is one process's, bit for bit, and restarts from its checkpoint on any count") {
   communicator world;
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rkpm_test_distributed_cracks";
+  // One folder per process count: ctest runs ranks_1, _2 and _3 side by side, each removing its own.
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / fmt::format("rkpm_test_distributed_cracks_{}", world.size());
   if (world.rank() == 0) std::filesystem::create_directories(folder);
   MPI_Barrier(world.get());
   const std::filesystem::path from_ranks = folder / fmt::format("ranks_{}.rkpm", world.size()),

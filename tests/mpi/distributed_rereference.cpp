@@ -110,7 +110,9 @@ std::string bytes_of(const std::filesystem::path& p) {
 
 TEST_CASE("a run re-referenced on P ranks is one process's, bit for bit, and restarts from its checkpoint") {
   communicator world;
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rkpm_test_distributed_rereference";
+  // One folder per process count: ctest runs ranks_1, _2 and _3 side by side, each removing its own.
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / fmt::format("rkpm_test_distributed_rereference_{}", world.size());
   if (world.rank() == 0) std::filesystem::create_directories(folder);
   MPI_Barrier(world.get());
   for (const rereference_policy when : {rereference_policy{.every_steps = 10}, rereference_policy{.max_stretch = 1.05}}) {

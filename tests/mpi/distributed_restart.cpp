@@ -77,7 +77,9 @@ TEST_CASE("a checkpoint from P ranks is one process's file, and continues on P r
   const int P = world.size();
   const discrete_model m = test::bar::model();
   const particle_partition partition = partition_particles(m.at_points, m.particle_count(), P);
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rkpm_test_distributed_restart";
+  // One folder per process count: ctest runs ranks_1, _2 and _3 side by side, each removing its own.
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / fmt::format("rkpm_test_distributed_restart_{}", world.size());
   const std::filesystem::path from_ranks = folder / fmt::format("ranks_{}.rkpm", P),
                               from_one = folder / fmt::format("one_{}_{}.rkpm", P, world.rank());
   if (world.rank() == 0) std::filesystem::create_directories(folder);
@@ -137,7 +139,9 @@ TEST_CASE("a checkpoint in parts from P ranks continues on 1..P ranks and on one
   communicator world;
   const int P = world.size();
   const discrete_model m = test::bar::model();
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rkpm_test_checkpoint_parts";
+  // One folder per process count: ctest runs ranks_1, _2 and _3 side by side, each removing its own.
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / fmt::format("rkpm_test_checkpoint_parts_{}", world.size());
   const std::filesystem::path parts = folder / fmt::format("ranks_{}.rkpmcp", P);
   if (world.rank() == 0) std::filesystem::create_directories(folder);
   MPI_Barrier(world.get());
