@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <filesystem>
 #include <memory>
 #include <type_traits>
@@ -39,22 +40,35 @@ namespace {
 
 const material::elastic_constants steel{200e9, 0.3, 7800.0};
 
-}  // namespace
+using stretched_config = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
+                                material::j2_plasticity<material::hardening::linear>, contact::none>;
+constexpr double block_L = 10e-3, block_H = 6e-3, block_V = 20.0;
 
-TEST_CASE("plastic heat (98): beta times the plastic work, the mean temperature up by beta W_p / (M c_p)") {
-  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
-                     material::j2_plasticity<material::hardening::linear>, contact::none>;
-  const double L = 10e-3, H = 6e-3, V = 20.0, c_p = 460.0, beta = 0.9, T0 = 300.0;
-  problem_for<cfg> p{.particles = make_grid_particles<2>(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7), 2.0),
-                     .mesh = make_grid_mesh(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7)),
-                     .material = material::j2_plasticity<material::hardening::linear>(steel, {400e6, 2e9}),
-                     .contact = {},
-                     .initial_velocity = [&](const vec2& X) { return vec2(V * X[0] / L, 0.0); }};
+// A J2 steel block, block_L x block_H on 11 x 7 particles, every particle's x-velocity held at
+// V x / L (a homogeneous stretch) and its y-velocity y_velocity(X) (an empty function: at rest).
+template <class YVelocity>
+problem_for<stretched_config> stretched_block(YVelocity y_velocity) {
+  const double L = block_L, H = block_H, V = block_V;
+  problem_for<stretched_config> p{
+      .particles = make_grid_particles<2>(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7), 2.0),
+      .mesh = make_grid_mesh(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7)),
+      .material = material::j2_plasticity<material::hardening::linear>(steel, {400e6, 2e9}),
+      .contact = {},
+      .initial_velocity = [=](const vec2& X) { return vec2(V * X[0] / L, 0.0); }};
   for (index_t I = 0; I < p.particles.size(); ++I) {
     const double vx = V * p.particles.position[I][0] / L;
     p.constraints.push_back({I, 0, [vx](double) { return vx; }});
-    p.constraints.push_back({I, 1, {}});
+    p.constraints.push_back({I, 1, y_velocity(p.particles.position[I])});
   }
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("plastic heat (98): beta times the plastic work, the mean temperature up by beta W_p / (M c_p)") {
+  using cfg = stretched_config;
+  const double L = block_L, V = block_V, c_p = 460.0, beta = 0.9, T0 = 300.0;
+  problem_for<cfg> p = stretched_block([](const vec2&) { return std::function<double(double)>{}; });
   run_options o;
   o.end_time = 0.01 * L / V;  // 1% strain: several times the yield strain
   auto s = make_solver<cfg>(std::move(p), o);
@@ -265,19 +279,13 @@ TEST_CASE("a re-reference keeps the temperature coefficients: fields reproduced,
   // reference; a quadratic one on the sheared block changes by the approximation's error, its
   // heat sum_I C_I T_I does not. (Solving for the coefficients that give each particle its
   // temperature, or setting them to T^h(x_I), changes that heat, and fails the last check.)
-  using cfg = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
-                     material::j2_plasticity<material::hardening::linear>, contact::none>;
-  const double L = 10e-3, H = 6e-3, V = 20.0;
-  problem_for<cfg> p{.particles = make_grid_particles<2>(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7), 2.0),
-                     .mesh = make_grid_mesh(vec2(0, 0), vec2(L, H), Eigen::Vector2i(11, 7)),
-                     .material = material::j2_plasticity<material::hardening::linear>(steel, {400e6, 2e9}),
-                     .contact = {},
-                     .initial_velocity = [&](const vec2& X) { return vec2(V * X[0] / L, 0.0); }};
-  for (index_t I = 0; I < p.particles.size(); ++I) {
-    const double vx = V * p.particles.position[I][0] / L, vy = 0.5 * V * std::pow(p.particles.position[I][0] / L, 2);
-    p.constraints.push_back({I, 0, [vx](double) { return vx; }});
-    p.constraints.push_back({I, 1, [vy, shear_from = 0.06 * L / V](double t) { return t > shear_from ? vy : 0.0; }});
-  }
+  using cfg = stretched_config;
+  const double L = block_L, V = block_V;
+  // Sheared from 6% stretch on: v_y = V (x / L)^2 / 2.
+  problem_for<cfg> p = stretched_block([&](const vec2& X) {
+    return std::function<double(double)>(
+        [vy = 0.5 * V * std::pow(X[0] / L, 2), shear_from = 0.06 * L / V](double t) { return t > shear_from ? vy : 0.0; });
+  });
   run_options o;
   o.end_time = 0.2 * L / V;
   auto s = make_solver<cfg>(std::move(p), o);
