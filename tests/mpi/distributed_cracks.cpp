@@ -32,12 +32,16 @@
 #include <rkpm/solver/config.hpp>
 #include <rkpm/solver/make_solver.hpp>
 
+#include "support/bits_and_bytes.hpp"
 namespace test_mpi_distributed_cracks {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
 using namespace rkpm;
 using namespace rkpm::parallel;
 
 namespace {
+
+using rkpm::test::file_bytes;
+using rkpm::test::same_bits;
 
 using brittle = config<kernel::cubic_spline, correction::linear, quadrature::q4, geometry::plane_strain,
                        material::rankine_fracture, contact::none>;
@@ -76,11 +80,6 @@ distributed_solver<solver_type> on_ranks(communicator& world) {
   return run;
 }
 
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
 std::vector<double> totals(const solver_type& s) {
   const energy_balance& e = s.energy();
   return {s.time(), s.time_step(), e.kinetic, e.internal, e.external, e.constraint, e.plastic, e.remap, s.min_stretch()};
@@ -110,11 +109,6 @@ void same_run(communicator& world, const distributed_solver<solver_type>& run, c
   CHECK(s.rereference_times() == one.rereference_times());
 }
 
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 }  // namespace
 
 TEST_CASE("a crack grown on P ranks is one process's, bit for bit, and restarts from its checkpoint on any count") {
@@ -141,7 +135,7 @@ TEST_CASE("a crack grown on P ranks is one process's, bit for bit, and restarts 
       cuts_at_checkpoint = static_cast<index_t>(one.cracks().size());
       write_checkpoint(run, from_ranks, configuration);
       rkpm::write_checkpoint(one, from_one, configuration);
-      CHECK(bytes_of(from_ranks) == bytes_of(from_one));
+      CHECK(file_bytes(from_ranks) == file_bytes(from_one));
       again.emplace(on_ranks(world));
       read_checkpoint(*again, from_ranks, configuration);
       if (world.rank() == 0) {
@@ -178,7 +172,7 @@ TEST_CASE("a crack grown on P ranks is one process's, bit for bit, and restarts 
   // The end's state from the ranks, read into one process: the same file, the same pieces.
   write_checkpoint(run, from_ranks, configuration);
   rkpm::write_checkpoint(one, from_one, configuration);
-  CHECK(bytes_of(from_ranks) == bytes_of(from_one));
+  CHECK(file_bytes(from_ranks) == file_bytes(from_one));
   if (world.rank() == 0) {
     solver_type mirror = make_solver<brittle>(bar(), options());
     rkpm::read_checkpoint(mirror, from_ranks, configuration);

@@ -35,6 +35,7 @@
 #include <rkpm/solver/make_solver.hpp>
 
 #include "mpi/bar_impact.hpp"
+#include "support/bits_and_bytes.hpp"
 #include "support/error_message.hpp"
 
 namespace test_mpi_distributed_rereference {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -44,6 +45,8 @@ using namespace rkpm::parallel;
 using test::bar::solver_type;
 
 namespace {
+
+using rkpm::test::file_bytes;
 
 using method = config<kernel::cubic_spline, correction::linear, quadrature::q2, test::bar::geometry_type,
                       test::bar::material_type, test::bar::contact_type>;
@@ -101,11 +104,6 @@ particle_partition lopsided(index_t n, int parts) {
   return given_partition(std::move(part), parts);
 }
 
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 }  // namespace
 
 TEST_CASE("a run re-referenced on P ranks is one process's, bit for bit, and restarts from its checkpoint") {
@@ -139,7 +137,7 @@ TEST_CASE("a run re-referenced on P ranks is one process's, bit for bit, and res
                                                                 when.every_steps);
     write_checkpoint(run, from_ranks, configuration);
     write_checkpoint(one, from_one, configuration);
-    CHECK(bytes_of(from_ranks) == bytes_of(from_one));
+    CHECK(file_bytes(from_ranks) == file_bytes(from_one));
     const std::filesystem::path parts = folder / fmt::format("parts_{}_{}.rkpmcp", world.size(), when.every_steps);
     write_checkpoint_parts(run, parts, configuration);
     distributed_solver<solver_type> again = on_ranks(world, o), again_in_parts = on_ranks(world, o);

@@ -33,6 +33,7 @@
 
 #include "mpi/bar_impact.hpp"
 
+#include "support/bits_and_bytes.hpp"
 namespace test_mpi_distributed_restart {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
 
 using namespace rkpm;
@@ -41,12 +42,9 @@ using test::bar::solver_type;
 
 namespace {
 
-constexpr std::string_view configuration = "bar impact";
+using rkpm::test::file_bytes;
 
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+constexpr std::string_view configuration = "bar impact";
 
 // The particles of two solvers of the whole model whose coefficients differ in any bit.
 index_t differing_coefficients(const solver_type& a, const solver_type& b) {
@@ -96,7 +94,7 @@ TEST_CASE("a checkpoint from P ranks is one process's file, and continues on P r
     distributed_solver<solver_type> part(world, test::bar::model(), test::bar::impact(), test::bar::options(), partition);
     for (int n = 0; n < 12; ++n) part.solver().step();
     write_checkpoint(part, from_ranks, configuration);
-    CHECK(bytes_of(from_ranks) == bytes_of(from_one));
+    CHECK(file_bytes(from_ranks) == file_bytes(from_one));
   }
   {
     distributed_solver<solver_type> again(world, test::bar::model(), test::bar::impact(), test::bar::options(), partition);
@@ -193,7 +191,7 @@ TEST_CASE("a checkpoint in parts from P ranks continues on 1..P ranks and on one
   const std::filesystem::path damaged = folder / "damaged.rkpmcp", last = io::checkpoint_part_path(damaged, P - 1, P);
   if (world.rank() == 0) {
     std::filesystem::copy(parts, damaged);
-    std::string bytes = bytes_of(last);
+    std::string bytes = file_bytes(last);
     bytes[bytes.size() / 2] ^= 0x10;
     std::ofstream(last, std::ios::binary | std::ios::trunc) << bytes;
   }

@@ -26,6 +26,7 @@
 #include <rkpm/quadrature/vci.hpp>
 
 #include "mpi/bar_impact.hpp"
+#include "support/bits_and_bytes.hpp"
 #include "support/error_message.hpp"
 
 namespace test_mpi_rank_setup {  // compiled with its neighbours in one program (tests/CMakeLists.txt)
@@ -35,6 +36,8 @@ using namespace rkpm::parallel;
 
 namespace {
 
+using rkpm::test::same_bits;
+
 using test::bar::solver_type;
 
 template <class Q = quadrature::q2>
@@ -43,11 +46,6 @@ model_layout bar_layout() {
   const Eigen::Vector2i n(9, 31);
   return make_model_layout<kernel::cubic_spline, correction::linear, Q, test::bar::geometry_type>(
       make_grid_particles<2>(lo, hi, n, 2.0), make_grid_mesh(lo, hi, n));
-}
-
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
 template <int Dim>
