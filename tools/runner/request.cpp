@@ -128,7 +128,8 @@ void add_run_options(CLI::App* sub, run_request& r) {
 // The options given on the command line, which a case file or a checkpoint must not override.
 void record_given_options(const CLI::App* sub, run_request& r) {
   for (const char* name : {"--quadrature", "--kernel", "--correction", "--enforcement", "--resolution", "--set",
-                           "--rereference-stretch", "--rereference-every", "--mass-scaling-factor", "--mass-scaling-dt"})
+                           "--rereference-stretch", "--rereference-every", "--rebalance-above", "--mass-scaling-factor",
+                           "--mass-scaling-dt"})
     if (sub->count(name) > 0) r.given.emplace_back(name);
 }
 

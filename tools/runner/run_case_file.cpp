@@ -26,6 +26,8 @@ run_outcome run_case_file(const run_request& request) {
     adopt_checkpoint_run(r, d, d.at("case").get<std::string>());
     // The problem as it was started, whatever the file says now.
     c = case_file::load_case_document(d.at("parameters"), d.at("case_file").get<std::string>(), {}, r.resolution);
+    if (std::ranges::find(r.given, "--rebalance-above") == r.given.end())
+      r.rereference.rebalance_above = c.rereference.rebalance_above;
     if (r.out_dir.empty()) r.out_dir = std::filesystem::absolute(restart->file).parent_path().string();
   } else {
     case_file::override_list overrides;
@@ -37,11 +39,12 @@ run_outcome run_case_file(const run_request& request) {
     if (!given("--correction")) r.correction = c.method.correction;
     if (!given("--quadrature")) r.quadrature = c.method.quadrature;
     if (!given("--enforcement")) r.contact = c.method.contact;
-    if (!given("--rereference-stretch") && !given("--rereference-every")) {
-      const double rebalance_above = r.rereference.rebalance_above;  // --rebalance-above or the default
-      r.rereference = c.rereference;
-      r.rereference.rebalance_above = rebalance_above;
-    }
+    // The re-referencing from the file unless given, and apart from it the bound of rebalancing,
+    // from the file unless --rebalance-above is given.
+    const double rebalance_above = given("--rebalance-above") ? r.rereference.rebalance_above
+                                                              : c.rereference.rebalance_above;
+    if (!given("--rereference-stretch") && !given("--rereference-every")) r.rereference = c.rereference;
+    r.rereference.rebalance_above = rebalance_above;
     if (!given("--mass-scaling-factor") && !given("--mass-scaling-dt")) r.mass_scaling = c.mass_scaling;
   }
   if (r.end_time) {

@@ -21,11 +21,13 @@
         and the rank, the same point one process names, and summary.json says so; --ranks that
         differs from the processes started, and more processes than particles, are refused in one
         line; no rank is left waiting (every run has a timeout); too little memory for the
-        processes on the machine is one warning that counts the whole models they build
+        processes on the machine is one warning that counts the whole models they build; a case
+        file's "rebalance_above" repartitions unless --rebalance-above overrides it
 
 MPIEXEC is the launcher with its flags as one argument ("mpiexec --oversubscribe ..."). The
 reference is always the same program on one process: the division must not change a run.
 """
+import json
 import os
 import shutil
 import subprocess
@@ -125,6 +127,7 @@ def same(mpiexec, rkpm_run, work, name, args):
           f"processes of one thread and 2 of two threads; tools/rkpm view draws the pieces")
 
 
+CASES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases")
 VIEW = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools", "view", "rkpm_view.py")
 
 
@@ -233,6 +236,29 @@ def errors(mpiexec, rkpm_run, work):
           "96 particles, and rank 0 keeps a whole solver" in warnings[0] and "for 3 copies" in warnings[0],
           f"the memory warning on 2 processes: {warnings} {r.stderr[-500:]}")
     print(f"ok  one memory warning for the machine: {warnings[0][:100]}..." if warnings else "")
+
+    # A case file's "rebalance_above" is the run's bound unless --rebalance-above is given: a bound
+    # just above 1 repartitions at the re-references, the command line's 1e9 never.
+    case = json.loads(read(os.path.join(CASES, "taylor_bar_johnson_cook.json")))
+    case["bodies"][0]["shape"]["rectangle"]["particles"] = [6, 12]
+    case["end_time_s"] = 3e-6
+    case["output"] = {"snapshots": 0, "history_rows": 4}
+    case["rereference"] = {"max_stretch": 1.02, "every_steps": 10, "rebalance_above": 1.000001}
+    file = os.path.join(work, "rebalanced_bar.json")
+    with open(file, "w") as f:
+        json.dump(case, f)
+    counts = []
+    for extra in ([], ["--rebalance-above", "1e9"]):
+        out = os.path.join(work, "rebalanced" + "".join(extra))
+        r = launch(mpiexec, 2, rkpm_run, [file, "--no-plots", "--quiet", "--threads", "1", "--out", out] + extra)
+        check(r.returncode == 0, f"the rebalanced bar with {extra}: {r.stderr[-500:]}")
+        counts.append(summary(out).get("repartitions", 0) if r.returncode == 0 else None)
+    passed = bool(counts[0]) and counts[1] == 0
+    check(passed, f"the file's rebalance_above: {counts[0]} repartitions (expected some), with --rebalance-above "
+                  f"1e9: {counts[1]} (expected none)")
+    if passed:
+        print(f"ok  a case file's rebalance_above: {counts[0]} repartitions on 2 processes, none with --rebalance-above "
+              "1e9")
 
 
 def main():

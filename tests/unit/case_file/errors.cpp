@@ -224,6 +224,12 @@ TEST_CASE("re-referencing keys: read, and refused with the fix when they cannot 
   CHECK(reports(load_error(doc), "/rereference/every_steps", "give at least 1"));
   doc["rereference"] = case_json::object();
   CHECK(reports(load_error(doc), "/rereference", "give \"max_stretch\""));
+  doc["rereference"] = {{"every_steps", 50}, {"rebalance_above", 1.25}};
+  CHECK(test::load_document(doc).rereference.rebalance_above == 1.25);
+  doc["rereference"] = {{"every_steps", 50}};
+  CHECK(test::load_document(doc).rereference.rebalance_above == rereference_policy{}.rebalance_above);
+  doc["rereference"] = {{"every_steps", 50}, {"rebalance_above", 0.9}};
+  CHECK(reports(load_error(doc), "/rereference/rebalance_above", "is below 1"));
   doc["rereference"] = {{"max_strech", 1.8}};
   CHECK(contains(load_error(doc), "max_stretch"));
 }

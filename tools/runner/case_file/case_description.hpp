@@ -194,7 +194,7 @@ struct case_description {
   double friction = 0.0;
   std::optional<double> penalty_stiffness;  // N/m; needed by the penalty enforcement only
   int snapshots = 20, history_rows = 400;
-  rereference_policy rereference;  // "rereference": {"max_stretch": 1.8} or {"every_steps": 50}
+  rereference_policy rereference;  // "rereference": {"max_stretch": 1.8} or {"every_steps": 50}, "rebalance_above"
   mass_scaling_policy mass_scaling;  // "mass_scaling": {"factor": 100} or {"target_dt_s": 2e-6}
   heat_description heat;             // "heat": conduction coupled to the run (read_heat.hpp)
   std::vector<history_description> histories;

@@ -118,9 +118,10 @@ inline case_description read_case(diagnostics& d, const json& document, const st
   if (const json* h = r.find("histories")) c.histories = read_histories(d, *h, r.at("histories"));
   if (const json* k = r.find("rereference")) {
     // When the kernels are rebuilt in the current configuration (docs/method.md section 5.8).
-    object_reader rr(d, *k, r.at("rereference"), {"max_stretch", "every_steps"});
+    object_reader rr(d, *k, r.at("rereference"), {"max_stretch", "every_steps", "rebalance_above"});
     c.rereference.max_stretch = rr.number_or("max_stretch", 0.0);
     c.rereference.every_steps = rr.integer_or("every_steps", 0);
+    c.rereference.rebalance_above = rr.number_or("rebalance_above", c.rereference.rebalance_above);
     if (rr.find("max_stretch") && !(c.rereference.max_stretch > 1.0))
       d.error(rr.at("max_stretch"), fmt::format("{} is not above 1; give the principal stretch since the last "
                                                 "reference that triggers a re-reference, e.g. 1.8",
@@ -128,6 +129,10 @@ inline case_description read_case(diagnostics& d, const json& document, const st
     if (rr.find("every_steps") && c.rereference.every_steps < 1)
       d.error(rr.at("every_steps"), fmt::format("{} steps; give at least 1 (1 rebuilds every step)",
                                                 c.rereference.every_steps));
+    if (rr.find("rebalance_above") && !(c.rereference.rebalance_above >= 1.0))
+      d.error(rr.at("rebalance_above"), fmt::format("{} is below 1; give the most loaded process's work over the mean "
+                                                    "above which several processes partition again, e.g. 1.1",
+                                                    c.rereference.rebalance_above));
     if (!rr.find("max_stretch") && !rr.find("every_steps"))
       d.error(r.at("rereference"), "give \"max_stretch\" (e.g. 1.8) or \"every_steps\" (e.g. 50)");
   }
