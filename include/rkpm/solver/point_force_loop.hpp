@@ -112,8 +112,9 @@ bool point_materials<G, M, V>::batch_update(const discrete_model& m, const mater
         support_stretch(point_forces_in_lanes<G>(F_rel, tau_r, weight, radius, S, hoop), support_inverse_);
     for (int k = 0; k < lanes; ++k) {
       tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
-      tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k] *
-                      reference_.initial_volume_per_weight(q0 + k);
+      add_plastic_work(tile, q0 + k,
+                       state_[q0 + k].plastic_work * m.points.weight[q0 + k] *
+                           reference_.initial_volume_per_weight(q0 + k));
     }
     return true;
   }
@@ -121,7 +122,7 @@ bool point_materials<G, M, V>::batch_update(const discrete_model& m, const mater
       support_stretch(point_forces_in_lanes<G>(F_lanes, tau, weight, radius, S, hoop), support_inverse_);
   for (int k = 0; k < lanes; ++k) {
     tile.narrowest = std::min(tile.narrowest, std::min(static_cast<double>(stretch[k]), F[k](2, 2)));
-    tile.plastic += state_[q0 + k].plastic_work * m.points.weight[q0 + k];
+    add_plastic_work(tile, q0 + k, state_[q0 + k].plastic_work * m.points.weight[q0 + k]);
   }
   return true;
 }
