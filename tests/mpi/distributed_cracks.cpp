@@ -9,6 +9,9 @@
 // count reads the same state), and read on P ranks, and into one process, it continues to the
 // uninterrupted run's bits through the rest of the crack; the end's checkpoint read into one
 // process has the same fragments (two pieces). The run stops ten steps after the bar came apart.
+// The run's fragments (distributed_solver::fragments) are one process's throughout, and the
+// broken bar's model set up again on the ranks on three partitions counts its two pieces as one
+// process does (parallel/run_fragments.hpp).
 // The parts' decision to cut is the whole model's: as many rebuilds as one process's re-references.
 
 #include <doctest/doctest.h>
@@ -107,6 +110,23 @@ void same_run(communicator& world, const distributed_solver<solver_type>& run, c
   CHECK(same_bits(totals(s), totals(one)));
   CHECK(same_cuts(s.cracks(), one.cracks()));
   CHECK(s.rereference_times() == one.rereference_times());
+  // The run's pieces (parallel/run_fragments.hpp at the set-up, the whole solver's at a rebuild).
+  CHECK(run.fragments().pieces == one.fragments().pieces);
+  CHECK(same_bits(std::vector<double>{run.fragments().largest_mass, s.fragments().largest_mass},
+                  std::vector<double>{one.fragments().largest_mass, one.fragments().largest_mass}));
+}
+
+// The pieces of `model` counted over the ranks on `partition` (a distributed solver's set-up:
+// parallel/run_fragments.hpp) equal one process's, the largest piece's mass to the bit (collective).
+void same_pieces(communicator& world, const discrete_model& model, const particle_partition& partition,
+                 const std::string& name) {
+  CAPTURE(name);
+  const solver_type one(model, bar(), options());
+  const distributed_solver<solver_type> run(world, model, bar(), options(), partition);
+  CHECK(one.fragments().pieces == 2);
+  CHECK(run.fragments().pieces == one.fragments().pieces);
+  CHECK(same_bits(std::vector<double>{run.fragments().largest_mass},
+                  std::vector<double>{one.fragments().largest_mass}));
 }
 
 }  // namespace
@@ -179,6 +199,19 @@ TEST_CASE("a crack grown on P ranks is one process's, bit for bit, and restarts 
     CHECK(mirror.fragments().pieces == one.fragments().pieces);
     CHECK(mirror.fragments().largest_mass == one.fragments().largest_mass);
   }
+  // The broken bar's model set up on the ranks: its two pieces counted over the ranks, on METIS's
+  // partition, on columns of particles dealt to the ranks in turn (every column a cut, so a label
+  // crosses cuts over several rounds) and on the columns dealt from the right.
+  const discrete_model& broken = one.model();
+  std::vector<stored_index> columns(broken.particle_count()), from_right(broken.particle_count());
+  for (index_t I = 0; I < broken.particle_count(); ++I) {
+    const auto column = static_cast<index_t>(std::lround(broken.particles.position[I][0] / h));
+    columns[I] = static_cast<stored_index>(column % world.size());
+    from_right[I] = static_cast<stored_index>((std::lround(L / h) - column) % world.size());
+  }
+  same_pieces(world, broken, partition_particles(broken.at_points, broken.particle_count(), world.size()), "METIS");
+  same_pieces(world, broken, given_partition(columns, world.size()), "columns dealt");
+  same_pieces(world, broken, given_partition(from_right, world.size()), "columns dealt from the right");
   std::filesystem::remove(from_one);
   MPI_Barrier(world.get());
   if (world.rank() == 0) std::filesystem::remove_all(folder);

@@ -23,7 +23,7 @@
 //      halo plan and point owners), the whole solver's constraints and slaves, and its masses
 //      (kept across a re-reference), and takes its values of the whole solver's state by global
 //      index (read_checkpoint's path): the cuts among them (the reference sections), and each
-//      point's cell (cells_around).
+//      point's cell (cells_around); and, when cracks can grow, the whole solver's pieces.
 // So a re-referenced run on P processes is one process's bit for bit, on whichever partition.
 // Memory: the whole model and its state on every rank during the rebuild, as at the set-up (and
 // the particle graph while repartitioning).
@@ -153,6 +153,7 @@ void distributed_solver<Solver>::rebuild_from(const Solver& whole) {
     load_checkpoint(*solver_, r);
   });
   comm.agree();
+  count_fragments(comm, &whole);
 }
 
 template <class Solver>

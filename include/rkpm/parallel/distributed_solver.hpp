@@ -24,7 +24,8 @@
 // Re-referencing and cracks (docs/method.md sections 5.8 and 5.12) through step(), run() or
 // rereference(): every rank re-references (and cuts) a one-process solver of the whole model
 // (rereference_through) and builds its part again from it, on a new partition when the load
-// has become unbalanced (parallel/distributed_rereference.hpp).
+// has become unbalanced (parallel/distributed_rereference.hpp). When cracks can grow, the run's
+// pieces (fragments()) are counted at the set-up and at each rebuild, one process's on every rank.
 
 #include <algorithm>
 #include <filesystem>
@@ -42,6 +43,7 @@
 #include <rkpm/parallel/mpi_process_group.hpp>
 #include <rkpm/parallel/partition.hpp>
 #include <rkpm/parallel/rank_setup.hpp>
+#include <rkpm/parallel/run_fragments.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/part_cracks.hpp>
@@ -91,6 +93,7 @@ class distributed_solver {
       : partition_(partition), options_(options) {
     keep(prob);
     build(comm, std::move(whole), std::move(prob), true);
+    count_fragments(comm);
   }
 
   // Collective. The set-up in parts (parallel/rank_setup.hpp): from the layout of the whole model,
@@ -112,6 +115,7 @@ class distributed_solver {
     layout = model_layout{};
     group_->forward(r.local.lumped_volume);  // the ghosts' volumes, from their owners
     finish(comm, std::move(r), std::move(prob), options);
+    count_fragments(comm);
   }
 
   Solver& solver() { return *solver_; }
@@ -157,6 +161,8 @@ class distributed_solver {
   index_t repartitions() const { return repartitions_; }
   // The partition the parts are built on: the set-up's, or the last repartition's.
   const particle_partition& partition() const { return partition_; }
+  // The run's pieces (solver().fragments() too), one process's on every rank, when cracks can grow.
+  fragment_count fragments() const { return solver_->fragments(); }
 
  private:
   // The problem as given, without its particles and cells (the model has them): a part built
@@ -191,6 +197,18 @@ class distributed_solver {
     group_ = std::make_unique<mpi_process_group>(comm, partition_, r.plan, whole.at_points);
     whole = discrete_model{};
     finish(comm, std::move(r), std::move(prob), options_);
+  }
+
+  // Collective, when cracks can grow: the run's pieces given to the part (explicit_solver::fragments).
+  // They change only when the model is rebuilt. A rebuild's whole solver counts them alone, as one
+  // process does; at the set-up (from a layout too) the ranks count them (parallel/run_fragments.hpp).
+  void count_fragments(communicator& comm, const Solver* whole = nullptr) {
+    if (!solver_->cracks_can_grow()) return;
+    comm.guarded([&] {
+      if (whole) solver_->set_run_fragments(whole->fragments());
+    });
+    comm.agree();
+    if (!whole) solver_->set_run_fragments(part_fragments(comm, solver_->model(), solver_->physical_mass()));
   }
 
   // Collective: the parts built again from a whole solver that ends the step as one process does

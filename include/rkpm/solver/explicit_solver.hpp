@@ -82,8 +82,7 @@ class explicit_solver {
     if (!between_steps()) fail("set_point_temperatures() between steps only");
     points_.update_states([&](index_t q, state_type& s) { materials_.at_point(q).set_temperature(s, T(q)); });
   }
-  // Checkpoint sections (io/checkpoint.hpp; solver/checkpoint.hpp writes and reads the files),
-  // whole only between steps: between_steps() is false after an error thrown inside step().
+  // Checkpoint sections (solver/checkpoint.hpp), whole only between steps (not after an error in step()).
   void save(io::checkpoint_writer& w) const { sections(w, *this); }
   void load(io::checkpoint_reader& r) {
     sections(r, *this);
@@ -93,9 +92,8 @@ class explicit_solver {
 
   // ---- the model's lifecycle (docs/method.md section 5.8) ------------------------------
   // Rebuilds the model in the current configuration through model_builder(), carrying the state
-  // (solver/rereference_step.hpp): step() calls it when options().rereference says so or a crack
-  // grows; a caller may, between steps. On a rank's part step() marks it pending instead, for
-  // parallel::distributed_solver, which rebuilds every part from a whole solver's end_step().
+  // (solver/rereference_step.hpp): step() calls it when options().rereference says so or a crack grows;
+  // a caller may, between steps. A rank's part marks it pending (parallel::distributed_solver does it).
   void rereference();
   // What step() ends with: new cracks cut and the model rebuilt if due, else the stable step updated.
   void end_step();
@@ -106,10 +104,12 @@ class explicit_solver {
   const std::vector<double>& rereference_times() const { return rereference_times_; }  // s
   // Cuts cells (a notch) as a crack cuts them (113), each normal to its n, and rebuilds the model.
   void cut_cells(const std::vector<std::pair<index_t, vec2>>& cells_and_normals);
-  // The cells cut by cracks (solver/crack_growth.hpp), and the pieces (a body each until it breaks).
+  // The cells cut by cracks (solver/crack_growth.hpp), and the pieces (a body each until it breaks):
+  // on a rank's part the run's, which parallel::distributed_solver counts (set_run_fragments).
   const std::vector<cell_crack>& cracks() const { return cracks_; }
   bool cracks_can_grow() const { return opens_cracks(materials_); }  // whether failed points cut cells
-  fragment_count fragments() const { return crack_fragments(model_, physical_mass()); }
+  fragment_count fragments() const;
+  void set_run_fragments(fragment_count pieces) { run_fragments_ = pieces; }
   // The particles' initial reference positions X_I (the model's until the first re-reference).
   const std::vector<vec2>& initial_positions() const {
     return initial_position_.empty() ? model_.particles.position : initial_position_;
@@ -137,8 +137,7 @@ class explicit_solver {
   // Each tool's impulse since t = 0 (N s): the mean force over [t1, t2] is the impulse's change / (t2 - t1).
   const std::vector<vec2>& tool_impulses() const { return contact_.impulse; }
   double max_penetration() const { return contact_.max_penetration; }
-  // The lumped masses the step moves (scaled, with mass scaling: options().mass_scaling), and
-  // the physical ones (the same vector without scaling).
+  // The lumped masses the step moves (scaled: options().mass_scaling), and the physical ones (the same without).
   const std::vector<double>& mass() const { return mass_; }
   const std::vector<double>& physical_mass() const { return physical_mass_.empty() ? mass_ : physical_mass_; }
   // The mass scaling factor (84) (1 without), and the kinetic to internal energy ratio (85) so far.
@@ -239,6 +238,7 @@ class explicit_solver {
   bool rereference_pending_ = false;  // on a rank's part: due, for the distributed solver
   std::vector<vec2> initial_position_;  // empty until the first re-reference
   std::vector<cell_crack> cracks_;
+  std::optional<fragment_count> run_fragments_;  // on a rank's part: the whole run's pieces
   std::vector<std::shared_ptr<step_companion<explicit_solver>>> companions_;
 };
 

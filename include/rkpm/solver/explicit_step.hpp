@@ -8,7 +8,8 @@
 //   derive_from_model  what the step reads of the model besides the point states (the
 //                      constraint rows, the contact slaves, the particle sums): the one path the
 //                      constructor, a re-reference and a restart take (solver/rereference_step.hpp);
-//   body()             the model as the contact sees it (with the faces of its cracks).
+//   body()             the model as the contact sees it (with the faces of its cracks);
+//   fragments()        the pieces: the model's, or on a rank's part the run's.
 // Out of the class, so that a program may compile them once (solver/solver_instances.hpp).
 // Included at the end of solver/explicit_solver.hpp.
 
@@ -131,6 +132,16 @@ void explicit_solver<G, M, Ct>::end_step() {
   } else if (timeline_.steps % options_.time_step_update_interval == 0)
     timeline_.dt = clock_.update(model_, materials_.moduli(), mass_, points_.deformation_gradients(),
                           points_.min_stretch(), options_, timeline_.time, timeline_.steps);
+}
+
+// One process: the model's pieces (crack_fragments). A rank's part cannot see the others' links:
+// parallel::distributed_solver counts the run's pieces at each build and gives them to it.
+template <Geometry G, Material M, Contact Ct>
+fragment_count explicit_solver<G, M, Ct>::fragments() const {
+  if (!model_.is_part()) return crack_fragments(model_, physical_mass());
+  if (!run_fragments_)
+    fail("fragments() of a rank's part: parallel::distributed_solver counts the run's pieces when cracks can grow");
+  return *run_fragments_;
 }
 
 // Mass scaling (84): every mass times one factor, given or found from the unscaled step (a power
