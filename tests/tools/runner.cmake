@@ -57,9 +57,9 @@ endforeach()
 # distributed_rereference.hpp), rod_on_rod, the plate_impact case file (two bodies; its probes'
 # nearest particles chosen by reduction, reduce_on_root.hpp) and the Johnson-Cook Taylor bar's
 # (its rows by reduction: extents on an edge, a velocity probe, largest plastic strain and
-# temperature, momentum, volume change; case_file/measure_parts.hpp) each on 1, 2 and 3
-# processes give the same files byte for byte, and the
-# same snapshots in pieces (.pvtu, put together by meshio: runner/pieces.py); a checkpoint from
+# temperature, momentum, volume change; case_file/measure_parts.hpp) and the brittle bar (cracks:
+# its fragments, parallel/run_fragments.hpp) each on 1, 2 and 3 processes give the same files byte
+# for byte, and the same snapshots in pieces (.pvtu, put together by meshio: runner/pieces.py); a checkpoint from
 # 2 processes continues on 1 and on 3 to the uninterrupted run; a failure stops every rank with
 # one line. One thread per process, oversubscribed and unbound (rkpm_mpiexec_flags,
 # tests/CMakeLists.txt).
@@ -76,6 +76,9 @@ if(TARGET rkpm::mpi)
       "wheel_forging|--end-time|2e-5"
       "rod_on_rod|--end-time|2e-6"
       "${PROJECT_SOURCE_DIR}/cases/plate_impact/plate_impact.json|--end-time|2e-6"
+      # (a Rankine bar broken in two: cuts through the parts' rebuilds, the run's fragments in the rows
+      # and summary, the snapshots whole with their crack faces)
+      "${PROJECT_SOURCE_DIR}/cases/brittle_bar.json"
       # (its height, length and failed fraction replaced by a probe of the velocity by the impact face
       # and sums over a part: momentum and volume change)
       "${PROJECT_SOURCE_DIR}/cases/taylor_bar_johnson_cook.json|--end-time|3e-6|--set|/histories/1={\"name\":\"foot_velocity_m_s\",\"probe\":{\"body\":\"bar\",\"point_m\":[0.001,0.001],\"quantity\":\"velocity\",\"component\":\"y\"}}|--set|/histories/2={\"name\":\"momentum_y_N_s\",\"momentum\":{\"body\":\"bar\",\"component\":\"y\"}}|--set|/histories/5={\"name\":\"volume_change\",\"volume_change\":{\"body\":\"bar\"}}")

@@ -52,8 +52,10 @@ class process_steps {
   virtual int processes() const = 0;
   // How many times a re-reference partitioned the particles again (parallel/distributed_rereference.hpp).
   virtual index_t repartitions() const { return 0; }
-  // Whether the run is divided over processes (mpiexec, even with one): snapshots in pieces.
+  // Whether the run is divided over processes (mpiexec, even with one): snapshots in pieces,
+  // unless the pieces cannot hold them (then rank 0 writes them whole from `whole`).
   virtual bool divided() const = 0;
+  virtual bool snapshots_in_pieces() const { return divided(); }
 
   // Every rank reads the checkpoint, then `whole` takes the state.
   virtual void read_checkpoint(const std::filesystem::path& file, Solver* whole) = 0;

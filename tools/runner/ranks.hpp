@@ -11,7 +11,8 @@
 //                                         reduce_on_root.hpp; a probe's nearest value too),
 //                                         which observes its own part, whose
 //                                         time, energies and tool impulses are the run's; each
-//                                         rank writes its snapshot piece (snapshot_pieces.hpp)
+//                                         rank writes its snapshot piece (snapshot_pieces.hpp;
+//                                         whole on rank 0, as below, when cracks can grow)
 //   a checkpoint                          nothing: rank 0's observer hands its path and
 //                                         description over, and each rank writes its part
 //                                         (parallel/checkpoint_parts.hpp), a folder of P files
@@ -26,6 +27,8 @@
 // rank builds its part again from a one-process solver of the whole model that it makes and
 // re-references (parallel/distributed_rereference.hpp); the mirror's gathers follow (layout()),
 // and the snapshot pieces follow a new partition (pieces()); summary.json counts the repartitions.
+// Cracks cut cells through the same path; the history's and summary's fragments are the run's
+// (distributed_solver::fragments, the parts' fragments()).
 // Cost of this form: rank 0 holds the whole model beside its part (every rank, during a re-reference).
 
 #include <functional>
@@ -90,17 +93,10 @@ class rank_steps final : public process_steps<Solver> {
         parallel::partition_particles(model.at_points, model.particle_count(), comm_.size());
     const io::vtu_cells cells = io::snapshot_cells(model);
     run_.emplace(comm_, std::move(model), std::move(*prob), options, partition);
-    // The library grows cracks on several processes (docs/method.md 9.8), but a part's fragments
-    // are its own pieces: the history and summary would not have the run's.
-    comm_.guarded([&] {
-      if (run_->solver().cracks_can_grow())
-        fail("cracks with --ranks: the fragments in history.csv are not reduced over the processes yet; run on one "
-             "process");
-    });
-    comm_.agree();
-    // A re-reference (and the read of a re-referenced checkpoint) goes through the whole model's
-    // one-process solver on every rank (parallel/distributed_rereference.hpp), made as rank 0's.
-    if (options.rereference.enabled())
+    // A re-reference, a crack's cut (and the read of a re-referenced checkpoint) go through the
+    // whole model's one-process solver on every rank (parallel/distributed_rereference.hpp), made
+    // as rank 0's; the parts' fragments() are then the run's, counted at each rebuild.
+    if (options.rereference.enabled() || run_->solver().cracks_can_grow())
       run_->rereference_through([make_problem, method, options] {
         problem_type p = make_problem();
         discrete_model m = make_model<G>(method, p.particles, p.mesh, options.max_moment_condition);
@@ -112,6 +108,9 @@ class rank_steps final : public process_steps<Solver> {
   }
 
   int processes() const override { return comm_.size(); }
+  // The pieces hold no crack faces or failed points (io/crack_snapshot.hpp): when cracks can
+  // grow, rank 0 writes each snapshot whole, from the whole solver, as one process does.
+  bool snapshots_in_pieces() const override { return !run_->solver().cracks_can_grow(); }
   index_t repartitions() const override { return run_->repartitions(); }
   bool divided() const override { return true; }
 
@@ -147,7 +146,7 @@ class rank_steps final : public process_steps<Solver> {
     run_->run(
         [&](const Solver& part) {
           std::string index = root ? o.snapshot(part.time(), end).string() : std::string();
-          char wanted = !root ? 0 : reads(part.time()) | (index.empty() ? 0 : snapshot);
+          char wanted = !root ? 0 : reads(part.time()) | (index.empty() || !snapshots_in_pieces() ? 0 : snapshot);
           MPI_Bcast(&wanted, 1, MPI_CHAR, 0, comm_.get());
           if (wanted & snapshot) {
             comm_.broadcast(index);

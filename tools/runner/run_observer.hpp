@@ -90,7 +90,7 @@ class run_observer {
       record_.next_history += record_.history_interval;
     }
     if (snapshot_at(t, last)) {
-      if (divided_) {  // written by the ranks before this call (ranks.hpp)
+      if (in_pieces()) {  // written by the ranks before this call (ranks.hpp)
         const std::string index = vtk_.next_file(".pvtu");
         vtk_.add(t, index);
         record_.snapshots.emplace_back(t, index);
@@ -137,7 +137,7 @@ class run_observer {
   // the .pvtu index of a snapshot the ranks write in pieces (divide).
   std::filesystem::path snapshot_due(double t, double end_time) const {
     if (skip_next_ || !snapshot_at(t, is_last(t, end_time))) return {};
-    return dir_ / vtk_.next_file(divided_ ? ".pvtu" : ".vtu");
+    return dir_ / vtk_.next_file(in_pieces() ? ".pvtu" : ".vtu");
   }
   // A run on several processes, stepped by `steps` (ranks.hpp): each rank writes its piece of
   // every snapshot before the call that is due to write it (parallel/snapshot_pieces.hpp), which
@@ -192,11 +192,13 @@ class run_observer {
   bool snapshot_at(double t, bool last) const { return last || t >= record_.next_snapshot; }
   bool checkpoint_due(double t) const { return record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint; }
   // Whether the call reads more than a row's measures and a snapshot's index: the last call, a
-  // figure shape, a checkpoint (unless written in parts), an interrupt, a caller's hook.
+  // figure shape, a checkpoint (unless written in parts), an interrupt, a caller's hook, a
+  // snapshot that several processes cannot write in pieces.
   bool reads_model(double t, bool last) const {
     return last || figures_.due(t, last) || (!divided_ && checkpoint_due(t)) || pending_interrupt().load() != 0 ||
-           static_cast<bool>(hooks_.observe);
+           static_cast<bool>(hooks_.observe) || (divided_ && !in_pieces() && snapshot_at(t, last));
   }
+  bool in_pieces() const { return divided_ && divided_->snapshots_in_pieces(); }  // the snapshots
 
   // The points, the cells, the vectors and the stress made piecewise as they are written, the
   // other arrays computed one at a time: at 10^6 particles the cells would hold 41 MB through

@@ -10,7 +10,11 @@
         points, arrays and cells bit for bit (pieces.py, read by meshio); summary.json records
         the processes; tools/rkpm view draws the 2 processes' last snapshot with one process's cells.
         With --rereference-* among ARGS (the label NAME_rereferenced), the re-references too; with
-        --rebalance-above, at least one repartition on every run of several processes
+        --rebalance-above, at least one repartition on every run of several processes. A case whose
+        cracks can grow (summary.json's fragments) must break (history.csv's fragments from 1 to
+        more, each over two rows or more), and its fragments, largest fragment's mass and state
+        extremes (the failed fraction) are compared too; its snapshots are written whole (.vtu,
+        with the crack faces) by rank 0, and compared byte for byte
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
         block forging (moving tools, friction) checkpointed mid-run on 2 processes, in parts (a
         folder checkpoint_*.rkpmcp of part-0-of-2.rkpmcp and part-1-of-2.rkpmcp, named as one
@@ -27,6 +31,7 @@
 MPIEXEC is the launcher with its flags as one argument ("mpiexec --oversubscribe ..."). The
 reference is always the same program on one process: the division must not change a run.
 """
+import csv
 import json
 import os
 import shutil
@@ -64,9 +69,10 @@ def same_snapshot(reference, other, label):
         check(False, f"{label}: {problem}")
 
 
-def in_pieces(vtu, processes):
-    """The files of one process's snapshot X.vtu written by `processes`: X.pvtu and its pieces."""
-    if processes == 1:
+def in_pieces(vtu, processes, cracks=False):
+    """The files of one process's snapshot X.vtu written by `processes`: X.pvtu and its pieces; X.vtu
+    itself from one process, or when cracks can grow (rank 0 writes it whole, with the crack faces)."""
+    if processes == 1 or cracks:
         return [vtu]
     stem = vtu[:-len(".vtu")]
     return [stem + ".pvtu"] + [f"{stem}_{r}.vtu" for r in range(processes)]
@@ -75,8 +81,10 @@ def in_pieces(vtu, processes):
 def same_outputs(reference, other, label):
     a, b = summary(reference), summary(other)
     for key in ["status", "results", "energy", "steps", "dt_min_s", "dt_max_s", "end_time_s", "particles",
-                "quadrature_points", "parameters", "rereferences", "rereference_times_s"]:
+                "quadrature_points", "parameters", "rereferences", "rereference_times_s", "fragments",
+                "largest_fragment_mass_kg", "points"]:
         check(a.get(key) == b.get(key), f"{label}: summary '{key}' differs: {a.get(key)} vs {b.get(key)}")
+    cracks = "fragments" in a  # cracks can grow: the snapshots whole
     files = outputs(reference)
     check(files == outputs(other), f"{label}: other files: {files} vs {outputs(other)}")
     check(any(f.endswith(".pvd") for f in files) and "history.csv" in files, f"{label}: no snapshots or history")
@@ -84,15 +92,15 @@ def same_outputs(reference, other, label):
     for f in files:
         if f in outputs(other):  # a .pvd names the indexes of the snapshots in pieces
             expected = read(os.path.join(reference, f), "rb")
-            if f.endswith(".pvd") and processes > 1:
+            if f.endswith(".pvd") and processes > 1 and not cracks:
                 expected = expected.replace(b'.vtu"/>', b'.pvtu"/>')
             check(expected == read(os.path.join(other, f), "rb"), f"{label}: {f} differs from one process's")
     snapshots = snapshot_files(reference)
-    expected = sorted(x for f in snapshots for x in in_pieces(f, processes))
+    expected = sorted(x for f in snapshots for x in in_pieces(f, processes, cracks))
     check(snapshot_files(other) == expected, f"{label}: snapshot files {snapshot_files(other)[:8]}..., not "
                                              f"{expected[:8]}...")
     for f in snapshots:
-        other_file = os.path.join(other, in_pieces(f, processes)[0])
+        other_file = os.path.join(other, in_pieces(f, processes, cracks)[0])
         if os.path.exists(other_file):
             same_snapshot(os.path.join(reference, f), other_file, label)
 
@@ -120,6 +128,12 @@ def same(mpiexec, rkpm_run, work, name, args):
             check(n > 0, f"{label} on {p} processes: no repartition (summary.json: {n})")
     rows = read(os.path.join(folders[1, 1], "history.csv")).count("\n") - 1
     check(rows >= 10, f"{label}: only {rows} history rows: too short a run to compare")
+    if "fragments" in summary(folders[1, 1]):  # cracks can grow: what the run is for, a body broken
+        with open(os.path.join(folders[1, 1], "history.csv")) as f:
+            pieces = [float(row["fragments"]) for row in csv.DictReader(f)]
+        check(pieces[0] == 1 and summary(folders[1, 1])["fragments"] > 1 and pieces.count(1) >= 2 and
+              pieces.count(pieces[-1]) >= 2, f"{label}: the fragments over time {pieces}: the rows do not see one "
+                                             f"piece, then several")
     for p, threads in ((2, 1), (3, 1), (2, 2)):
         same_outputs(folders[1, 1], folders[p, threads], f"{label} on {p} processes of {threads} thread(s)")
     view(folders[1, 1], folders[2, 1], label)
