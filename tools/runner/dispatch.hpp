@@ -29,7 +29,7 @@
 #include "methods.hpp"
 #include "outcome.hpp"
 #ifdef RKPM_RUNNER_MPI
-#include "ranks.hpp"
+#include "run_on_ranks.hpp"
 #endif
 #include "request.hpp"
 #include "run_record.hpp"
@@ -56,20 +56,24 @@ run_outcome run_with(const run_request& r, const typename Case::parameters& p, c
   options.rereference = r.rereference;
   options.mass_scaling = r.mass_scaling;
   const rkpm::method_names method{r.kernel, r.correction, r.quadrature};
+  // One warning per machine; on several processes once the set-up is chosen (ranks.hpp).
+  const std::function<void(const problem<M, Ct>&, bool)> warn = [&](const problem<M, Ct>& pr, bool in_parts) {
+    if (r.machine_rank != 0) return;
+    warn_if_too_large(pr.particles.size(),
+                      quadrature_point_count(r.quadrature, pr.mesh.cells(), static_cast<index_t>(pr.mesh.node.size())),
+                      {r.processes > 1, r.processes_here, r.with_rank_0, r.processes, in_parts});
+  };
   const std::function<problem<M, Ct>()> make_problem = [&] {
     problem<M, Ct> pr = Case::template build<Ct>(p, r.resolution);
     pr.contact.set_enforcement(contact::enforcement::chosen::named(r.contact, penalty_stiffness<Case>(p)));
-    if (r.machine_rank == 0)  // one warning per machine
-      warn_if_too_large(pr.particles.size(),
-                        quadrature_point_count(r.quadrature, pr.mesh.cells(), static_cast<index_t>(pr.mesh.node.size())),
-                        {r.processes > 1, r.processes_here, r.with_rank_0});
+    if (r.processes == 1) warn(pr, false);
     return pr;
   };
   const run_policies policies{r.kernel, r.correction, r.quadrature, G::name, r.contact,
                               method.configuration_name<G, M, Ct>()};
   if (r.processes > 1) {
 #ifdef RKPM_RUNNER_MPI
-    return run_on_ranks<Case, Solver>(r, p, policies, make_problem, method, options, restart);
+    return run_on_ranks<Case, Solver>(r, p, policies, make_problem, method, options, restart, warn);
 #else
     fail("mpiexec started {} processes, but this rkpm_run was built without MPI, so each would run the whole case "
          "alone: apt-get install libopenmpi-dev openmpi-bin libmetis-dev, then build it again",

@@ -60,12 +60,19 @@ class figure_recorder {
   // Whether observe() at time t would record a shape (last: the run's end).
   bool due(double t, bool last) const { return next_ < times_.size() && (t >= times_[next_].time * (1.0 - 1e-9) || last); }
 
+  // `x` and `mesh`: every particle's position and the whole mesh, when `s` is one process's
+  // part of a run set up in parts (ranks.hpp), else null (the solver's own).
   template <class Solver>
-  void observe(const Solver& s) {
+  void observe(const Solver& s, const std::vector<vec2>* x = nullptr, const background_mesh* mesh = nullptr) {
     const bool last = s.time() >= s.options().end_time * (1.0 - 1e-12);
     while (due(s.time(), last)) {
       // A shape time beyond a run that stopped early is not drawn.
-      if (!(last && times_[next_].time > s.time() * (1.0 + 1e-9))) record_shape(s, times_[next_].label);
+      if (!(last && times_[next_].time > s.time() * (1.0 + 1e-9))) {
+        if (x && mesh)
+          record_shape(s, *x, *mesh, times_[next_].label);
+        else
+          record_shape(s, s.particle_positions(), s.model().mesh, times_[next_].label);
+      }
       ++next_;
     }
   }
@@ -148,9 +155,7 @@ class figure_recorder {
   // shape_LABEL.csv: x_mm,y_mm, the deformed background cells (their nodes are the particles in
   // the paper's cases) as one closed outline per cell followed by a blank line, else the particles.
   template <class Solver>
-  void record_shape(const Solver& s, const std::string& label) {
-    const auto& x = s.particle_positions();
-    const auto& mesh = s.model().mesh;
+  void record_shape(const Solver& s, const std::vector<vec2>& x, const background_mesh& mesh, const std::string& label) {
     shape sh{label, dir_ / ("shape_" + label + ".csv")};
     sh.cells = mesh.node.size() == x.size();
     std::ofstream out(sh.csv);

@@ -1,7 +1,9 @@
 #pragma once
 // process_steps<Solver>: how simulate() steps the solver it observes. On one process
 // (one_process_steps, below) the solver steps itself and the observer sees every step. Divided
-// over several processes (rkpm_run under mpiexec; ranks.hpp implements it with MPI), rank 0
+// over several processes (rkpm_run under mpiexec; ranks.hpp implements it with MPI), a run set
+// up in parts (part_setup.hpp) has rank 0 observe its own part at every call (observes_part):
+// rows by reduction, figure shapes from gathered positions, no whole solver. Otherwise rank 0
 // observes a one-process solver of the whole model, `whole`, which never steps itself: the
 // ranks step their parts, and the object puts their state into `whole`
 // (parallel::mirror_state) at the calls where the observer reads the model's particles or points
@@ -21,6 +23,7 @@
 
 #include <rkpm/solver/checkpoint.hpp>
 
+#include "json.hpp"
 #include "row_reduction.hpp"
 
 namespace rkpm::runner {
@@ -34,15 +37,18 @@ enum class state_needed {
 };
 
 // What rank 0's observer (run_observer.hpp) tells the divided run at each observation, at (time,
-// end time): what the call reads (needs); and the .pvtu index of the snapshot that call writes,
-// if any (empty if none), whose pieces every rank writes before it.
+// end time): what the call reads (needs); the .pvtu index of the snapshot that call writes,
+// if any (empty if none), whose pieces every rank writes before it; whether it records a figure
+// shape (shape_due: the positions are then gathered for observe_part).
 template <class Solver>
 struct rank0_observation {
   std::function<state_needed(double, double)> needs;
   std::function<std::filesystem::path(double, double)> snapshot;
   std::function<void(double, double, long)> pass;
+  std::function<bool(double, double)> shape_due;
   std::function<void(const Solver&)> observe;
-  std::function<void(const Solver&, row_reduction)> observe_part;
+  // rank 0's part, the reduced measures, and every particle's position when a shape is due (else null)
+  std::function<void(const Solver&, row_reduction, const std::vector<vec2>*)> observe_part;
 };
 
 template <class Solver>
@@ -56,6 +62,20 @@ class process_steps {
   // unless the pieces cannot hold them (then rank 0 writes them whole from `whole`).
   virtual bool divided() const = 0;
   virtual bool snapshots_in_pieces() const { return divided(); }
+  // Collective: sets the run up; returns the solver rank 0 observes when the object builds it
+  // (null: simulate() builds it with its make()).
+  virtual Solver* set_up() { return nullptr; }
+  // Whether rank 0 observes its part (set up in parts) instead of a whole solver, and then the
+  // whole mesh (rank 0's copy, for figure shapes).
+  virtual bool observes_part() const { return false; }
+  virtual const background_mesh* whole_mesh() const { return nullptr; }
+  // Rank 0 observing its part: draws the end-state figures (final_figures.hpp) from the fields
+  // gathered after the run; false if it has none.
+  virtual bool draw_end_state(const std::filesystem::path& /*dir*/, const std::string& /*name*/) const {
+    return false;
+  }
+  // summary.json's entries of the division (the whole model's counts when rank 0 observes a part).
+  virtual void amend_summary(json& /*summary*/) const {}
 
   // Every rank reads the checkpoint, then `whole` takes the state.
   virtual void read_checkpoint(const std::filesystem::path& file, Solver* whole) = 0;

@@ -99,7 +99,7 @@ class run_observer {
       }
       record_.next_snapshot += record_.snapshot_interval;
     }
-    figures_.observe(s);
+    figures_.observe(s, positions_, whole_mesh_);
     record_.shapes = figures_.recorded();
     if (record_.checkpoint_interval > 0.0 && t >= record_.next_checkpoint && !last) {
       while (record_.next_checkpoint <= t) record_.next_checkpoint += record_.checkpoint_interval;
@@ -116,21 +116,28 @@ class run_observer {
   // processes then makes it through pass()); for a history row or a snapshot alone, rank 0's own
   // part (observe_part) when the rows' measures are reduced over the ranks and the
   // snapshots are written in pieces; else (and for anything reads_model lists) the whole model.
+  // Set up in parts (process_steps::observes_part), every call that reads anything observes rank
+  // 0's part: a figure shape then from the gathered positions.
   state_needed needs(double t, double end_time) const {
     if (skip_next_) return state_needed::none;
     const bool last = is_last(t, end_time);
-    if (reads_model(t, last)) return state_needed::whole_model;
+    if (part_only_ && (last || figures_.due(t, last) || pending_interrupt().load() != 0))
+      return state_needed::own_part;
+    if (!part_only_ && reads_model(t, last)) return state_needed::whole_model;
     if (t < record_.next_history && !snapshot_at(t, last) && !checkpoint_due(t)) return state_needed::none;
     return divided_ && rows_by_reduction_ ? state_needed::own_part : state_needed::whole_model;
   }
   // A call that needs own_part: rank 0's part observed as the whole (its time, step, energies and
   // tool impulses are the run's), with `reduced`, the case's over the whole model (row_reduction.hpp).
-  void observe_part(const Solver& part, row_reduction reduced) {
+  // `positions`: every particle's, in the whole model's order, when the call records a figure shape.
+  void observe_part(const Solver& part, row_reduction reduced, const std::vector<vec2>* positions = nullptr) {
     row_reduced_ = std::move(reduced);
+    positions_ = positions;
     const struct forget {
       row_reduction& r;
-      ~forget() { r = {}; }
-    } after{row_reduced_};
+      const std::vector<vec2>*& x;
+      ~forget() { r = {}, x = nullptr; }
+    } after{row_reduced_, positions_};
     (*this)(part);
   }
   // The snapshot the call at time t writes, if any (empty if none): next to the .pvd, a .vtu, or
@@ -139,11 +146,20 @@ class run_observer {
     if (skip_next_ || !snapshot_at(t, is_last(t, end_time))) return {};
     return dir_ / vtk_.next_file(in_pieces() ? ".pvtu" : ".vtu");
   }
+  // Whether the call at time t records a figure shape.
+  bool shape_due(double t, double end_time) const { return !skip_next_ && figures_.due(t, is_last(t, end_time)); }
   // A run on several processes, stepped by `steps` (ranks.hpp): each rank writes its piece of
   // every snapshot before the call that is due to write it (parallel/snapshot_pieces.hpp), which
   // then adds the index to the .pvd, and its part of every checkpoint, which this observer hands
   // over (process_steps::checkpoint_in_parts) instead of reading the whole model for it.
-  void divide(process_steps<Solver>& steps) { divided_ = &steps; }
+  // Set up in parts, rank 0 observes its part (process_steps::observes_part): its rows must reduce.
+  void divide(process_steps<Solver>& steps) {
+    divided_ = &steps;
+    part_only_ = steps.observes_part();
+    whole_mesh_ = steps.whole_mesh();
+    if (part_only_ && !rows_by_reduction_)
+      fail("a run set up in parts needs history rows by reduction (the case's measures, no companions)");
+  }
 
   // The call when needs(t, end_time) is none: the progress line only.
   void pass(double t, double end_time, long steps) {
@@ -289,6 +305,9 @@ class run_observer {
   process_steps<Solver>* divided_ = nullptr;  // divide(): snapshots in pieces, checkpoints in parts
   bool rows_by_reduction_ = false;  // the rows' measures reduce over the ranks (measure_maxima, no companions)
   row_reduction row_reduced_;       // the current call's, reduced over the ranks (observe_part)
+  bool part_only_ = false;          // rank 0 observes its part only: no whole solver (set up in parts)
+  const background_mesh* whole_mesh_ = nullptr;  // then the whole mesh, for the figure shapes
+  const std::vector<vec2>* positions_ = nullptr;  // the current call's gathered positions, if any
 };
 
 }  // namespace rkpm::runner

@@ -142,8 +142,8 @@ void add_run_summary(json& summary, const Solver& s, const Observer& observe, in
 }
 
 // steps: how the solver is stepped (process_steps.hpp): null on one process (the solver steps
-// itself); on several, rank 0's view of the divided run, whose make() builds the whole solver
-// that rank 0 observes.
+// itself); on several, rank 0's view of the divided run, whose set_up() builds the solver rank 0
+// observes (its part, or a whole solver; make() is then not called).
 template <class Case, class Solver>
 run_outcome simulate(const run_request& request, const typename Case::parameters& params, const run_policies& method,
                      const std::function<Solver()>& make, const std::optional<restart_point>& restart = {},
@@ -167,15 +167,17 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
 
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<Solver> holder;
+  Solver* observed = nullptr;  // the whole solver, or rank 0's part when the run is set up in parts
   run_record record;
   try {
-    holder.emplace(make());
-    if constexpr (requires { Case::attach(*holder, params, true); }) Case::attach(*holder, params, steps->divided());
+    observed = steps->set_up();
+    if (!observed) observed = &holder.emplace(make());
+    if constexpr (requires { Case::attach(*observed, params, true); }) Case::attach(*observed, params, steps->divided());
     if (restart) {
-      steps->read_checkpoint(restart->file, &*holder);
+      steps->read_checkpoint(restart->file, observed);
       record = record_from_json(restart->description.at("record"));
       record.restarts.push_back({{"checkpoint", fs::absolute(restart->file).string()},
-                                 {"time_s", holder->time()}, {"step", holder->steps()}});
+                                 {"time_s", observed->time()}, {"step", observed->steps()}});
       // Snapshots written before live in the checkpoint's folder.
       const fs::path from = fs::absolute(restart->file).parent_path();
       if (from != fs::absolute(dir))
@@ -187,7 +189,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     write_json(dir / "summary.json", summary);
     throw;
   }
-  Solver& s = *holder;
+  Solver& s = *observed;
   std::optional<run_observer<Case, Solver>> observer;
   try {
     if (restart && s.time() >= s.options().end_time * (1.0 - 1e-12))
@@ -235,8 +237,11 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
     steps->run(&s, {.needs = [&](double t, double end) { return observe.needs(t, end); },
                     .snapshot = [&](double t, double end) { return observe.snapshot_due(t, end); },
                     .pass = [&](double t, double end, long n) { observe.pass(t, end, n); },
+                    .shape_due = [&](double t, double end) { return observe.shape_due(t, end); },
                     .observe = [&](const Solver& at) { observe(at); },
-                    .observe_part = [&](const Solver& p, auto m) { observe.observe_part(p, std::move(m)); }});
+                    .observe_part = [&](const Solver& p, auto m, const std::vector<vec2>* x) {
+                      observe.observe_part(p, std::move(m), x);
+                    }});
     settle();
     if (observe.record().checkpoint_interval > 0.0) observe.write_checkpoint_now(s);
     write_pending();
@@ -260,6 +265,7 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   summary["status"] = !error.empty() ? "failed" : stopped ? "stopped" : "completed";
   if (!error.empty()) summary["error"] = error;
   add_run_summary(summary, s, observe, steps->processes());
+  steps->amend_summary(summary);
   if (steps->divided() && s.options().rereference.enabled()) summary["repartitions"] = steps->repartitions();
   json& results = summary["results"];  // the case's measures at the end of the run
   results = json::object();
@@ -268,7 +274,8 @@ run_outcome simulate(const run_request& request, const typename Case::parameters
   if (request.plots) {
     try {
       observe.figures().plot(observe.table());
-      final_plastic_strain_png(dir, case_name<Case>(params), s, io::snapshot_cell_layout(s));
+      if (!steps->draw_end_state(dir, case_name<Case>(params)) && !steps->observes_part())  // ranks.hpp: gathered
+        final_plastic_strain_png(dir, case_name<Case>(params), s, io::snapshot_cell_layout(s));
     } catch (const std::exception& ex) {
       fmt::print(stderr, "rkpm_run: figures skipped: {}\n", ex.what());
     }

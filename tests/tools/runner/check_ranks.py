@@ -5,7 +5,8 @@
     check_ranks.py same MPIEXEC RKPM_RUN WORK NAME ARGS...
         the case NAME (a built-in case, or a case file) with ARGS on 1, 2 and 3 processes of one
         thread, and on 2 processes of 2 threads: the same history.csv, .pvd (naming .pvtu indexes),
-        figure shapes, results, energies and steps, byte for byte, and the same snapshots: each
+        figure shapes, results, energies, steps and points' extremes, byte for byte, the same
+        figures (PNG, on 1 and 2 processes), and the same snapshots: each
         one process's .vtu is, on P processes, a .pvtu index of P pieces that together hold its
         points, arrays and cells bit for bit (pieces.py, read by meshio); summary.json records
         the processes; tools/rkpm view draws the 2 processes' last snapshot with one process's cells.
@@ -14,7 +15,10 @@
         cracks can grow (summary.json's fragments) must break (history.csv's fragments from 1 to
         more, each over two rows or more), and its fragments, largest fragment's mass and state
         extremes (the failed fraction) are compared too; its snapshots are written whole (.vtu,
-        with the crack faces) by rank 0, and compared byte for byte
+        with the crack faces) by rank 0, and compared byte for byte. A run set up
+        in parts (summary.json's set_up: a case of one body whose rows reduce, not re-referenced)
+        holds on each process about N/P owned particles and fewer than N with its ghosts
+        (local_particles); the others say why they are set up whole
     check_ranks.py restart MPIEXEC RKPM_RUN WORK
         block forging (moving tools, friction) checkpointed mid-run on 2 processes, in parts (a
         folder checkpoint_*.rkpmcp of part-0-of-2.rkpmcp and part-1-of-2.rkpmcp, named as one
@@ -25,8 +29,10 @@
         and the rank, the same point one process names, and summary.json says so; --ranks that
         differs from the processes started, and more processes than particles, are refused in one
         line; no rank is left waiting (every run has a timeout); too little memory for the
-        processes on the machine is one warning that counts the whole models they build; a case
-        file's "rebalance_above" repartitions unless --rebalance-above overrides it
+        processes on the machine is one warning: set up in parts, the particles a process holds
+        with its ghosts (at least those it held, fewer than the whole) and its bytes
+        (memory_estimate.hpp's form); set up whole, the whole models they build; a case file's
+        "rebalance_above" repartitions unless --rebalance-above overrides it
 
 MPIEXEC is the launcher with its flags as one argument ("mpiexec --oversubscribe ..."). The
 reference is always the same program on one process: the division must not change a run.
@@ -34,6 +40,7 @@ reference is always the same program on one process: the division must not chang
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -105,23 +112,51 @@ def same_outputs(reference, other, label):
             same_snapshot(os.path.join(reference, f), other_file, label)
 
 
+# The cases the runner sets up whole on several processes, and why (tools/runner/part_setup.hpp).
+SET_UP_WHOLE = {"rod_on_rod": "2 bodies", "plate_impact": "2 bodies", "taylor_bar_rereferenced": "re-reference",
+                "brittle_bar": "cracks can grow"}
+
+
+def local_particles(folder, processes, label, whole_because=None):
+    """summary.json's set-up and each process's particles on a run of several processes: set up in parts,
+    about N/P owned particles each (coordinate bisection: within 10%, and together N) and fewer than N with
+    its ghosts; set up whole, the reason."""
+    s = summary(folder)
+    n, local = s["particles"], s.get("local_particles", [])
+    check(len(local) == processes and sum(r["owned"] for r in local) == n,
+          f"{label}: local_particles {local} do not divide the {n} particles")
+    if whole_because:
+        check(s.get("set_up") == "whole" and whole_because in s.get("whole_model_because", ""),
+              f"{label}: set up {s.get('set_up')} ({s.get('whole_model_because')}), not whole for {whole_because}")
+        return
+    check(s.get("set_up") == "in parts", f"{label}: set up {s.get('set_up')} ({s.get('whole_model_because')}), "
+                                         f"not in parts")
+    for r in local:
+        check(abs(r["owned"] - n / processes) <= 0.1 * n / processes and r["owned"] + r["ghosts"] < n,
+              f"{label}: a process holds {r['owned']} owned and {r['ghosts']} ghost particles of {n}: not about "
+              f"N/P plus ghosts")
+
+
 def same(mpiexec, rkpm_run, work, name, args):
     label = os.path.splitext(os.path.basename(name))[0]
     if any(a.startswith("--rereference") for a in args):
         label += "_rereferenced"
     folders = {}
     # (processes, threads per process): one thread each, and 2 processes of 2 threads.
+    # The figures (PNG) on 1 and 2 processes of one thread.
     for p, threads in ((1, 1), (2, 1), (3, 1), (2, 2)):
         out = os.path.join(work, f"{label}-{p}x{threads}")
         shutil.rmtree(out, ignore_errors=True)
-        r = launch(mpiexec, p, rkpm_run,
-                   [name] + args + ["--no-plots", "--quiet", "--threads", str(threads), "--out", out])
+        plots = [] if p < 3 and threads == 1 else ["--no-plots"]
+        r = launch(mpiexec, p, rkpm_run, [name] + args + plots + ["--quiet", "--threads", str(threads), "--out", out])
         check(r.returncode == 0, f"{label} on {p} processes failed: {r.stdout[-2000:]} {r.stderr[-2000:]}")
         if r.returncode != 0:
             return
         check(summary(out).get("processes") == p, f"{label}: summary.json records {summary(out).get('processes')} "
                                                   f"processes, not {p}")
         folders[p, threads] = out
+    for p, threads in ((2, 1), (3, 1), (2, 2)):
+        local_particles(folders[p, threads], p, f"{label} on {p} processes", SET_UP_WHOLE.get(label))
     if "--rebalance-above" in args:  # what the bound is for: the particles partitioned again
         for p, threads in ((2, 1), (3, 1), (2, 2)):
             n = summary(folders[p, threads]).get("repartitions", 0)
@@ -136,6 +171,12 @@ def same(mpiexec, rkpm_run, work, name, args):
                                              f"piece, then several")
     for p, threads in ((2, 1), (3, 1), (2, 2)):
         same_outputs(folders[1, 1], folders[p, threads], f"{label} on {p} processes of {threads} thread(s)")
+    figures = sorted(f for f in os.listdir(folders[1, 1]) if f.endswith(".png"))
+    check(figures == sorted(f for f in os.listdir(folders[2, 1]) if f.endswith(".png")),
+          f"{label}: other figures on 2 processes than {figures}")
+    for f in figures:
+        check(read(os.path.join(folders[1, 1], f), "rb") == read(os.path.join(folders[2, 1], f), "rb"),
+              f"{label}: {f} on 2 processes differs from one process's")
     view(folders[1, 1], folders[2, 1], label)
     print(f"ok  {label}: {summary(folders[1, 1])['steps']} steps, {rows} history rows, the same files on 1, 2 and 3 "
           f"processes of one thread and 2 of two threads; tools/rkpm view draws the pieces")
@@ -240,16 +281,38 @@ def errors(mpiexec, rkpm_run, work):
                                                                            f"{r.stderr[-500:]}")
     print("ok  --ranks other than the processes started, and more processes than particles, are refused")
 
-    # Too little memory for the whole models the processes on this machine build, and rank 0's
-    # whole solver: one warning for the machine, not one per process (the memory forced small).
-    r = subprocess.run(mpiexec.split() + ["-np", "2", rkpm_run] + bar + ["--out", os.path.join(work, "memory")],
+    # Too little memory for the processes on this machine: one warning for the machine, not one per
+    # process (the memory forced small). Set up in parts (the bar at resolution 2, 4,141
+    # particles): the particles a process holds with its ghosts, at least what each held and fewer
+    # than the whole, and the bytes of memory_estimate.hpp's form for them and the layout.
+    memory = os.path.join(work, "memory")
+    r = subprocess.run(mpiexec.split() + ["-np", "2", rkpm_run, "taylor_bar", "--resolution", "2", "--end-time", "1e-7",
+                                          "--no-plots", "--quiet", "--threads", "1", "--out", memory],
                        capture_output=True, text=True, timeout=300,
                        env=dict(os.environ, RKPM_AVAILABLE_MEMORY_BYTES="1e4"))
     warnings = [l for l in r.stderr.splitlines() if "warning" in l]
-    check(r.returncode == 0 and len(warnings) == 1 and "the 2 processes on this machine each build the whole model of "
-          "96 particles, and rank 0 keeps a whole solver" in warnings[0] and "for 3 copies" in warnings[0],
-          f"the memory warning on 2 processes: {warnings} {r.stderr[-500:]}")
-    print(f"ok  one memory warning for the machine: {warnings[0][:100]}..." if warnings else "")
+    check(r.returncode == 0 and len(warnings) == 1, f"the memory warning on 2 processes: {warnings} {r.stderr[-500:]}")
+    if r.returncode == 0 and len(warnings) == 1:
+        s = summary(memory)
+        n, points = s["particles"], s["quadrature_points"]
+        held = max(p["owned"] + p["ghosts"] for p in s["local_particles"])
+        found = re.search(r"about (\d+) particles with their ghosts and ([\d.]+) MB each", warnings[0])
+        estimated, mb = (int(found[1]), float(found[2])) if found else (0, 0.0)
+        expected_mb = ((0.6e3 + 0.55e3 * points / n) * estimated + 200.0 * n) / 1e6
+        check(s["set_up"] == "in parts" and f"each set up their part of {n} particles in parts" in warnings[0] and
+              held <= estimated < n and abs(mb - expected_mb) <= 0.5,
+              f"the memory warning in parts: {warnings[0]} (held {held} of {n}; {expected_mb:.1f} MB expected)")
+        print(f"ok  one memory warning for the machine: {estimated} particles estimated per process, {held} held, "
+              f"of {n}: {warnings[0][:100]}...")
+    # Set up whole (two bodies): the whole models the processes build and rank 0's whole solver.
+    r = subprocess.run(mpiexec.split() + ["-np", "2", rkpm_run, "rod_on_rod", "--end-time", "1e-7", "--no-plots",
+                                          "--quiet", "--threads", "1", "--out", memory + "-whole"],
+                       capture_output=True, text=True, timeout=300,
+                       env=dict(os.environ, RKPM_AVAILABLE_MEMORY_BYTES="1e4"))
+    warnings = [l for l in r.stderr.splitlines() if "warning" in l]
+    check(r.returncode == 0 and len(warnings) == 1 and "each build the whole model of" in warnings[0] and
+          "rank 0 keeps a whole solver" in warnings[0] and "for 3 copies" in warnings[0],
+          f"the memory warning on 2 processes set up whole: {warnings} {r.stderr[-500:]}")
 
     # A case file's "rebalance_above" is the run's bound unless --rebalance-above is given: a bound
     # just above 1 repartitions at the re-references, the command line's 1e9 never.
