@@ -5,7 +5,7 @@
 // crack_fragments joins two particles when a point's row holds both and roots each piece at its
 // smallest particle index. Here each piece is labelled by that index: every rank joins the
 // particles of its points' rows (a union-find over its part, once) and gives each owned
-// particle the smallest label in its set; the owners forward their labels to the ghosts, and
+// particle the smallest label in its set (row_pieces, solver/crack_growth.hpp); the owners forward their labels to the ghosts, and
 // again, until no rank lowers a label (an MPI_MAX). A point whose row holds particles of two
 // ranks is computed by both (the redundant points of parallel/halo.hpp), so every link is seen
 // by both particles' owners, and at the end every piece carries one label, its smallest index.
@@ -34,28 +34,17 @@ namespace rkpm::parallel {
 inline fragment_count part_fragments(communicator& comm, const discrete_model& part, const std::vector<double>& mass) {
   const index_t n = part.particle_count(), owned = part.own.particles.end;
   // The part's sets: particles joined by its points' rows.
-  std::vector<index_t> parent(n);
-  std::iota(parent.begin(), parent.end(), index_t{0});
-  const auto root = [&](index_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  const shape_table<2>& t = part.at_points;
-  for (index_t q = 0; q < part.point_count(); ++q)
-    for (index_t e = t.offset[q] + 1; e < t.offset[q + 1]; ++e) {
-      const index_t a = root(t.neighbor[t.offset[q]]), b = root(t.neighbor[e]);
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+  const std::vector<index_t> root = row_pieces(part);
   // The labels, global indices (exact in a double below 2^53), lowered until no rank lowers one.
   std::vector<double> label(n), smallest(n);
   for (index_t i = 0; i < n; ++i) label[i] = static_cast<double>(part.global_particle(i));
   for (;;) {
     std::fill(smallest.begin(), smallest.end(), std::numeric_limits<double>::infinity());
-    for (index_t i = 0; i < n; ++i) smallest[root(i)] = std::min(smallest[root(i)], label[i]);
+    for (index_t i = 0; i < n; ++i) smallest[root[i]] = std::min(smallest[root[i]], label[i]);
     bool lowered = false;
     for (index_t i = 0; i < owned; ++i)
-      if (smallest[root(i)] < label[i]) {
-        label[i] = smallest[root(i)];
+      if (smallest[root[i]] < label[i]) {
+        label[i] = smallest[root[i]];
         lowered = true;
       }
     part.own.group->forward(label);

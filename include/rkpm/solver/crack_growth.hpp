@@ -189,7 +189,9 @@ struct fragment_count {
   double largest_mass = 0.0;  // kg (per unit thickness in plane strain; per radian... as the masses)
 };
 
-inline fragment_count crack_fragments(const discrete_model& m, const std::vector<double>& mass) {
+// Each particle's piece among the model's particles, named by the piece's smallest particle
+// index: particles joined when a point's row holds both (a union-find over the rows).
+inline std::vector<index_t> row_pieces(const discrete_model& m) {
   std::vector<index_t> parent(m.particle_count());
   std::iota(parent.begin(), parent.end(), index_t{0});
   const auto root = [&](index_t i) {
@@ -201,10 +203,16 @@ inline fragment_count crack_fragments(const discrete_model& m, const std::vector
       const index_t a = root(m.at_points.neighbor[m.at_points.offset[q]]), b = root(m.at_points.neighbor[e]);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
+  for (index_t I = 0; I < m.particle_count(); ++I) parent[I] = root(I);
+  return parent;
+}
+
+inline fragment_count crack_fragments(const discrete_model& m, const std::vector<double>& mass) {
+  const std::vector<index_t> root = row_pieces(m);
   std::vector<double> piece(m.particle_count(), 0.0);
   fragment_count out;
   for (index_t I = 0; I < m.particle_count(); ++I) {
-    const index_t r = root(I);
+    const index_t r = root[I];
     if (r == I) ++out.pieces;
     piece[r] += mass[I];
   }
