@@ -1,3 +1,0 @@
-// Part 1 of the solvers the tests share, compiled once (include/rkpm/solver/solver_instances.hpp).
-#define RKPM_INSTANTIATE_SOLVERS 1
-#include <rkpm/solver/solver_instances.hpp>
