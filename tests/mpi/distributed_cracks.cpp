@@ -13,9 +13,17 @@
 // broken bar's model set up again on the ranks on three partitions counts its two pieces as one
 // process does (parallel/run_fragments.hpp).
 // The parts' decision to cut is the whole model's: as many rebuilds as one process's re-references.
+// Contact on the crack faces (all body pairs, docs/method.md (114)): a soft elastic strip cut
+// clean through across its middle before the run (cut_cells), its pieces thrown at each other at
+// 1 m/s while a lid falls onto its top, 200 steps on P ranks (the pieces meet, rebound at 0.92 m/s
+// and part) for METIS's partition and for columns of particles dealt to the ranks in turn (the
+// crack a cut too): every 20 steps the owned coefficients and velocities and every total (the
+// contact work among them) are one process's bits, and every rank finds each of one process's
+// contacts, on the faces and on the surfaces (taken in the whole model's order).
 
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -23,8 +31,12 @@
 #include <iterator>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
+#include <rkpm/contact/particle_to_segment.hpp>
+#include <rkpm/material/elastic.hpp>
 #include <rkpm/material/rankine_fracture.hpp>
 #include <rkpm/parallel/communicator.hpp>
 #include <rkpm/parallel/distributed_checkpoint.hpp>
@@ -129,7 +141,125 @@ void same_pieces(communicator& world, const discrete_model& model, const particl
                   std::vector<double>{one.fragments().largest_mass}));
 }
 
+// ---- The cut strip: a soft elastic strip (plane strain, effective-mass contact without friction:
+// tests/numeric/self_contact.cpp's cut bar, shorter and taller), cut across the cells between
+// particle columns 10 and 11 before the run, its pieces thrown at each other; a lid of the same
+// stuff 20 um above it falls onto its top. All body pairs: the crack's faces, and the surfaces.
+using cut_config = config<kernel::cubic_spline, correction::linear, quadrature::q2, geometry::plane_strain,
+                          material::elastic,
+                          contact::particle_to_segment<contact::enforcement::effective_mass, contact::friction::frictionless>>;
+using cut_solver = solver_for<cut_config>;  // compiled once (solver/solver_instances.hpp)
+constexpr int cut_nx = 22, cut_ny = 11, lid_nx = 8, lid_ny = 4, cut_column = 10;
+constexpr double cut_h = 1e-3, cut_E = 1e7, cut_rho = 1000.0, cut_speed = 1.0, lid_gap = 2e-5;
+constexpr double cut_x = (cut_column + 0.5) * cut_h;  // the crack's x, and each piece's length
+constexpr double strip_top = (cut_ny - 1) * cut_h;
+
+problem_for<cut_config> cut_bar_problem() {
+  const double length = (cut_nx - 1) * cut_h, lid_bottom = strip_top + lid_gap;
+  problem_for<cut_config> p{
+      .particles = make_grid_particles<2>(vec2(0.0, 0.0), vec2(length, strip_top), Eigen::Vector2i(cut_nx, cut_ny), 2.0),
+      .mesh = make_grid_mesh(vec2(0.0, 0.0), vec2(length, strip_top), Eigen::Vector2i(cut_nx, cut_ny)),
+      .material = material::elastic({cut_E, 0.0, cut_rho}),
+      .contact = typename cut_config::contact_type({}, contact::all_body_pairs),
+      .initial_velocity = [](const vec2& X) {
+        if (X[1] > strip_top) return vec2(0.0, -cut_speed);
+        return vec2(X[0] < cut_x ? cut_speed : -cut_speed, 0.0);
+      }};
+  const vec2 lo(0.0, lid_bottom), hi((lid_nx - 1) * cut_h, lid_bottom + (lid_ny - 1) * cut_h);
+  append_body(p.particles, p.mesh, make_grid_particles<2>(lo, hi, Eigen::Vector2i(lid_nx, lid_ny), 2.0),
+              make_grid_mesh(lo, hi, Eigen::Vector2i(lid_nx, lid_ny)));
+  return p;
+}
+
+run_options cut_bar_options() {
+  run_options o;
+  o.end_time = 1.0;  // stepped by hand
+  return o;
+}
+
+// The strip's model with the crack through its column of cells, as one process cuts it.
+discrete_model cut_bar_model() {
+  cut_solver s = make_solver<cut_config>(cut_bar_problem(), cut_bar_options());
+  std::vector<std::pair<index_t, vec2>> column;
+  for (index_t row = 0; row + 1 < cut_ny; ++row) column.emplace_back(row * (cut_nx - 1) + cut_column, vec2(1.0, 0.0));
+  s.cut_cells(column);
+  return s.model();
+}
+
+// The solver's contacts in its last step: on the crack's faces (a face point the slave or the
+// master), and between particles and surfaces.
+std::array<index_t, 2> contacts(const cut_solver& s) {
+  std::array<index_t, 2> n{};
+  for (const auto& c : s.contact().bodies().active_pairs())
+    ++n[c.slave >= s.model().particle_count() || c.a >= s.model().particle_count() ? 0 : 1];
+  return n;
+}
+
+std::vector<double> cut_totals(const cut_solver& s) {
+  const energy_balance& e = s.energy();
+  return {s.time(), s.time_step(), e.kinetic, e.internal, e.external, e.contact, s.max_penetration()};
+}
+
+// The left piece's mean velocity along the strip.
+double left_velocity(const cut_solver& s) {
+  double p = 0.0, m = 0.0;
+  for (index_t I = 0; I < cut_nx * cut_ny; ++I)
+    if (I % cut_nx <= cut_column) {
+      p += s.mass()[I] * s.coefficient_velocities()[I][0];
+      m += s.mass()[I];
+    }
+  return p / m;
+}
+
+// 200 steps of the strip on `partition` against one process (collective).
+void contact_on_faces(communicator& world, const discrete_model& model, const particle_partition& partition,
+                      const std::string& name) {
+  CAPTURE(name);
+  cut_solver one(model, cut_bar_problem(), cut_bar_options());
+  distributed_solver<cut_solver> run(world, model, cut_bar_problem(), cut_bar_options(), partition);
+  const double K0 = one.kinetic_energy();
+  std::array<index_t, 2> one_contacts{}, part_contacts{};
+  index_t differing = 0;
+  for (int n = 1; n <= 200; ++n) {
+    one.step();
+    run.step();
+    for (int k = 0; k < 2; ++k) {
+      one_contacts[k] += contacts(one)[k];
+      part_contacts[k] += contacts(run.solver())[k];
+    }
+    if (n % 20 == 0) {
+      const std::vector<vec2> d = gather_owned(world, run.plan(), run.solver().coefficients()),
+                              v = gather_owned(world, run.plan(), run.solver().coefficient_velocities());
+      if (world.rank() == 0)
+        differing += !same_bits(d, one.coefficients()) + !same_bits(v, one.coefficient_velocities());
+      differing += !same_bits(cut_totals(run.solver()), cut_totals(one));
+    }
+  }
+  MESSAGE(name << ": " << one_contacts[0] << " contacts on the faces and " << one_contacts[1]
+               << " on the surfaces in 200 steps (t = " << one.time() << " s), contact work "
+               << one.energy().contact / K0 << " K0, the left piece at " << left_velocity(one) << " m/s, "
+               << run.shared_count() << " particles shared");
+  CHECK(differing == 0);
+  CHECK(part_contacts == one_contacts);  // every rank corrects every contact, as one process does
+  // What the test is for: the faces touch and their contact acts; the pieces rebound; the lid
+  // hits the strip (contacts of surface slaves, taken in the whole model's order on every rank).
+  CHECK(one_contacts[0] > 0);
+  CHECK(one_contacts[1] > 0);
+  CHECK(one.energy().contact < -0.01 * K0);
+  CHECK(left_velocity(one) < -0.9 * cut_speed);
+}
+
 }  // namespace
+
+TEST_CASE("contact on crack faces on P ranks: one process's bits, each contact on the faces found on every rank") {
+  communicator world;
+  const discrete_model model = cut_bar_model();
+  REQUIRE(model.crack_faces.faces() == 2 * (cut_ny - 1));
+  std::vector<stored_index> columns(model.particle_count());
+  for (index_t I = 0; I < model.particle_count(); ++I) columns[I] = static_cast<stored_index>(I % cut_nx % world.size());
+  contact_on_faces(world, model, partition_particles(model.at_points, model.particle_count(), world.size()), "METIS");
+  contact_on_faces(world, model, given_partition(columns, world.size()), "columns dealt");
+}
 
 TEST_CASE("a crack grown on P ranks is one process's, bit for bit, and restarts from its checkpoint on any count") {
   communicator world;

@@ -46,6 +46,9 @@ struct contact_body {
   // The faces of the cracks cut through the cells, with their rows (discrete_model::crack_faces):
   // masters and slaves in all-pairs mode (contact/crack_face_points.hpp). Null or empty: none.
   const crack_face_rows* crack_faces = nullptr;
+  // A rank's part (parallel/local_model.hpp): each particle's index in the whole model, the order
+  // in which all-pairs contact takes the surface slaves (body_pair_surfaces.hpp). Empty: its own.
+  std::span<const stored_index> particle_id = {};
 };
 
 // The particles checked against the tools, given once at set-up: slave j is particle

@@ -87,7 +87,7 @@ class body_contact {
     if (all_pairs_) pairs_ = every_body_pair(body.bodies->count());
     faces_.setup(body, all_pairs_);
     surfaces_ = pair_surfaces(pairs_, *body.bodies, body.reference_position, slaves, all_pairs_,
-                              faces_.empty() ? nullptr : &faces_.faces());
+                              faces_.empty() ? nullptr : &faces_.faces(), body.particle_id);
     std::size_t capacity = 0;
     for (const auto& s : surfaces_.slave) capacity += s.size();
     active_.assign(capacity, body_contact_pair{});

@@ -6,9 +6,10 @@
 //     belong to its slave body. A pair of a body with itself is self-contact.
 //   - All pairs (all_body_pairs, (109)): every (slave, master) of the model's bodies, itself
 //     included, master by master (every body's slaves against body 0's surface, then body 1's,
-//     ...); the slaves every vertex of the slave body's surface chains, in increasing order, the
-//     order of the default slaves (the mesh's boundary nodes), so that two bodies give what the
-//     pairs (1, 0) and (0, 1) with the default slaves give, bit for bit. With the faces of cracks
+//     ...); the slaves every vertex of the slave body's surface chains, in increasing order (on
+//     a rank's part, of the whole model's indices), the order of the default slaves (the mesh's
+//     boundary nodes), so that two bodies give what the pairs (1, 0) and (0, 1) with the default
+//     slaves give, bit for bit, and a part what the whole model gives. With the faces of cracks
 //     (crack_face_points.hpp, (114)), a master's faces follow its surface segments and a slave
 //     body's face points its surface vertices, numbered after the particles.
 
@@ -45,11 +46,13 @@ inline std::vector<body_pair> every_body_pair(index_t bodies) {
 }
 
 // The pairs' surfaces on the model's bodies, reference positions X. `slaves`: the problem's slave
-// particles (declared pairs), or every surface vertex a slave when `surface_slaves`. `faces`: the
-// crack faces, face point p numbered n + p (none if null).
+// particles (declared pairs), or every surface vertex a slave when `surface_slaves`, ordered by
+// `particle_id` (a rank's part: each particle's index in the whole model; empty: their own).
+// `faces`: the crack faces, face point p numbered n + p (none if null).
 inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const model_bodies& bodies,
                                         std::span<const vec2> X, std::span<const index_t> slaves,
-                                        bool surface_slaves, const crack_face_rows* faces = nullptr) {
+                                        bool surface_slaves, const crack_face_rows* faces = nullptr,
+                                        std::span<const stored_index> particle_id = {}) {
   const auto n = static_cast<index_t>(X.size());
   const index_t face_points = faces ? faces->points() : 0;
   for (std::size_t k = 0; k < pairs.size(); ++k)
@@ -59,10 +62,17 @@ inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const 
              "of their first cells",
              k, b, bodies.count(), bodies.count() - 1);
   const auto& chains = bodies.surface("contact between bodies");
-  std::vector<char> vertex(n, 0);  // on a surface chain
-  if (surface_slaves)
+  std::vector<index_t> vertices;  // on a surface chain, in the whole model's order
+  if (surface_slaves) {
+    std::vector<char> vertex(n, 0);
     for (const auto& c : chains)
-      for (index_t I : c.node) vertex[I] = 1;
+      for (index_t I : c.node)
+        if (!vertex[I]) {
+          vertex[I] = 1;
+          vertices.push_back(I);
+        }
+    std::ranges::sort(vertices, {}, [&](index_t I) { return particle_id.empty() ? I : index_t{particle_id[I]}; });
+  }
 
   body_pair_surfaces out;
   out.segment.assign(pairs.size(), {});
@@ -89,8 +99,8 @@ inline body_pair_surfaces pair_surfaces(std::span<const body_pair> pairs, const 
     out.depth[k] = 0.5 * shortest;
     auto& slave = out.slave[k];
     if (surface_slaves) {
-      for (index_t I = 0; I < n; ++I)
-        if (vertex[I] && bodies.of_particle(I) == pairs[k].slave) slave.push_back(I);
+      for (index_t I : vertices)
+        if (bodies.of_particle(I) == pairs[k].slave) slave.push_back(I);
     } else {
       for (index_t J : slaves)
         if (bodies.of_particle(J) == pairs[k].slave) slave.push_back(J);

@@ -7,7 +7,7 @@
 //   2. the shared region: the constrained and slave particles and their rows' columns, which
 //      every rank holds (as ghosts where it does not own them), so that every rank computes the
 //      constraints' projection and the contact corrections of the whole model alike, as one
-//      process does: the replicated region. It is the body's surface and axis, a thin band;
+//      process does: the replicated region (shared_region.hpp), surface and axis, a thin band;
 //   3. the halo plan (parallel/halo.hpp) with it and the owned particles' rows, the rank's
 //      model (local_model) and its process group (mpi_process_group);
 //   4. the solver on that model, the problem's constraints and slaves renamed to local ids.
@@ -21,6 +21,8 @@
 // same part.
 // Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: then
 // the surfaces' particles and rows join the shared region, and every rank corrects them alike.
+// All body pairs read the crack faces too: the columns of their rows join it, and the part's
+// model carries the faces in local ids (local_model), so every rank computes their contact alike.
 // Re-referencing and cracks (docs/method.md sections 5.8 and 5.12) through step(), run() or
 // rereference(): every rank re-references (and cuts) a one-process solver of the whole model
 // (rereference_through) and builds its part again from it, on a new partition when the load
@@ -44,42 +46,13 @@
 #include <rkpm/parallel/partition.hpp>
 #include <rkpm/parallel/rank_setup.hpp>
 #include <rkpm/parallel/run_fragments.hpp>
+#include <rkpm/parallel/shared_region.hpp>
 #include <rkpm/solver/body_setup.hpp>
 #include <rkpm/solver/discrete_model.hpp>
 #include <rkpm/solver/part_cracks.hpp>
 #include <rkpm/solver/problem.hpp>
 
 namespace rkpm::parallel {
-
-// The particles every rank holds (sorted global ids): the constrained and slave particles, the
-// surfaces' particles when the contact reads them, and the columns of their rows at the particles.
-inline std::vector<stored_index> shared_particles(const shape_table<2>& at_particles,
-                                                  const std::vector<velocity_constraint>& constraints,
-                                                  const std::vector<index_t>& slaves,
-                                                  const std::vector<boundary_chain>& surfaces = {}) {
-  std::vector<stored_index> out;
-  const auto add_row = [&](index_t I) {
-    out.push_back(static_cast<stored_index>(I));
-    for (index_t e = at_particles.offset[I]; e < at_particles.offset[I + 1]; ++e) out.push_back(at_particles.neighbor[e]);
-  };
-  for (const velocity_constraint& c : constraints) add_row(c.particle);
-  for (const index_t I : slaves) add_row(I);
-  for (const boundary_chain& c : surfaces)
-    for (const index_t I : c.node) add_row(I);
-  std::ranges::sort(out);
-  out.erase(std::ranges::unique(out).begin(), out.end());
-  return out;
-}
-
-// Whether a contact policy reads the bodies' surfaces (contact/particle_to_segment.hpp's pairs
-// of bodies and tool vertices).
-template <class Contact>
-bool reads_surfaces(const Contact& c) {
-  if constexpr (ContactsOnSurfaces<Contact>)
-    return !c.body_pairs().empty() || c.all_body_pairs() || c.tool_vertex_slaves();
-  else
-    return false;
-}
 
 template <class Solver>
 class distributed_solver {
@@ -180,11 +153,6 @@ class distributed_solver {
     rank_model r;
     comm.guarded([&] {
       whole = with_bodies<geometry_type>(std::move(whole));
-      // A part's model holds no crack faces (contact/crack_face_points.hpp): they would be missed.
-      if constexpr (ContactsOnSurfaces<typename Solver::contact_type>)
-        if (!whole.crack_faces.empty() && prob.contact.all_body_pairs())
-          fail("contact on the faces of cracks (all body pairs) on several processes is not available yet; run "
-               "on one process");
       shared_region(whole, prob, options_, find_axis);
       r.plan = make_halo_plan(partition_, whole.at_points, comm.rank(), &whole.at_particles,
                               shared_of(whole.at_particles, prob));
@@ -227,21 +195,22 @@ class distributed_solver {
   }
 
   // On the whole model (or its layout), as one process finds them: the axis constraints, the
-  // contact slaves and, when the contact reads them, the bodies' surfaces (surfaces_); returns
-  // the particles whose rows decide the shared region.
+  // contact slaves and, when the contact reads them, the bodies' surfaces (surfaces_) and the
+  // crack faces (faces_); returns the particles whose rows decide the shared region.
   std::vector<index_t> shared_region(const discrete_model& whole, problem_type& prob, const run_options& options,
                                      bool find_axis) {
     if (find_axis) add_axis_constraints<geometry_type>(whole, options.axis_tolerance, prob.constraints);
     prob.slave_particles = slave_particles(whole, std::move(prob.slave_particles), has_contact(prob.contact));
     surfaces_.clear();
     if (reads_surfaces(prob.contact)) surfaces_ = whole.bodies.surface("contact on several processes");
+    faces_ = reads_crack_faces(prob.contact) && !whole.crack_faces.empty() ? &whole.crack_faces : nullptr;
     std::vector<index_t> region = prob.slave_particles;
     for (const velocity_constraint& c : prob.constraints) region.push_back(c.particle);
     for (const boundary_chain& c : surfaces_) region.insert(region.end(), c.node.begin(), c.node.end());
     return region;
   }
   std::vector<stored_index> shared_of(const shape_table<2>& rows, const problem_type& prob) {
-    std::vector<stored_index> shared = shared_particles(rows, prob.constraints, prob.slave_particles, surfaces_);
+    std::vector<stored_index> shared = shared_particles(rows, prob.constraints, prob.slave_particles, surfaces_, faces_);
     shared_ = static_cast<index_t>(shared.size());
     return shared;
   }
@@ -251,6 +220,7 @@ class distributed_solver {
     plan_ = std::move(r.plan);
     shared_ = r.shared;
     surfaces_.clear();
+    faces_ = nullptr;
     r.local.own.group = group_.get();
     std::vector<stored_index> local_id(plan_.global_particles, -1);
     for (index_t i = 0; i < plan_.local_particles(); ++i) local_id[plan_.global_particle(i)] = static_cast<stored_index>(i);
@@ -263,6 +233,7 @@ class distributed_solver {
   halo_plan plan_;
   index_t shared_ = 0;
   std::vector<boundary_chain> surfaces_;  // during the set-up
+  const crack_face_rows* faces_ = nullptr;  // during the set-up: the whole model's
   std::unique_ptr<mpi_process_group> group_;  // the solver's model points to it
   std::optional<Solver> solver_;
   particle_partition partition_;

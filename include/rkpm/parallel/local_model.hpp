@@ -120,6 +120,17 @@ inline std::vector<stored_index> keep_held_rows(const shape_table<2>& rows, cons
   return local;
 }
 
+// The crack faces with their rows' columns renamed by `local` (each whole-model particle's local
+// id, -1 where the part does not hold it), in the whole model's order; none if a column is not held.
+inline crack_face_rows part_crack_faces(const crack_face_rows& whole, const std::vector<stored_index>& local) {
+  crack_face_rows f = whole;
+  for (particle_index& I : f.rows.neighbor) {
+    if (local[I] < 0) return {};
+    I = static_cast<particle_index>(local[I]);
+  }
+  return f;
+}
+
 // A rank's whole model for the time step (solver/explicit_solver.hpp): the force model above,
 // and what the rest of the step reads:
 //   lumped_volume  every local particle's (the masses: ghosts' too, for the shared region)
@@ -127,12 +138,16 @@ inline std::vector<stored_index> keep_held_rows(const shape_table<2>& rows, cons
 //   particle_id    each particle's index in the whole model
 //   bodies         the particles' and points' bodies, and the surfaces if the part holds them
 //                  (model_bodies::part)
+//   crack_faces    the faces of the cracks, their rows' columns in local ids, if the part holds
+//                  every column (the shared region holds them when the contact reads the faces:
+//                  parallel/shared_region.hpp); none otherwise
 // own.group is left to the caller (the process group the run lives in).
 inline discrete_model local_model(const discrete_model& global, const halo_plan& plan) {
   discrete_model m = local_force_model(global, plan);
   for (index_t i = 0; i < plan.local_particles(); ++i) m.lumped_volume.push_back(global.lumped_volume[plan.global_particle(i)]);
   const std::vector<stored_index> local = keep_held_rows(global.at_particles, plan, m);
   m.bodies = model_bodies::part(global.bodies, m.particle_id, plan.points, local);
+  m.crack_faces = part_crack_faces(global.crack_faces, local);
   m.nodal = global.nodal;
   m.deformed_reference = global.deformed_reference;
   return m;

@@ -25,7 +25,7 @@ namespace rkpm {
 template <Geometry G, Material M, Contact Ct>
 contact_body explicit_solver<G, M, Ct>::body() const {
   return {model_.particles.position, mass_, &model_.bodies, &model_.at_particles, model_.deformed_reference,
-          &model_.crack_faces};
+          &model_.crack_faces, model_.particle_id};
 }
 
 template <Geometry G, Material M, Contact Ct>
