@@ -51,9 +51,7 @@ struct file_case {
                                                              const std::vector<vec2>& mean_tool_force) {
     return case_file::measure(s, c, mean_tool_force);
   }
-  // The rows on several processes by reduction (row_reduction.hpp, case_file/measure_parts.hpp),
-  // unless a history needs the whole model (an edge of one of several Gmsh bodies).
-  static bool reducible(const parameters& c) { return case_file::reducible(c); }
+  // The rows on several processes by reduction (row_reduction.hpp, case_file/measure_parts.hpp).
   template <class Solver>
   static std::vector<double> measure_maxima(const Solver& s, const parameters& c) {
     return case_file::measure_maxima(s, c);

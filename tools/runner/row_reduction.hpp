@@ -14,8 +14,6 @@
 //                                 case file's probe), the part's own particle nearest it
 //   Case::measure_from(maxima[, sums[, nearest]], solver, parameters, mean_tool_force)  the
 //                                 measures from them and from the totals
-//   Case::reducible(parameters)   (optional) whether this problem's measures all reduce (a case
-//                                 file's: case_file/measure_parts.hpp)
 // with measure() = measure_from(measure_maxima(s)[, measure_sums(s, p)], ...) come from what
 // each rank takes over its part: one MPI_MAX combines the maxima on rank 0 (the points' ghost
 // copies hold their owners' states, and a maximum of finite values does not depend on the order
@@ -102,8 +100,6 @@ Values values_from(const std::vector<Value>& combined) {
 template <class Case, class Solver>
 std::function<row_reduction(const Solver&)> row_reduction_of(const typename Case::parameters& p) {
   if constexpr (MeasuredByReduction<Case, Solver>) {
-    if constexpr (requires { Case::reducible(p); })
-      if (!Case::reducible(p)) return {};
     return [p](const Solver& s) {
       row_reduction r;
       const auto m = measure_maxima_of<Case>(s, p);

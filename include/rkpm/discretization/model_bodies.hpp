@@ -6,6 +6,8 @@
 //   of_particle, of_point   a particle's and a quadrature point's body (the partition of
 //                  discretization/body_partition.hpp; no table is kept for one body)
 //   nodes_are_particles     whether the particles are the mesh nodes
+//   first_particle(b)       the smallest index of body b's particles in the whole model (a
+//                  part keeps the whole model's: a mesh body's node i is particle first + i)
 //   surface()      each body's boundary chains (discretization/boundary_chains.hpp) without the
 //                  axis of an axisymmetric section: the master surfaces of contact between bodies
 //                  and the surfaces tool vertices are checked against. Their vertices are
@@ -34,6 +36,8 @@ class model_bodies {
   model_bodies(std::span<const vec2> positions, const background_mesh& mesh, bool axisymmetric)
       : partition_((mesh.validate(), partition_bodies(positions, mesh))) {
     positions_count_ = positions.size();
+    first_.assign(partition_.bodies, static_cast<index_t>(positions.size()));
+    for (index_t I = static_cast<index_t>(positions.size()) - 1; I >= 0; --I) first_[of_particle(I)] = I;
     if (partition_.bodies == 1) {  // nothing to look up: keep no table per particle and cell
       // Swapped out, not assigned {}: that would clear them and keep their capacity, a table
       // per particle and one per cell held for nothing.
@@ -77,6 +81,7 @@ class model_bodies {
     b.partition_.bodies = whole.partition_.bodies;
     b.partition_.nodes_are_particles = false;
     b.positions_count_ = particles.size();
+    b.first_ = whole.first_;
     if (whole.count() > 1)
       for (const stored_index I : particles) b.partition_.particle_body.push_back(whole.partition_.particle_body[I]);
     if (!whole.point_body_.empty())
@@ -108,6 +113,7 @@ class model_bodies {
   const std::vector<index_t>& particle_body() const { return partition_.particle_body; }
   const std::vector<stored_index>& point_body() const { return point_body_; }
   bool nodes_are_particles() const { return partition_.nodes_are_particles; }
+  index_t first_particle(index_t b) const { return first_.empty() ? 0 : first_[b]; }
   // The particles of body b, ascending.
   std::vector<index_t> particles_of(index_t b) const {
     std::vector<index_t> out;
@@ -126,6 +132,7 @@ class model_bodies {
   body_partition partition_;
   std::size_t positions_count_ = 0;
   std::vector<stored_index> point_body_;
+  std::vector<index_t> first_;  // each body's smallest particle index in the whole model
   std::vector<boundary_chain> surface_;
   std::string surface_error_;  // why there is no surface, if there is none
 };

@@ -32,7 +32,8 @@
         processes on the machine is one warning: set up in parts, the particles a process holds
         with its ghosts (at least those it held, fewer than the whole) and its bytes
         (memory_estimate.hpp's form); set up whole, the whole models they build; a case file's
-        "rebalance_above" repartitions unless --rebalance-above overrides it
+        "rebalance_above" repartitions unless --rebalance-above overrides it; the edges of a Gmsh
+        body after another body reduce (gmsh_edges)
 
 MPIEXEC is the launcher with its flags as one argument ("mpiexec --oversubscribe ..."). The
 reference is always the same program on one process: the division must not change a run.
@@ -337,6 +338,54 @@ def errors(mpiexec, rkpm_run, work):
     if passed:
         print(f"ok  a case file's rebalance_above: {counts[0]} repartitions on 2 processes, none with --rebalance-above "
               "1e9")
+    gmsh_edges(mpiexec, rkpm_run, work)
+
+
+def gmsh_edges(mpiexec, rkpm_run, work):
+    """An edge of a Gmsh body that is not the first body (its node i is the particle after the
+    bodies before it, model_bodies::first_particle) is measured by reduction, as every other
+    history: on 1 and 2 processes the same history.csv byte for byte, and its first row the
+    geometry's (projectile.geo: the nose arc reaches x = 5 mm, the back is at y = 25 mm)."""
+    j2 = {"law": "j2", "hardening": "linear", "youngs_modulus_Pa": 117e9, "poisson_ratio": 0.35,
+          "density_kg_m3": 8930, "yield_stress_Pa": 400e6, "hardening_modulus_Pa": 100e6}
+    case = {
+        "name": "block_and_projectile", "geometry": "plane_strain",
+        "method": {"kernel": "cubic", "correction": "linear", "quadrature": "q2", "contact": "paper"},
+        "end_time_s": 2e-7,
+        "bodies": [
+            {"name": "block", "material": j2,
+             "shape": {"rectangle": {"lower_left_m": [10e-3, 0], "upper_right_m": [14e-3, 4e-3], "particles": [5, 5]}}},
+            {"name": "projectile", "material": j2, "initial_velocity_m_s": [0, -150],
+             "shape": {"mesh": {"file": os.path.join(CASES, "projectile", "projectile.geo")}}}],
+        "output": {"snapshots": 0, "history_rows": 2},
+        "histories": [
+            {"name": "nose_max_x_mm", "extent": {"body": "projectile", "of": "max_x", "on_edge": "nose", "scale": 1e3}},
+            {"name": "back_min_y_mm", "extent": {"body": "projectile", "of": "min_y", "on_edge": "back", "scale": 1e3}}]}
+    file = os.path.join(work, "block_and_projectile.json")
+    with open(file, "w") as f:
+        json.dump(case, f)
+    outs = []
+    for p in (1, 2):
+        out = os.path.join(work, f"block_and_projectile-{p}")
+        shutil.rmtree(out, ignore_errors=True)
+        r = launch(mpiexec, p, rkpm_run, [file, "--no-plots", "--quiet", "--threads", "1", "--out", out])
+        check(r.returncode == 0, f"the block and the projectile on {p} processes: {r.stderr[-500:]}")
+        if r.returncode != 0:
+            return
+        outs.append(out)
+    because = summary(outs[1]).get("whole_model_because", "")
+    reduced = "rows" not in because
+    check(reduced, f"the Gmsh body's edges did not reduce: set up whole because {because!r}")
+    histories = [read(os.path.join(o, "history.csv")) for o in outs]
+    same_rows = histories[0] == histories[1]
+    check(same_rows, "the Gmsh body's edges: history.csv differs between 1 and 2 processes")
+    first = next(csv.DictReader(histories[0].splitlines()))
+    nose, back = float(first["nose_max_x_mm"]), float(first["back_min_y_mm"])
+    at_start = abs(nose - 5.0) < 1e-9 and abs(back - 25.0) < 1e-9
+    check(at_start, f"the projectile's edges at the start: nose reaches x = {nose} mm (5), back at y = {back} mm (25)")
+    if reduced and same_rows and at_start:
+        print(f"ok  the edges of a Gmsh body after another body, reduced: nose {nose} mm, back {back} mm, the same "
+              "rows on 1 and 2 processes")
 
 
 def main():

@@ -41,80 +41,13 @@ std::size_t tool_index(const Solver& s, const std::string& name) {
   fail("case file: the solver has no tool '{}' (was it built from this case file?)", name);
 }
 
-// The particles [first, last) of the body called `name`: build_problem adds the bodies in the
-// file's order, each one's particles after the previous ones'.
-struct particle_range {
-  index_t first = 0, last = 0;
-};
+// A history that every rank holds whole: the tools' and the contact's totals.
 template <class Solver>
-particle_range body_particles(const Solver& s, const case_description& c, const std::string& name) {
-  const auto n = s.model().particle_count();
-  if (c.bodies.size() == 1) return {0, n};
-  index_t k = 0;
-  while (static_cast<std::size_t>(k) < c.bodies.size() && c.bodies[k].name != name) ++k;
-  particle_range r{n, n};
-  for (index_t I = 0; I < n; ++I)
-    if (s.body_of_particle(I) == k) {
-      r.first = std::min(r.first, I);
-      r.last = I + 1;
-    }
-  return r;
-}
-
-// Largest, smallest or spread of the current x or y of the particles selected; 0 if none is
-// (as the typed wheel's rim height before material reaches the recess).
-template <class Solver>
-double extent_of(const Solver& s, const body_description& b, particle_range body, const extent_history& h,
-                 const std::vector<vec2>& x) {
-  const auto& X = s.initial_positions();
-  std::vector<index_t> chosen;
-  if (h.on_edge.empty()) {
-    for (index_t I = body.first; I < body.last; ++I) chosen.push_back(I);
-  } else {  // the body's own particles: edges are named per body
-    const std::vector<vec2> own(X.begin() + body.first, X.begin() + body.last);
-    for (index_t I : particles_on_edge(b, own, h.on_edge)) chosen.push_back(body.first + I);
-  }
-  const int k = h.of.back() == 'x' ? 0 : 1;
-  bool any = false;
-  double lo = 0.0, hi = 0.0;
-  for (index_t I : chosen) {
-    const vec2& p = x[I];
-    // NaN bounds compare false, so an absent bound keeps every particle.
-    if (p.x() >= h.x_below || p.x() <= h.x_above || p.y() >= h.y_below || p.y() <= h.y_above) continue;
-    lo = any ? std::min(lo, p[k]) : p[k];
-    hi = any ? std::max(hi, p[k]) : p[k];
-    any = true;
-  }
-  if (!any) return 0.0;
-  if (h.of.starts_with("max")) return hi;
-  if (h.of.starts_with("min")) return lo;
-  return hi - lo;
-}
-
-// Whether quadrature point q belongs to the body called `name` (kernels never reach across
-// bodies, so a point's body is that of any particle in its row).
-template <class Solver>
-auto of_body(const Solver& s, const case_description& c, const std::string& name) {
-  const auto body = body_particles(s, c, name);
-  const auto& rows = s.model().at_points;
-  return [body, &rows](std::size_t q) {
-    const index_t I = rows.neighbor[rows.offset[q]];
-    return I >= body.first && I < body.last;
-  };
-}
-
-template <class Solver>
-double evaluate(const Solver& s, const case_description& c, const history_kind& kind,
-                const std::vector<vec2>& mean_tool_force, const std::vector<vec2>& x) {
+double total(const Solver& s, const history_kind& kind, const std::vector<vec2>& mean_tool_force) {
   return std::visit(
       [&](const auto& h) -> double {
         using H = std::decay_t<decltype(h)>;
-        if constexpr (std::is_same_v<H, extent_history>) {
-          const auto body = body_particles(s, c, h.body);
-          for (const auto& b : c.bodies)
-            if (b.name == h.body) return extent_of(s, b, body, h, x);
-          fail("case file: no body '{}'", h.body);
-        } else if constexpr (std::is_same_v<H, tool_gap_history>) {
+        if constexpr (std::is_same_v<H, tool_gap_history>) {
           const auto& from = s.contact().tools()[tool_index(s, h.from)];
           const auto& to = s.contact().tools()[tool_index(s, h.to)];
           double top = to.reference_vertices().front()[h.component];
@@ -129,35 +62,10 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
           return h.absolute ? std::abs(f) : f;
         } else if constexpr (std::is_same_v<H, tool_displacement_history>) {
           return s.contact().tools()[tool_index(s, h.tool)].displacement(s.time())[h.component];
-        } else if constexpr (std::is_same_v<H, probe_history>) {
-          fail("case file: a probe is measured by measure_nearest (measure_parts.hpp)");
-        } else if constexpr (std::is_same_v<H, max_plastic_strain_history>) {
-          const auto in_body = of_body(s, c, h.body);
-          double eps_p = 0.0;
-          for (std::size_t q = 0; q < s.point_states().size(); ++q)
-            if (in_body(q)) eps_p = std::max(eps_p, s.point_states()[q].equivalent_plastic_strain);
-          return eps_p;
-        } else if constexpr (std::is_same_v<H, max_temperature_history>) {
-          return io::largest_state_field(s, "temperature_K", of_body(s, c, h.body));
-        } else if constexpr (std::is_same_v<H, failed_fraction_history>) {
-          return io::failed_fraction(s, of_body(s, c, h.body));
         } else if constexpr (std::is_same_v<H, max_penetration_history>) {
           return s.max_penetration();
-        } else if constexpr (std::is_same_v<H, momentum_history>) {
-          const auto body = body_particles(s, c, h.body);
-          exact_sum P;  // exact sums, as the typed cases' (a row's sums then reduce over processes)
-          for (index_t I = body.first; I < body.last; ++I) P.add(s.mass()[I] * s.coefficient_velocities()[I][h.component]);
-          return P.value();
         } else {
-          const auto in_body = of_body(s, c, h.body);
-          exact_sum v0, v;
-          const auto& w = s.model().points.weight;
-          for (std::size_t q = 0; q < w.size(); ++q) {
-            if (!in_body(q)) continue;
-            v0.add(w[q]);
-            v.add(w[q] * s.point_det_F(q));
-          }
-          return v.value() / v0.value() - 1.0;
+          fail("case file: a history over a body's particles or points is measured by measure_parts.hpp");
         }
       },
       kind);
@@ -166,8 +74,7 @@ double evaluate(const Solver& s, const case_description& c, const history_kind& 
 }  // namespace detail
 
 // The row from the maxima, sums and nearest values of measure_parts.hpp (over the whole model,
-// or combined over the ranks' parts) and the totals `s` holds; a history that cannot be reduced
-// is evaluated on `s`, which is then the whole model.
+// or combined over the ranks' parts) and the totals `s` holds.
 template <class Solver>
 std::vector<std::pair<std::string, double>> measure_from(const std::vector<double>& maxima,
                                                          const std::vector<exact_sum>& sums,
@@ -176,14 +83,10 @@ std::vector<std::pair<std::string, double>> measure_from(const std::vector<doubl
                                                          const std::vector<vec2>& mean_tool_force) {
   std::vector<std::pair<std::string, double>> out;
   out.reserve(c.histories.size());
-  std::vector<vec2> x;  // the whole model's positions, for the histories that are not reduced
   std::size_t m = 0, k = 0, n = 0;
   for (const auto& h : c.histories) {
     double value = 0.0;
-    if (!detail::reducible(c, h.kind)) {
-      if (x.empty()) x = s.particle_positions();
-      value = detail::evaluate(s, c, h.kind, mean_tool_force, x);
-    } else if (const auto* e = std::get_if<extent_history>(&h.kind)) {
+    if (const auto* e = std::get_if<extent_history>(&h.kind)) {
       const double hi = maxima[m], lo = -maxima[m + 1];
       value = maxima[m + 2] == 0.0 ? 0.0 : e->of.starts_with("max") ? hi : e->of.starts_with("min") ? lo : hi - lo;
       m += 3;
@@ -204,7 +107,7 @@ std::vector<std::pair<std::string, double>> measure_from(const std::vector<doubl
       value = chosen > 0.0 ? failed / chosen : 0.0;
       k += 2;
     } else {  // the tools' and the contact's: totals every rank holds
-      value = detail::evaluate(s, c, h.kind, mean_tool_force, x);
+      value = detail::total(s, h.kind, mean_tool_force);
     }
     out.emplace_back(h.name, value * h.scale);
   }

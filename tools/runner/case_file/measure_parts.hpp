@@ -2,8 +2,6 @@
 // A case file's histories from what each process takes over its part (tools/runner/
 // row_reduction.hpp, docs/method.md section 9.8), so that a row on several processes gathers
 // nothing:
-//   reducible(case)                     whether every history can be: not an edge of a Gmsh
-//                                       body among several (its nodes are numbered within the body)
 //   measure_maxima(solver, case)        per history, in the file's order: an extent's largest
 //                                       and negated smallest coordinate and whether any particle
 //                                       was chosen; a largest plastic strain or temperature (-inf
@@ -20,8 +18,7 @@
 //                                       the row from them (combined over the ranks) and the
 //                                       totals every rank holds (time, tools, penetration)
 // On one process the same functions give case_file::measure its values, so that a row has the
-// same bits on any number of processes. A history that cannot be reduced is evaluated on the
-// whole solver (detail::evaluate), which the runner then brings up to date for each row.
+// same bits on any number of processes.
 
 #include <algorithm>
 #include <cmath>
@@ -58,11 +55,13 @@ bool in_body(const Solver& s, const case_description& c, index_t body, index_t I
 }
 
 // Whether a particle (of the solver's model) started on the edge, as particles_on_edge decides:
-// by its reference position on the edge's segment, or for a Gmsh body by its node group. The
-// segment, its tolerance and the group are found once, not per particle.
+// by its reference position on the edge's segment, or for a Gmsh body by its node group (node i
+// of body b is the whole model's particle first_particle(b) + i: build_problem adds the bodies in
+// the file's order). The segment, its tolerance and the group are found once, not per particle.
 template <class Solver>
-auto edge_test(const Solver& s, const body_description& b, const std::string& edge) {
-  const std::vector<index_t>* group = nullptr;  // a Gmsh body's (one body: its node i is particle i)
+auto edge_test(const Solver& s, const body_description& b, index_t body, const std::string& edge) {
+  const std::vector<index_t>* group = nullptr;  // a Gmsh body's
+  const index_t first = s.model().bodies.first_particle(body);
   std::optional<std::pair<vec2, vec2>> segment;
   double tol = 0.0;
   if (const auto* m = std::get_if<mesh_shape>(&b.shape)) {
@@ -72,17 +71,10 @@ auto edge_test(const Solver& s, const body_description& b, const std::string& ed
     tol = 1e-9 * extent(body_outline(b));
   }
   const bool mesh = std::holds_alternative<mesh_shape>(b.shape);
-  return [&s, group, segment, tol, mesh](index_t I) {
-    if (mesh) return group && std::ranges::binary_search(*group, s.model().global_particle(I));
+  return [&s, group, first, segment, tol, mesh](index_t I) {
+    if (mesh) return group && std::ranges::binary_search(*group, s.model().global_particle(I) - first);
     return segment && distance_to_segment(s.initial_positions()[I], segment->first, segment->second) <= tol;
   };
-}
-
-inline bool reducible(const case_description& c, const history_kind& kind) {
-  if (const auto* h = std::get_if<extent_history>(&kind); h && !h->on_edge.empty() && c.bodies.size() > 1)
-    for (const auto& b : c.bodies)
-      if (b.name == h->body && std::holds_alternative<mesh_shape>(b.shape)) return false;
-  return true;
 }
 
 constexpr double none = -std::numeric_limits<double>::infinity();
@@ -97,20 +89,15 @@ bool point_in_body(const Solver& s, const case_description& c, index_t body, ind
 
 }  // namespace detail
 
-inline bool reducible(const case_description& c) {
-  return std::ranges::all_of(c.histories, [&](const history_description& h) { return detail::reducible(c, h.kind); });
-}
-
 template <class Solver>
 std::vector<double> measure_maxima(const Solver& s, const case_description& c) {
   std::vector<double> out;
   for (const history_description& h : c.histories) {
-    if (!detail::reducible(c, h.kind)) continue;
     if (const auto* e = std::get_if<extent_history>(&h.kind)) {
       const index_t body = detail::body_index(c, e->body);
       const int k = e->of.back() == 'x' ? 0 : 1;
       double hi = detail::none, minus_lo = detail::none, any = 0.0;
-      const auto on_edge = detail::edge_test(s, c.bodies[body], e->on_edge);
+      const auto on_edge = detail::edge_test(s, c.bodies[body], body, e->on_edge);
       for (index_t I = s.model().own.particles.begin; I < s.model().own.particles.end; ++I) {
         if (!detail::in_body(s, c, body, I)) continue;
         if (!e->on_edge.empty() && !on_edge(I)) continue;
