@@ -6,8 +6,11 @@
 // weights, rows and values, gradients, traversal, rows at the particles, lumped volumes with
 // the ghosts' forwarded); the step from it equals one process's, bit for bit, for METIS's
 // partition and the coordinate bisection. Each rank holds its share of the particles and points
-// plus its ghosts (asserted from the local counts). VCI and SCNI rules, cracks and several
-// bodies are refused.
+// plus its ghosts (asserted from the local counts). The same for two bodies, the rods of
+// cases/rod_on_rod.hpp touching at z = 0 (each body's rows within the body, as
+// build_model_of_bodies builds them; the points body by body; the bodies' surfaces and their
+// rows in the shared region, where the contact between the rods reads them). VCI and SCNI rules
+// and cracks are refused.
 
 #include <doctest/doctest.h>
 
@@ -24,7 +27,9 @@
 #include <rkpm/parallel/rank_setup.hpp>
 #include <rkpm/quadrature/scni.hpp>
 #include <rkpm/quadrature/vci.hpp>
+#include <rkpm/solver/body_models.hpp>
 
+#include "cases/rod_on_rod.hpp"
 #include "mpi/bar_impact.hpp"
 #include "support/bits_and_bytes.hpp"
 #include "support/error_message.hpp"
@@ -63,11 +68,77 @@ bool same_plan(const halo_plan& a, const halo_plan& b) {
          same_links(a.receives, b.receives);
 }
 
+// The bar of mpi/bar_impact.hpp on the anvil: one body.
+struct bar_case {
+  static discrete_model model() { return test::bar::model(); }
+  static model_layout layout() { return bar_layout(); }
+  static auto problem() { return test::bar::impact(); }
+};
+
+// Two rods of 5 x 9 particles meeting head on (cases/rod_on_rod.hpp): two bodies whose rows
+// touch (the faces' particles coincide at z = 0), each a slave of the other's surface. Their
+// particles (the mesh nodes) and cells are dealt alternately, so that neither a body's particles
+// nor its cells are consecutive.
+struct rods_case {
+  using rods = cases::rod_on_rod;
+  // 0, n, 1, n + 1, ...: the old index of each new one, for two halves of n.
+  static std::vector<index_t> alternate(index_t n) {
+    std::vector<index_t> old;
+    for (index_t k = 0; k < n; ++k) old.insert(old.end(), {k, n + k});
+    return old;
+  }
+  static auto problem() {
+    rods::parameters p;
+    p.radial_particles = 5;
+    p.axial_particles = 9;
+    p.lower_height_m = p.upper_height_m = 16.2e-3;
+    p.friction = 0.2;
+    auto rod = rods::build<test::bar::contact_type>(p, 1);
+    const std::vector<index_t> node = alternate(rod.particles.size() / 2), cell = alternate(rod.mesh.cells() / 2);
+    std::vector<stored_index> renamed(node.size());
+    particle_set<2> particles;
+    background_mesh mesh;
+    for (index_t J = 0; J < static_cast<index_t>(node.size()); ++J) {
+      renamed[node[J]] = static_cast<stored_index>(J);
+      particles.position.push_back(rod.particles.position[node[J]]);
+      particles.volume.push_back(rod.particles.volume[node[J]]);
+      particles.support.push_back(rod.particles.support[node[J]]);
+      mesh.node.push_back(rod.mesh.node[node[J]]);
+    }
+    for (const index_t c : cell) {
+      std::array<stored_index, 4> nodes = rod.mesh.cell[c];
+      for (stored_index& k : nodes) k = renamed[k];
+      mesh.cell.push_back(nodes);
+    }
+    rod.particles = std::move(particles);
+    rod.mesh = std::move(mesh);
+    // The slaves: the two faces only, so that the rest of the surfaces is in the shared region
+    // because the contact reads the surfaces.
+    for (index_t J = 0; J < rod.particles.size(); ++J)
+      if (rod.particles.position[J][1] == 0.0) rod.slave_particles.push_back(J);
+    rod.initial_particle_velocity = [v = rod.initial_particle_velocity, node](index_t J, const vec2& X) {
+      return v(node[J], X);
+    };
+    return rod;
+  }
+  static discrete_model model() {
+    const auto p = problem();
+    return build_model_of_bodies<kernel::cubic_spline, correction::linear, quadrature::q2, rods::geometry_type>(
+        p.particles, p.mesh);
+  }
+  static model_layout layout() {
+    auto p = problem();
+    return make_model_layout<kernel::cubic_spline, correction::linear, quadrature::q2, rods::geometry_type>(
+        std::move(p.particles), std::move(p.mesh));
+  }
+};
+
+template <class Case>
 void check_partition(communicator& world, const particle_partition& partition, const std::string& name) {
   CAPTURE(name);
-  const solver_type one(test::bar::model(), test::bar::impact(), test::bar::options());
-  distributed_solver<solver_type> cut(world, test::bar::model(), test::bar::impact(), test::bar::options(), partition);
-  distributed_solver<solver_type> built(world, bar_layout(), test::bar::impact(), test::bar::options(), partition);
+  const solver_type one(Case::model(), Case::problem(), test::bar::options());
+  distributed_solver<solver_type> cut(world, Case::model(), Case::problem(), test::bar::options(), partition);
+  distributed_solver<solver_type> built(world, Case::layout(), Case::problem(), test::bar::options(), partition);
   CHECK(same_plan(built.plan(), cut.plan()));
   CHECK(built.shared_count() == cut.shared_count());
   const discrete_model& a = built.solver().model();
@@ -89,6 +160,19 @@ void check_partition(communicator& world, const particle_partition& partition, c
   CHECK(a.point_id == b.point_id);
   CHECK(a.particle_id == b.particle_id);
   CHECK(same_bits(built.solver().mass(), cut.solver().mass()));
+  CHECK(a.bodies.count() == b.bodies.count());
+  CHECK(a.bodies.particle_body() == b.bodies.particle_body());
+  CHECK(a.bodies.point_body() == b.bodies.point_body());
+  if (one.model().bodies.count() > 1) {
+    // The contact between the rods reads both surfaces: the part holds each chain's particles
+    // (with their rows, the shared region; beyond the slaves, the faces), in local ids as the cut
+    // part has them.
+    std::vector<std::vector<index_t>> chains_a, chains_b;
+    for (const boundary_chain& c : a.bodies.surface("test")) chains_a.push_back(c.node);
+    for (const boundary_chain& c : b.bodies.surface("test")) chains_b.push_back(c.node);
+    CHECK(chains_a == chains_b);
+    CHECK(chains_a.size() == one.model().bodies.surface("test").size());
+  }
   // The rank's share: its owned particles and their points, plus ghosts; never the whole model
   // on two processes or more.
   const index_t N = one.model().particle_count(), Q = one.model().point_count();
@@ -101,16 +185,18 @@ void check_partition(communicator& world, const particle_partition& partition, c
     CHECK(static_cast<double>(owned) <= 1.1 * static_cast<double>(N) / world.size() + 1.0);
   }
   // The step from the part built alone is one process's, bit for bit.
-  solver_type whole(test::bar::model(), test::bar::impact(), test::bar::options());
+  solver_type whole(Case::model(), Case::problem(), test::bar::options());
+  index_t most_contacts = 0;
   for (int step = 1; step <= 30; ++step) {
     whole.step();
     built.solver().step();
+    most_contacts = std::max(most_contacts, whole.last_contact().active);
   }
   CHECK(test::bar::same_totals(whole, built.solver()));
   const test::bar::differing_particles differ = test::bar::differing(world, built, whole);
   CHECK(differ.coefficients == 0);
   CHECK(differ.velocities == 0);
-  CHECK(whole.last_contact().active > 0);
+  CHECK(most_contacts > 0);
   CHECK(whole.energy().plastic > 0.0);
 }
 
@@ -119,8 +205,22 @@ void check_partition(communicator& world, const particle_partition& partition, c
 TEST_CASE("set-up in parts: each rank's plan and model equal the part cut from the whole, and so does the step") {
   communicator world;
   const discrete_model m = test::bar::model();
-  check_partition(world, partition_particles(m.at_points, m.particle_count(), world.size()), "METIS");
-  check_partition(world, bisect_coordinates(m.particles.position, world.size()), "coordinate bisection");
+  check_partition<bar_case>(world, partition_particles(m.at_points, m.particle_count(), world.size()), "METIS");
+  check_partition<bar_case>(world, bisect_coordinates(m.particles.position, world.size()), "coordinate bisection");
+}
+
+TEST_CASE("set-up in parts of two bodies: each body's rows within it, the surfaces in the shared region") {
+  communicator world;
+  const discrete_model m = rods_case::model();
+  REQUIRE(m.bodies.count() == 2);
+  // Where the rods touch, a row of one rod finds the other's particles unless kept within its body.
+  const neighbor_search<2> blind(m.particles);
+  index_t mixed = 0;
+  for (index_t q = 0; q < m.point_count(); ++q)
+    for (const index_t I : blind.query(m.points.position[q])) mixed += m.bodies.of_particle(I) != m.bodies.of_point(q);
+  CHECK(mixed > 0);
+  check_partition<rods_case>(world, partition_particles(m.at_points, m.particle_count(), world.size()), "METIS");
+  check_partition<rods_case>(world, bisect_coordinates(m.particles.position, world.size()), "coordinate bisection");
 }
 
 TEST_CASE("set-up in parts: VCI and SCNI rules and cracks are refused with the way out") {
@@ -136,26 +236,15 @@ TEST_CASE("set-up in parts: VCI and SCNI rules and cracks are refused with the w
                        make_grid_particles<2>(lo, hi, Eigen::Vector2i(9, 31), 2.0), cracked);
                  }),
                  "set up a cracked model whole"));
-  // Two bars side by side: two bodies, whose tables the runner builds apart (body_models.hpp).
-  particle_set<2> two = make_grid_particles<2>(lo, hi, Eigen::Vector2i(5, 9), 2.0);
-  background_mesh cells = make_grid_mesh(lo, hi, Eigen::Vector2i(5, 9));
-  const vec2 shift(2.0 * test::bar::radius, 0.0);
-  const auto nodes = static_cast<stored_index>(cells.node.size());
-  const particle_set<2> other = make_grid_particles<2>(lo + shift, hi + shift, Eigen::Vector2i(5, 9), 2.0);
-  const background_mesh other_cells = make_grid_mesh(lo + shift, hi + shift, Eigen::Vector2i(5, 9));
-  two.position.insert(two.position.end(), other.position.begin(), other.position.end());
-  two.volume.insert(two.volume.end(), other.volume.begin(), other.volume.end());
-  two.support.insert(two.support.end(), other.support.begin(), other.support.end());
-  cells.node.insert(cells.node.end(), other_cells.node.begin(), other_cells.node.end());
-  for (std::array<stored_index, 4> c : other_cells.cell) {
-    for (stored_index& k : c) k += nodes;
-    cells.cell.push_back(c);
-  }
+  // A body whose particles do not fill its cells, named as one process's builder checks each body.
+  auto rods = rods_case::problem();
+  for (index_t I = 0; I < rods.particles.size(); ++I)
+    if (rods.particles.position[I][1] > 1e-9) rods.particles.volume[I] *= 1.5;
   CHECK(contains(error_message([&] {
                    make_model_layout<kernel::cubic_spline, correction::linear, quadrature::q2, test::bar::geometry_type>(
-                       two, cells);
+                       rods.particles, rods.mesh);
                  }),
-                 "set-up in parts of 2 bodies"));
+                 "body 1: particle volumes add up to"));
 }
 
 }  // namespace test_mpi_rank_setup

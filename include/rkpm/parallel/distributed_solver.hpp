@@ -19,8 +19,8 @@
 // on every rank, it is the set-up's memory limit (the step's is the part); from a model_layout
 // (parallel/rank_setup.hpp) each rank builds its part without a table of the whole, and the
 // same part.
-// Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: then
-// the surfaces' particles and rows join the shared region, and every rank corrects them alike.
+// Contact between bodies and tool vertices against the surfaces read the bodies' surfaces: their
+// particles and rows join the shared region (from a layout too), every rank corrects them alike.
 // All body pairs read the crack faces too: the columns of their rows join it, and the part's
 // model carries the faces in local ids (local_model), so every rank computes their contact alike.
 // Re-referencing and cracks (docs/method.md sections 5.8 and 5.12) through step(), run() or

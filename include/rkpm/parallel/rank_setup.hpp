@@ -14,11 +14,15 @@
 // builder does, so the rank's model equals local_model(whole, plan) entry by entry, and its
 // plan make_halo_plan(whole...)'s (tests/mpi/rank_setup.cpp).
 // The layout is the set-up's replicated part; the rank drops it once its part is built.
-// One body, cell rules only: VCI's corrected gradients and SCNI's smoothed ones need each
-// particle's cells whole, cracks make the rows depend on the values, and several bodies have
-// tables of their own; all are refused.
+// Several bodies as build_model_of_bodies (solver/body_models.hpp) builds them: the points body
+// by body, each row within its position's body (body_searches: one search per body over its
+// particles, which finds what the body's own search finds, ascending, so the same bits).
+// Cell rules only: VCI's corrected gradients and SCNI's smoothed ones need each particle's cells
+// whole, and cracks make the rows depend on the values; both are refused.
 
+#include <cmath>
 #include <functional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -35,13 +39,74 @@
 namespace rkpm::parallel {
 
 // The whole model without its tables (`whole`: particles, mesh, points, bodies), and the shape
-// functions of its kernel and correction at chosen positions.
+// functions of its kernel and correction at chosen positions (of one body, from its search).
 struct model_layout {
   discrete_model whole;
   std::function<shape_table<2>(const neighbor_search<2>&, const std::vector<vec2>&, shape_table_contents)> evaluate;
 };
 
-// The layout of build_discrete_model<K, C, Q, G>(particles, mesh, max_condition)'s model.
+namespace detail {
+
+// Each body's particles and cells must describe the same body (check_body per body, as
+// build_model_of_bodies checks each body's part).
+inline void check_bodies(const particle_set<2>& particles, const background_mesh& mesh, const model_bodies& bodies) {
+  std::vector<double> volume(bodies.count(), 0.0), area(bodies.count(), 0.0);
+  for (index_t I = 0; I < particles.size(); ++I) volume[bodies.of_particle(I)] += particles.volume[I];
+  for (index_t c = 0; c < mesh.cells(); ++c) area[bodies.of_cell(c)] += mesh.cell_area(c);
+  for (index_t b = 0; b < bodies.count(); ++b)
+    if (std::abs(volume[b] - area[b]) > 1e-2 * area[b])
+      fail("body {}: particle volumes add up to {:.6g} but its background cells cover {:.6g}: the particle set and "
+           "the cells must describe the same body (check units and extents)",
+           b, volume[b], area[b]);
+}
+
+// The points of body 0's cells, then body 1's, ...: build_model_of_bodies's order. A cell's points
+// depend on its nodes only, so they are the body's own points, bit for bit.
+inline quadrature_points points_body_by_body(const quadrature_points& all, const model_bodies& bodies) {
+  quadrature_points p;
+  for (index_t b = 0; b < bodies.count(); ++b)
+    for (index_t q = 0; q < all.size(); ++q)
+      if (bodies.of_cell(all.cell[q]) == b) {
+        p.position.push_back(all.position[q]);
+        p.weight.push_back(all.weight[q]);
+        p.cell.push_back(all.cell[q]);
+      }
+  return p;
+}
+
+// The layout's rows at positions `at`, each within its body (`body(k)`: position k's), in
+// their order: one evaluation per body, its rows placed where its positions are.
+template <class BodyOf>
+shape_table<2> rows_by_body(const model_layout& l, const body_searches<2>& searches, const std::vector<vec2>& at,
+                            BodyOf body, shape_table_contents contents) {
+  if (searches.count() == 1) return l.evaluate(searches.of(0), at, contents);
+  std::vector<shape_table<2>> of(searches.count());
+  for (index_t b = 0; b < searches.count(); ++b) {
+    std::vector<vec2> mine;
+    for (index_t k = 0; k < static_cast<index_t>(at.size()); ++k)
+      if (body(k) == b) mine.push_back(at[k]);
+    if (!mine.empty()) of[b] = l.evaluate(searches.of(b), mine, contents);
+  }
+  shape_table<2> t;
+  std::vector<index_t> next(searches.count(), 0);
+  for (index_t k = 0; k < static_cast<index_t>(at.size()); ++k) {
+    const shape_table<2>& from = of[body(k)];
+    const index_t r = next[body(k)]++;
+    const std::span<const particle_index> row = from.columns(r);
+    t.neighbor.insert(t.neighbor.end(), row.begin(), row.end());
+    t.N.insert(t.N.end(), from.N.begin() + from.offset[r], from.N.begin() + from.offset[r + 1]);
+    if (!from.grad.empty())
+      t.grad.insert(t.grad.end(), from.grad.begin() + from.offset[r], from.grad.begin() + from.offset[r + 1]);
+    t.offset.push_back(static_cast<stored_index>(t.neighbor.size()));
+  }
+  return t;
+}
+
+}  // namespace detail
+
+// The layout of build_model_of_bodies<K, C, Q, G>(particles, mesh, max_condition)'s model
+// (build_discrete_model's with one body). `evaluate` gives the rows at positions of one body
+// from that body's search.
 template <Kernel K, Correction C, Quadrature Q, Geometry G>
 model_layout make_model_layout(particle_set<2> particles, background_mesh mesh,
                                double max_condition = default_max_moment_condition) {
@@ -54,13 +119,14 @@ model_layout make_model_layout(particle_set<2> particles, background_mesh mesh,
          "cracked model whole");
   particles.validate();
   model_bodies bodies(particles.position, mesh, G::is_axisymmetric);
-  if (bodies.count() > 1)
-    fail("set-up in parts of {} bodies: each body's shape functions are built on its own (solver/body_models.hpp); "
-         "set up a model of several bodies whole",
-         bodies.count());
-  check_body(particles, mesh);
   model_layout l;
   if constexpr (!NodalRule<Q>) l.whole.points = make_quadrature_points<Q, G>(mesh);
+  if (bodies.count() == 1) {
+    check_body(particles, mesh);
+  } else {
+    detail::check_bodies(particles, mesh, bodies);
+    l.whole.points = detail::points_body_by_body(l.whole.points, bodies);
+  }
   l.whole.particles = std::move(particles);
   l.whole.mesh = std::move(mesh);
   l.whole.set_bodies(std::move(bodies));
@@ -76,13 +142,17 @@ namespace detail {
 
 // The rows of the layout's table at the particles (values_only) of the particles marked in
 // `wanted`, the others' rows empty: the whole table's rows where they are wanted.
-inline shape_table<2> rows_at_particles(const model_layout& l, const neighbor_search<2>& search,
+inline shape_table<2> rows_at_particles(const model_layout& l, const body_searches<2>& searches,
                                         const std::vector<char>& wanted) {
   const std::vector<vec2>& X = l.whole.particles.position;
   std::vector<vec2> at;
+  std::vector<index_t> body;
   for (index_t I = 0; I < static_cast<index_t>(X.size()); ++I)
-    if (wanted[I]) at.push_back(X[I]);
-  const shape_table<2> some = l.evaluate(search, at, values_only);
+    if (wanted[I]) {
+      at.push_back(X[I]);
+      body.push_back(l.whole.bodies.of_particle(I));
+    }
+  const shape_table<2> some = rows_by_body(l, searches, at, [&](index_t k) { return body[k]; }, values_only);
   shape_table<2> t;
   t.offset.assign(1, 0);
   index_t k = 0;
@@ -133,8 +203,9 @@ rank_model rank_model_of(const model_layout& l, const particle_partition& partit
     fail("set-up in parts: the partition has {} particles but the model {}; partition this model's particles",
          partition.particles(), n);
   const std::vector<stored_index>& part = partition.part;
-  const neighbor_search<2> search(w.particles);
-  const search_rows<2> point_rows(search, w.points.position), particle_rows(search, w.particles.position);
+  const body_searches<2> search(w.particles, w.bodies.particle_body(), w.bodies.count());
+  const search_rows<2> point_rows(search, w.points.position, [&](index_t q) { return w.bodies.of_point(q); });
+  const search_rows<2> particle_rows(search, w.particles.position, [&](index_t I) { return w.bodies.of_particle(I); });
   // The rows at the particles the plan reads: the owned ones, those that hold an owned one, the
   // shared region's.
   std::vector<char> wanted(n, 0);
@@ -172,7 +243,7 @@ rank_model rank_model_of(const model_layout& l, const particle_partition& partit
   // The rows at the particles as local_model keeps them; the rank's rows at its points,
   // evaluated here, in local columns.
   const std::vector<stored_index> local = keep_held_rows(rows, h, m);
-  m.at_points = l.evaluate(search, at, {});
+  m.at_points = detail::rows_by_body(l, search, at, [&](index_t k) { return w.bodies.of_point(h.points[k]); }, {});
   for (particle_index& I : m.at_points.neighbor) I = local[I];
   m.traversal = local_traversal(h, make_point_traversal(point_rows, n));
   r.point_owner = point_owners(partition, point_rows);

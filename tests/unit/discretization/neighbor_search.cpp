@@ -133,3 +133,32 @@ TEST_CASE("single particle and identical positions") {
   CHECK(same.query(rkpm::vec2(2.5, -0.5)) == std::vector<index_t>{0, 1, 2, 3});
   CHECK(same.query(rkpm::vec2(3.5, -0.5)).empty());
 }
+
+TEST_CASE("a search over some of the particles: brute force's among those, by their indices in the set") {
+  // One body's search among several (discretization/search_rows.hpp, body_searches): every third
+  // particle of a random cloud, larger supports on the others so that they would be found.
+  std::mt19937 rng(7);
+  auto p = random_cloud<2>(600, 0.0, 1.0, 0.02, 0.1, rng);
+  std::vector<index_t> some;
+  for (index_t i = 0; i < p.size(); ++i)
+    if (i % 3 == 1) some.push_back(i);
+    else p.support[i] *= 2.0;
+  const rkpm::neighbor_search<2> search(p, nullptr, some);
+  std::uniform_real_distribution<double> uq(-0.2, 1.2);
+  std::size_t found = 0, others = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const rkpm::vec2 x(uq(rng), uq(rng));
+    std::vector<index_t> expect;
+    for (const index_t i : brute_force(p, x))
+      if (i % 3 == 1) expect.push_back(i);
+      else ++others;
+    CHECK(search.query(x) == expect);
+    found += expect.size();
+  }
+  CHECK(found > 1000);
+  CHECK(others > found);
+  CHECK_THROWS_WITH(rkpm::neighbor_search<2>(p, nullptr, std::vector<index_t>{}),
+                    doctest::Contains("over none of the particles"));
+  CHECK_THROWS_WITH(rkpm::neighbor_search<2>(p, nullptr, std::vector<index_t>{3, 600}),
+                    doctest::Contains("over particle 600 of 600"));
+}
