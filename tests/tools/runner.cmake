@@ -61,9 +61,9 @@ endforeach()
 # its fragments, parallel/run_fragments.hpp) each on 1, 2 and 3 processes give the same files byte
 # for byte, and the same snapshots in pieces (.pvtu, put together by meshio: runner/pieces.py); a checkpoint from
 # 2 processes continues on 1 and on 3 to the uninterrupted run; a failure stops every rank with
-# one line. The cases of one body are set up in parts (each process about N/P particles and
-# its ghosts, summary.json's local_particles; tools/runner/part_setup.hpp), the others whole, and
-# the memory warning counts either form. One thread per process, oversubscribed and unbound
+# one line. The cases without re-referencing or cracks, of one body or two, are set up in parts
+# (each process about N/P particles and its ghosts, summary.json's local_particles;
+# tools/runner/part_setup.hpp), the others whole, and the memory warning counts either form. One thread per process, oversubscribed and unbound
 # (rkpm_mpiexec_flags, tests/CMakeLists.txt).
 if(TARGET rkpm::mpi)
   set(rkpm_ranks_check ${CMAKE_CURRENT_LIST_DIR}/runner/check_ranks.py)

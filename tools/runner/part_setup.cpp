@@ -26,8 +26,7 @@ bool rule_in_parts(const std::string& name) {
 }
 }  // namespace
 
-std::string set_up_in_parts_refusal(const method_names& m, const particle_set<2>& particles,
-                                    const background_mesh& mesh, bool axisymmetric, const part_setup_request& r) {
+std::string set_up_in_parts_refusal(const method_names& m, const background_mesh& mesh, const part_setup_request& r) {
   if (!rule_in_parts(m.quadrature))
     return fmt::format("the rule {} needs each particle's cells whole (VCI, SCNI)", m.quadrature);
   if (!mesh.cracks.empty()) return "the cells have cracks";
@@ -36,8 +35,6 @@ std::string set_up_in_parts_refusal(const method_names& m, const particle_set<2>
   if (r.cracks) return "cracks can grow: a cut builds the whole model, and rank 0 writes the snapshots whole";
   if (r.mass_scaling) return "the mass added per body is summed in particle order";
   if (r.hooks) return "a caller's hooks read the whole state";
-  if (const index_t bodies = model_bodies(particles.position, mesh, axisymmetric).count(); bodies > 1)
-    return fmt::format("{} bodies: each body's shape functions are built on its own", bodies);
   return {};
 }
 

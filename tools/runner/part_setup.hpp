@@ -6,8 +6,9 @@
 // the positions of a figure shape, the end-state figures' fields).
 //
 // A run is set up in parts, with no whole solver on rank 0, when
-//   - the library can set its model up in parts: a cell rule without VCI or SCNI, one body, no
-//     cracks in the cells (parallel::make_model_layout);
+//   - the library can set its model up in parts: a cell rule without VCI or SCNI, no cracks in
+//     the cells (parallel::make_model_layout; several bodies each with its own shape functions,
+//     their surfaces in the shared region when the contact reads them);
 //   - its history rows reduce over the ranks (row_reduction.hpp), so that no row needs the state
 //     gathered;
 //   - nothing reads the whole state that the ranks do not reduce: no cracks that can grow (their
@@ -53,8 +54,7 @@ struct part_setup_request {
 
 // Why the run cannot be set up in parts without a whole solver (empty: it can). Every rank
 // answers alike: the problem and method are the same on each.
-std::string set_up_in_parts_refusal(const method_names& m, const particle_set<2>& particles,
-                                    const background_mesh& mesh, bool axisymmetric, const part_setup_request& r);
+std::string set_up_in_parts_refusal(const method_names& m, const background_mesh& mesh, const part_setup_request& r);
 
 // The layout of make_model<G>(m, particles, mesh, max_condition)'s model, for a method the
 // refusal above accepts (part_setup.cpp: one instantiation per geometry for the whole runner).

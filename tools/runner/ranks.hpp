@@ -2,8 +2,8 @@
 // A case run on the processes mpiexec started (rkpm_run under `mpiexec -np P`, or
 // `tools/rkpm run CASE --ranks P`; docs/method.md section 9.8). Every rank builds the problem
 // (the case description is small), then its part, in one of two ways:
-//   in parts (part_setup.hpp: one body, a cell rule, rows by reduction, no re-referencing,
-//     cracks, mass scaling or caller's hooks): the model's layout, coordinate bisection, its own part
+//   in parts (part_setup.hpp: a cell rule, rows by reduction, no re-referencing, cracks, mass
+//     scaling or caller's hooks; one body or several): the model's layout, coordinate bisection, its own part
 //     (parallel/rank_setup.hpp); no rank builds the whole model, rank 0 observes its own part;
 //   whole (any other run; summary.json's "whole_model_because" says why): the whole model on
 //     every rank, METIS's partition, and on rank 0 a whole solver that never steps itself.
@@ -92,7 +92,7 @@ class rank_steps final : public process_steps<Solver> {
         fail("{} processes for {} particles: give at most one process per particle (--ranks)", comm_.size(),
              prob->particles.size());
       request_.cracks = opens_cracks(*prob);
-      refusal = set_up_in_parts_refusal(method_, prob->particles, prob->mesh, G::is_axisymmetric, request_);
+      refusal = set_up_in_parts_refusal(method_, prob->mesh, request_);
       if (warn_) warn_(*prob, refusal.empty());
     });
     comm_.agree();
