@@ -63,41 +63,56 @@ inline void check_bodies(const particle_set<2>& particles, const background_mesh
 // The points of body 0's cells, then body 1's, ...: build_model_of_bodies's order. A cell's points
 // depend on its nodes only, so they are the body's own points, bit for bit.
 inline quadrature_points points_body_by_body(const quadrature_points& all, const model_bodies& bodies) {
+  std::vector<index_t> start(bodies.count() + 1, 0);  // a stable counting sort by body
+  for (index_t q = 0; q < all.size(); ++q) ++start[bodies.of_cell(all.cell[q]) + 1];
+  for (index_t b = 0; b < bodies.count(); ++b) start[b + 1] += start[b];
   quadrature_points p;
-  for (index_t b = 0; b < bodies.count(); ++b)
-    for (index_t q = 0; q < all.size(); ++q)
-      if (bodies.of_cell(all.cell[q]) == b) {
-        p.position.push_back(all.position[q]);
-        p.weight.push_back(all.weight[q]);
-        p.cell.push_back(all.cell[q]);
-      }
+  p.position.resize(all.size());
+  p.weight.resize(all.size());
+  p.cell.resize(all.size());
+  for (index_t q = 0; q < all.size(); ++q) {
+    const index_t k = start[bodies.of_cell(all.cell[q])]++;
+    p.position[k] = all.position[q];
+    p.weight[k] = all.weight[q];
+    p.cell[k] = all.cell[q];
+  }
   return p;
 }
 
 // The layout's rows at positions `at`, each within its body (`body(k)`: position k's), in
-// their order: one evaluation per body, its rows placed where its positions are.
+// their order. Runs of consecutive positions of one body are evaluated a chunk at a time and
+// appended, into a table reserved to its size when nothing is dropped (a row holds what its
+// search finds), so that the rank holds its table once and a chunk's besides.
 template <class BodyOf>
 shape_table<2> rows_by_body(const model_layout& l, const body_searches<2>& searches, const std::vector<vec2>& at,
                             BodyOf body, shape_table_contents contents) {
   if (searches.count() == 1) return l.evaluate(searches.of(0), at, contents);
-  std::vector<shape_table<2>> of(searches.count());
-  for (index_t b = 0; b < searches.count(); ++b) {
-    std::vector<vec2> mine;
-    for (index_t k = 0; k < static_cast<index_t>(at.size()); ++k)
-      if (body(k) == b) mine.push_back(at[k]);
-    if (!mine.empty()) of[b] = l.evaluate(searches.of(b), mine, contents);
-  }
+  const auto n = static_cast<index_t>(at.size());
   shape_table<2> t;
-  std::vector<index_t> next(searches.count(), 0);
-  for (index_t k = 0; k < static_cast<index_t>(at.size()); ++k) {
-    const shape_table<2>& from = of[body(k)];
-    const index_t r = next[body(k)]++;
-    const std::span<const particle_index> row = from.columns(r);
-    t.neighbor.insert(t.neighbor.end(), row.begin(), row.end());
-    t.N.insert(t.N.end(), from.N.begin() + from.offset[r], from.N.begin() + from.offset[r + 1]);
-    if (!from.grad.empty())
-      t.grad.insert(t.grad.end(), from.grad.begin() + from.offset[r], from.grad.begin() + from.offset[r + 1]);
-    t.offset.push_back(static_cast<stored_index>(t.neighbor.size()));
+  if (!(contents.drop_below > 0.0)) {
+    std::size_t entries = 0;
+    std::vector<index_t> found;
+    for (index_t k = 0; k < n; ++k) {
+      searches.of(body(k)).query(at[k], found);
+      entries += found.size();
+    }
+    t.offset.reserve(n + 1);
+    t.neighbor.reserve(entries);
+    t.N.reserve(entries);
+    if (contents.gradients) t.grad.reserve(entries);
+  }
+  constexpr index_t chunk = 4096;
+  std::vector<vec2> some;
+  for (index_t k = 0; k < n;) {
+    const index_t b = body(k);
+    some.clear();
+    for (; k < n && body(k) == b && static_cast<index_t>(some.size()) < chunk; ++k) some.push_back(at[k]);
+    const shape_table<2> rows = l.evaluate(searches.of(b), some, contents);
+    t.neighbor.insert(t.neighbor.end(), rows.neighbor.begin(), rows.neighbor.end());
+    t.N.insert(t.N.end(), rows.N.begin(), rows.N.end());
+    t.grad.insert(t.grad.end(), rows.grad.begin(), rows.grad.end());
+    const stored_index before = t.offset.back();
+    for (index_t r = 1; r <= rows.points(); ++r) t.offset.push_back(before + rows.offset[r]);
   }
   return t;
 }
