@@ -22,7 +22,6 @@
 
 #include <rkpm/core/exact_sum.hpp>
 #include <rkpm/core/types.hpp>
-#include <rkpm/io/solver_output.hpp>
 
 #include "build_problem.hpp"
 #include "case_description.hpp"
